@@ -1,0 +1,24 @@
+"""Artificial Person engine: the science, with no Qt and no VTK at import.
+
+The toolkit of the 2003 paper (``../shared/paper``): a parameterised face
+deformed by weighted rigid and non-rigid transforms (§2.2), driven by
+commands (§2.3) and speech (§2.1).
+
+>>> import engine
+>>> head = engine.load_model()                    # the default head, mm, facing +Z
+>>> [p.name for p in head.parameters][:3]
+['neck_base', 'head_turn', 'head_nod']
+>>> P = head.deform(jaw_open=0.6, head_turn=0.2)  # (N, 3) vertex positions
+"""
+
+from .errors import ModelFileError, ParameterError, UserError
+from .model import InfluenceRegion, Model
+from .model_files import load_model, save_model
+from .parameters import Parameter, ParameterTree
+from .paths import default_model_path
+
+__all__ = [
+    "InfluenceRegion", "Model", "ModelFileError", "Parameter", "ParameterError", "ParameterTree",
+    "UserError", "default_model_path", "load_model", "save_model",
+]
+__version__ = "0.1.0"
