@@ -80,11 +80,15 @@ class Model:
         One per parameter (empty regions allowed).
     landmarks : dict id → vertex index
         MPEG-4 feature points, e.g. ``{"2.1": 812}``.
+    part_colors : dict part → ``"#rrggbb"``, optional
+    vertex_colors : (N, 3) uint8 array, optional
+        sRGB colour per vertex (e.g. iris and pupil painted on the eyeballs);
+        renderers prefer it to ``part_colors``.
     """
 
     def __init__(self, vertices, faces, parts=None, vertex_part=None, parameters=None,
                  regions=None, landmarks=None, name: str = "model", description: str = "",
-                 part_colors: Mapping[str, str] | None = None):
+                 part_colors: Mapping[str, str] | None = None, vertex_colors=None):
         self.vertices = np.ascontiguousarray(np.asarray(vertices, dtype=float).reshape(-1, 3))
         self.faces = np.asarray(faces, dtype=np.int64).reshape(-1)
         n = len(self.vertices)
@@ -99,6 +103,7 @@ class Model:
         self.name = name
         self.description = description
         self.part_colors = dict(part_colors or {})
+        self.vertex_colors = None if vertex_colors is None else np.asarray(vertex_colors, dtype=np.uint8)
         self.revision = 0
         self._deformer = None
         self.validate()
@@ -126,6 +131,8 @@ class Model:
                 raise UserError(f"parameter '{name}' is a field translation but has no displacements")
             if not p.field and region.displacements is not None:
                 raise UserError(f"parameter '{name}' has displacements but is not a field translation")
+        if self.vertex_colors is not None and self.vertex_colors.shape != (n, 3):
+            raise UserError(f"vertex colours have shape {self.vertex_colors.shape}, expected ({n}, 3)")
         for key, v in self.landmarks.items():
             if not 0 <= v < n:
                 raise UserError(f"landmark {key}: vertex {v} is outside 0..{n - 1}")
@@ -239,7 +246,8 @@ class Model:
     def copy(self) -> "Model":
         return Model(self.vertices.copy(), self.faces.copy(), list(self.parts), self.vertex_part.copy(),
                      self.parameters.copy(), {k: r.copy() for k, r in self.regions.items()},
-                     dict(self.landmarks), self.name, self.description, dict(self.part_colors))
+                     dict(self.landmarks), self.name, self.description, dict(self.part_colors),
+                     None if self.vertex_colors is None else self.vertex_colors.copy())
 
 
 def _check_cell_array(faces: np.ndarray, n_vertices: int) -> None:

@@ -159,7 +159,7 @@ def load_model(path: str | Path | None = None) -> Model:
             landmark_lines[key] = el.sourceline
 
     arrays_path = (path.parent / root.get("arrays")).resolve()
-    vertices, faces, vertex_part, regions = _read_arrays(arrays_path, tree, len(parts))
+    vertices, faces, vertex_part, regions, colors_rgb = _read_arrays(arrays_path, tree, len(parts))
     n = len(vertices)
     for key, v in landmarks.items():
         if v >= n:
@@ -168,7 +168,8 @@ def load_model(path: str | Path | None = None) -> Model:
     desc = root.findtext("description") or ""
     try:
         return Model(vertices, faces, parts, vertex_part, tree, regions, landmarks,
-                     name=root.get("name"), description=desc.strip(), part_colors=colors)
+                     name=root.get("name"), description=desc.strip(), part_colors=colors,
+                     vertex_colors=colors_rgb)
     except UserError as exc:
         raise ModelFileError(exc.message, file=arrays_path) from None
 
@@ -223,6 +224,12 @@ def _read_arrays(path: Path, tree: ParameterTree, n_parts: int):
         if len(vertex_part) and vertex_part.max() >= n_parts:
             raise ModelFileError(f"'/mesh/part' names part {vertex_part.max()} but the model has {n_parts} parts",
                                  file=path)
+        colors = None
+        if "mesh/colors" in f:
+            colors = dataset("mesh/colors", np.int64, (3,))
+            if len(colors) != len(vertices) or colors.min() < 0 or colors.max() > 255:
+                raise ModelFileError("'/mesh/colors' must hold one sRGB triple (0-255) per vertex", file=path)
+            colors = colors.astype(np.uint8)
         regions = {}
         for p in tree:
             base = f"parameters/{p.name}"
@@ -235,7 +242,7 @@ def _read_arrays(path: Path, tree: ParameterTree, n_parts: int):
                 regions[p.name] = InfluenceRegion(idx, w, disp)
             except UserError as exc:
                 raise ModelFileError(f"parameter '{p.name}': {exc.message}", file=path) from None
-    return vertices, faces, vertex_part, regions
+    return vertices, faces, vertex_part, regions, colors
 
 
 # ---------------------------------------------------------------------------
@@ -324,6 +331,8 @@ def _write_arrays(model: Model, path: str) -> None:
         mesh.create_dataset("vertices", data=model.vertices, compression="gzip", shuffle=True)
         mesh.create_dataset("faces", data=model.faces, compression="gzip", shuffle=True)
         mesh.create_dataset("part", data=model.vertex_part.astype(np.int32), compression="gzip")
+        if model.vertex_colors is not None:
+            mesh.create_dataset("colors", data=model.vertex_colors, compression="gzip")
         params = f.create_group("parameters", track_order=True)
         for p in model.parameters:
             r = model.regions[p.name]

