@@ -93,10 +93,13 @@ class Deformer:
         self.free = (free, _as_index(perm[free])) if free.stop > free.start else None
         blend = slice(int(bounds[len(group1) + 1]), n)
         if blend.stop > blend.start:
-            Wb = W[perm[blend]].tocsr()
-            self.blend = (blend, _as_index(perm[blend]), Wb)
+            Wb = W[perm[blend]].tocsc()
+            used = np.flatnonzero(np.diff(Wb.indptr) > 0)          # group-1 columns the band uses
+            dense = np.ascontiguousarray(Wb[:, used].toarray())
+            self.blend = (blend, [group1[c] for c in used], dense)
         else:
             self.blend = None
+        self.inverse = inv
 
         # ---- leaves: internal indices, weights, cached rest positions ----
         self.leaves = []
@@ -111,6 +114,7 @@ class Deformer:
             rest = self.rest[idx]
             disp = None if region.displacements is None else region.displacements[order] * w
             self.leaves.append((k, _as_index(idx), w, rest, disp))
+        self._eye4x3 = np.eye(4)[:, :3]
 
     # ------------------------------------------------------------------
     def transforms(self, values: np.ndarray):
@@ -129,44 +133,54 @@ class Deformer:
             raise ValueError(f"expected {len(self.params)} values in tree order, got shape {values.shape}")
         local, world = self.transforms(values)
 
-        # Stage 1: leaves in the rest frame (Eq. 2).
-        P1 = self.rest
-        copied = False
+        # Stage 1: leaves in the rest frame (Eq. 2), in the internal vertex order.
+        work = self.rest.copy()
+        rows = _rows(work)
         for k, idx, w, rest, disp in self.leaves:
             v = values[k]
             if v == 0.0:
                 continue
-            if not copied:
-                P1 = self.rest.copy()
-                copied = True
             if disp is not None:
-                P1[idx] += v * disp
+                delta = v * disp
             else:
                 T = local[k]
-                A = T[:3, :3] - np.eye(3)
-                P1[idx] += w * (rest @ A + T[3, :3])
+                delta = rest @ (T[:3, :3] - np.eye(3))
+                delta += T[3, :3]
+                delta *= w
+            if isinstance(idx, slice):
+                work[idx] += delta
+            else:
+                moved = _rows(np.ascontiguousarray(_floats(rows[idx]) + delta))
+                rows[idx] = moved
 
-        # Stage 2: blended rigid motion of group 1.
-        out = np.empty((self.n_vertices, 3))
-        for k, s, orig in self.blocks:
+        # Stage 2: blended rigid motion of group 1, block by block (contiguous slices).
+        for k, s, _orig in self.blocks:
             T = world[k]
-            if _identity(T):
-                out[orig] = P1[s]
-            else:
-                out[orig] = P1[s] @ T[:3, :3] + T[3, :3]
-        if self.free is not None:
-            s, orig = self.free
-            out[orig] = P1[s]
+            if not _identity(T):
+                block = work[s]
+                block[...] = block @ T[:3, :3] + T[3, :3]
         if self.blend is not None:
-            s, orig, Wb = self.blend
-            D = np.stack([world[k][:, :3] - np.eye(4)[:, :3] for k in self.group1])  # (K, 4, 3)
-            if not D.any():
-                out[orig] = P1[s]
-            else:
-                M = (Wb @ D.reshape(len(self.group1), 12)).reshape(-1, 4, 3)
-                Pb = P1[s]
-                out[orig] = Pb + np.einsum("ni,nij->nj", Pb, M[:, :3, :]) + M[:, 3, :]
-        return out
+            s, columns, dense = self.blend
+            D = np.stack([world[k][:, :3] - self._eye4x3 for k in columns])   # (K, 4, 3)
+            if D.any():
+                M = dense @ D.reshape(len(columns), 12)                       # (nb, 12) blended T' - I
+                Pb = work[s]
+                delta = Pb[:, 0:1] * M[:, 0:3]
+                delta += Pb[:, 1:2] * M[:, 3:6]
+                delta += Pb[:, 2:3] * M[:, 6:9]
+                delta += M[:, 9:12]
+                Pb += delta
+        # Back to the model's vertex order with one gather of whole rows.
+        return _floats(rows[self.inverse])
+
+
+def _rows(a: np.ndarray) -> np.ndarray:
+    """View an (N, 3) float64 array as N opaque 24-byte rows (fast fancy indexing)."""
+    return a.view(np.dtype((np.void, 24))).reshape(-1)
+
+
+def _floats(rows: np.ndarray) -> np.ndarray:
+    return rows.view(np.float64).reshape(-1, 3)
 
 
 def _identity(T: np.ndarray) -> bool:

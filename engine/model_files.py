@@ -347,6 +347,9 @@ def _atomic_write(path: Path, writer) -> None:
     """Write through ``writer(tmp_path)`` to a temporary file, then rename over ``path``."""
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o666 & ~umask)      # mkstemp's 0600 would make saved models private
     try:
         writer(tmp)
         with open(tmp, "rb") as fh:

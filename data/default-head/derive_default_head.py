@@ -360,6 +360,7 @@ def derive(wheel: AnnyWheel):
     jaw_deg = fit_angle(vertices[teeth], vertices[teeth] + jaw_d[teeth], jaw_axis, jaw_pivot)
     jaw_w = np.zeros(n)
     jaw_w[skin] = projection_weights(vertices[skin], jaw_d[skin], jaw_axis, jaw_pivot, jaw_deg)
+    jaw_w *= smoothstep((jaw_w - 0.03) / 0.12)      # drop the artist's faint whole-face drift (nose, brows)
     jaw_w = smooth(jaw_w, adjacency, is_skin, 2, alpha=0.3)
     jaw_w[lower] = 1.0
     # group-1 shares: neck_lean (1-h), head_tilt h(1-j), jaw h·j
@@ -536,8 +537,9 @@ def find_landmarks(vertices, part_of, new_index, mirror, source, target, left_ey
     left_skin = skin[P[skin, 0] > 5]
     lm["4.1"] = left_skin[np.argmax(inner[left_skin] * (P[left_skin, 0] < pupil[0]))]
     lm["4.5"] = left_skin[np.argmax(outer[left_skin])]
-    brow = left_skin[down[left_skin] > 0.6 * down.max()]
-    lm["4.3"] = nearest(brow[P[brow, 1] > pupil[1]], np.array([pupil[0], P[brow, 1].max(), P[brow, 2].max()]))
+    raise_ = inner + outer
+    column = left_skin[(np.abs(P[left_skin, 0] - pupil[0]) < 3) & (P[left_skin, 1] > pupil[1])]
+    lm["4.3"] = column[np.argmax(raise_[column])]          # the brow is where the brow raise moves most
     # Nose wings: the left nostril border moves most in the nostril dilatation unit; 9.5 is the
     # lowest point of the left wing.
     dil = target("mpfb2/targets/expression/units/caucasian/nose-left-dilatation.target.gz")
