@@ -57,6 +57,8 @@ class DenseLBS:
         names = model.parameters.names
         self.W = np.zeros((model.n_vertices, len(names)))
         for k, n in enumerate(names):
+            if model.parameters.is_leaf(n):
+                continue                  # skinning weights are the rigid (group-1) ones; K stays all parameters
             r = model.regions[n]
             self.W[r.indices, k] = r.weights
         s = self.W.sum(axis=1, keepdims=True)

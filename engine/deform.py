@@ -68,9 +68,8 @@ class Deformer:
         W.sum_duplicates()
         total = np.asarray(W.sum(axis=1)).ravel()
         nnz_per_row = np.diff(W.indptr)
-        scale = np.divide(1.0, total, out=np.zeros(n), where=total > 0)
-        W = sparse.diags(scale) @ W
         W = W.tocsr()
+        W.data = W.data / np.repeat(total, nnz_per_row)     # divide (not 1/total: subnormal totals overflow)
 
         # ---- classify vertices: bound to one parameter, blended, or free ----
         single = nnz_per_row == 1

@@ -12,13 +12,17 @@ True
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from typing import Mapping
 
 import numpy as np
 
 from .errors import ParameterError, UserError
-from .parameters import Parameter, ParameterTree
+from .parameters import NAME_PATTERN, Parameter, ParameterTree
+
+COLOR_PATTERN = re.compile(r"#[0-9a-fA-F]{6}")
+LANDMARK_PATTERN = re.compile(r"[A-Za-z0-9_.\-]+")
 
 
 @dataclass
@@ -114,13 +118,25 @@ class Model:
         n = len(self.vertices)
         if not np.all(np.isfinite(self.vertices)):
             raise UserError("the rest mesh has non-finite vertex coordinates")
-        _check_cell_array(self.faces, n)
+        check_cell_array(self.faces, n)
         if len(self.vertex_part) != n:
             raise UserError(f"{len(self.vertex_part)} part labels for {n} vertices")
         if n and (self.vertex_part.min() < 0 or self.vertex_part.max() >= len(self.parts)):
             raise UserError("a vertex's part index is outside the list of parts")
         if len(set(self.parts)) != len(self.parts):
             raise UserError("part names must be unique")
+        for part in self.parts:
+            if not isinstance(part, str) or not NAME_PATTERN.fullmatch(part):
+                raise UserError(f"part name {part!r} is not allowed: use letters, digits, '_', '.' and '-', "
+                                "starting with a letter or '_'")
+        for part, color in self.part_colors.items():
+            if part not in self.parts:
+                raise UserError(f"colour given for unknown part '{part}'")
+            if not isinstance(color, str) or not COLOR_PATTERN.fullmatch(color):
+                raise UserError(f"part '{part}': colour {color!r} must be written #rrggbb")
+        for key in self.landmarks:
+            if not LANDMARK_PATTERN.fullmatch(key):
+                raise UserError(f"landmark id {key!r} is not allowed: use letters, digits, '.', '_' and '-'")
         for name, region in self.regions.items():
             if name not in self.parameters:
                 raise ParameterError(f"influence region for unknown parameter '{name}'")
@@ -250,7 +266,8 @@ class Model:
                      None if self.vertex_colors is None else self.vertex_colors.copy())
 
 
-def _check_cell_array(faces: np.ndarray, n_vertices: int) -> None:
+def check_cell_array(faces: np.ndarray, n_vertices: int) -> None:
+    """Raise :class:`UserError` unless ``faces`` is a valid flat cell array over ``n_vertices``."""
     i, f = 0, faces
     count = 0
     lengths = []

@@ -87,12 +87,16 @@ def load_model(path: str | Path | None = None) -> Model:
     if root.tag != "model":
         raise ModelFileError(f"not a model description: root element is <{root.tag}>, expected <model>",
                              file=path, line=root.sourceline)
-    version = root.get("version")
-    if version is not None and version.isdigit() and int(version) > VERSION:
+    version = _integer(root.get("version"))
+    if version is not None and version > VERSION:
         raise ModelFileError(f"model format version {version} is newer than this program reads ({VERSION})",
                              file=path, line=root.sourceline)
     schema = _model_schema()
-    if not schema.validate(doc):
+    try:
+        valid = schema.validate(doc)
+    except etree.LxmlError as exc:
+        raise ModelFileError(f"cannot validate the model description: {exc}", file=path) from None
+    if not valid:
         err = schema.error_log.filter_from_errors()[0]
         raise ModelFileError(_schema_message(err.message), file=path, line=err.line)
 
@@ -129,7 +133,7 @@ def load_model(path: str | Path | None = None) -> Model:
             kw.update(axis=_vec(body.get("axis")), pivot=_vec(body.get("pivot")),
                       degrees_per_unit=float(body.get("degrees-per-unit")))
         else:
-            is_field = body.get("field", "false") in ("true", "1")
+            is_field = body.get("field", "false").strip() in ("true", "1")
             if not is_field and body.get("direction") is None:
                 raise ModelFileError(f"translation '{name}' needs a direction or field=\"true\"",
                                      file=path, line=body.sourceline)
@@ -172,6 +176,14 @@ def load_model(path: str | Path | None = None) -> Model:
                      vertex_colors=colors_rgb)
     except UserError as exc:
         raise ModelFileError(exc.message, file=arrays_path) from None
+
+
+def _integer(text: str | None) -> int | None:
+    """An xs:integer attribute as int (whitespace and a leading '+' allowed), or None if it is not one."""
+    try:
+        return int(text.strip()) if text is not None else None
+    except ValueError:
+        return None
 
 
 def _vec(text: str) -> np.ndarray:
@@ -260,17 +272,34 @@ def save_model(model: Model, path: str | Path) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     arrays = path.with_suffix(".h5")
     model.validate()
-    _atomic_write(arrays, lambda tmp: _write_arrays(model, tmp))
-    xml = model_to_xml(model, arrays.name)
-    _atomic_write(path, lambda tmp: Path(tmp).write_bytes(xml))
+    xml = model_to_xml(model, arrays.name)          # fails (UserError) before anything is touched
+    # Write both files completely under temporary names, then rename them into place: a failure
+    # while writing leaves the previous model as it was.
+    tmp_arrays = _temporary(arrays)
+    tmp_xml = _temporary(path)
+    try:
+        _write_arrays(model, tmp_arrays)
+        Path(tmp_xml).write_bytes(xml)
+        for tmp in (tmp_arrays, tmp_xml):
+            with open(tmp, "rb") as fh:
+                os.fsync(fh.fileno())
+        os.replace(tmp_arrays, arrays)
+        os.replace(tmp_xml, path)
+    except BaseException:
+        for tmp in (tmp_arrays, tmp_xml):
+            try:
+                os.unlink(tmp)
+            except FileNotFoundError:
+                pass
+        raise
     return path
 
 
 def model_to_xml(model: Model, arrays_name: str) -> bytes:
-    root = etree.Element("model", format=FORMAT, version=str(VERSION), name=model.name,
+    root = etree.Element("model", format=FORMAT, version=str(VERSION), name=_xml_text(model.name, "the model name"),
                          arrays=arrays_name, units="mm")
     if model.description:
-        etree.SubElement(root, "description").text = model.description
+        etree.SubElement(root, "description").text = _xml_text(model.description, "the model description")
     parts = etree.SubElement(root, "parts")
     for name in model.parts:
         el = etree.SubElement(parts, "part", name=name)
@@ -284,7 +313,7 @@ def model_to_xml(model: Model, arrays_name: str) -> bytes:
         el = etree.SubElement(parent_el, "parameter", name=p.name, type=p.kind, min=_num(p.minimum),
                               max=_num(p.maximum), default=_num(p.default))
         if p.description:
-            etree.SubElement(el, "description").text = p.description
+            etree.SubElement(el, "description").text = _xml_text(p.description, f"parameter '{p.name}' description")
         if p.kind == "rotation":
             etree.SubElement(el, "rotation", axis=_nums(p.axis), pivot=_nums(p.pivot),
                              **{"degrees-per-unit": _num(p.degrees_per_unit)})
@@ -305,6 +334,15 @@ def model_to_xml(model: Model, arrays_name: str) -> bytes:
                 el.set("description", FEATURE_POINTS[key])
     etree.indent(root, space="  ")
     return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
+
+
+def _xml_text(value: str, what: str) -> str:
+    """``value`` if XML can carry it, else a :class:`UserError` naming ``what``."""
+    try:
+        etree.Element("probe").text = value
+    except ValueError:
+        raise UserError(f"{what} contains characters XML cannot hold (control characters or NUL)") from None
+    return value
 
 
 def _landmark_order(key: str):
@@ -343,21 +381,11 @@ def _write_arrays(model: Model, path: str) -> None:
                 g.create_dataset("displacements", data=r.displacements)
 
 
-def _atomic_write(path: Path, writer) -> None:
-    """Write through ``writer(tmp_path)`` to a temporary file, then rename over ``path``."""
+def _temporary(path: Path) -> str:
+    """A new empty file next to ``path`` with the permissions a plain ``open`` would give."""
     fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     os.close(fd)
     umask = os.umask(0)
     os.umask(umask)
     os.chmod(tmp, 0o666 & ~umask)      # mkstemp's 0600 would make saved models private
-    try:
-        writer(tmp)
-        with open(tmp, "rb") as fh:
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
+    return tmp

@@ -20,6 +20,7 @@ are added or removed.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
 from typing import Iterable, Iterator
 
@@ -31,6 +32,7 @@ from .transforms import rotation_about_axis, translation
 ROTATION = "rotation"
 TRANSLATION = "translation"
 KINDS = (ROTATION, TRANSLATION)
+NAME_PATTERN = re.compile(r"[A-Za-z_][A-Za-z0-9_.\-]*")   # as in engine/schemas/model.xsd
 
 
 @dataclass
@@ -76,8 +78,10 @@ class Parameter:
     description: str = ""
 
     def __post_init__(self):
-        if not isinstance(self.name, str) or not self.name.strip():
-            raise ParameterError("a parameter needs a non-empty name")
+        if not isinstance(self.name, str) or not NAME_PATTERN.fullmatch(self.name):
+            raise ParameterError(
+                f"parameter name {self.name!r} is not allowed: use letters, digits, '_', '.' and '-', "
+                "starting with a letter or '_'")
         if self.kind not in KINDS:
             raise ParameterError(f"parameter '{self.name}': type must be rotation or translation, not '{self.kind}'")
         self.minimum, self.maximum, self.default = float(self.minimum), float(self.maximum), float(self.default)
@@ -97,7 +101,8 @@ class Parameter:
             norm = np.linalg.norm(self.axis)
             if norm == 0:
                 raise ParameterError(f"parameter '{self.name}': rotation axis is the zero vector")
-            self.axis = self.axis / norm
+            if abs(norm - 1.0) > 1e-12:     # normalise once, so that copies and reloads stay bit-identical
+                self.axis = self.axis / norm
         if self.field and self.kind != TRANSLATION:
             raise ParameterError(f"parameter '{self.name}': only translations can carry a displacement field")
 
@@ -263,4 +268,10 @@ def _suggest(name: str, known) -> str:
     import difflib
 
     close = difflib.get_close_matches(str(name), list(known), n=1)
-    return f" (did you mean '{close[0]}'?)" if close else ""
+    if close:
+        return f" (did you mean '{close[0]}'?)"
+    names = sorted(known)
+    if not names:
+        return " (the model has no parameters)"
+    shown = ", ".join(names[:12]) + (", …" if len(names) > 12 else "")
+    return f" (parameters: {shown})"
