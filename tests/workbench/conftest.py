@@ -1,0 +1,117 @@
+"""Fixtures for the workbench tests: the synthetic head on disk, a real main window, leak checks.
+
+Run under a display server, e.g. ``xvfb-run -a .venv/bin/pytest tests/workbench``.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+# The project's own folders come first, as ``pythonpath = ["."]`` would: an
+# editable install made before workbench/__init__.py existed maps
+# ``workbench`` to a namespace package, which would hide the real one.
+PROJECT_ROOT = Path(__file__).resolve().parents[2]
+if str(PROJECT_ROOT) not in sys.path:
+    sys.path.insert(0, str(PROJECT_ROOT))
+
+import engine  # noqa: E402
+from synthetic_workbench_model import build_synthetic_model  # noqa: E402
+
+
+@pytest.fixture(scope="session")
+def synthetic_model_dir(tmp_path_factory) -> Path:
+    return tmp_path_factory.mktemp("synthetic-model")
+
+
+@pytest.fixture
+def synthetic_model_path(synthetic_model_dir) -> Path:
+    """The synthetic head saved with :func:`engine.save_model` (XML + HDF5)."""
+    path = synthetic_model_dir / "synthetic-head.xml"
+    if not path.exists():
+        engine.save_model(build_synthetic_model(), path)
+    return path
+
+
+@pytest.fixture
+def broken_model_path(tmp_path) -> Path:
+    """A model description whose XML is cut off on line 3."""
+    path = tmp_path / "broken.xml"
+    path.write_text('<?xml version="1.0"?>\n<model format="artificial-person-model" version="1">\n  <parts>\n')
+    return path
+
+
+# ---------------------------------------------------------------------------
+# Qt set-up and a real main window
+# ---------------------------------------------------------------------------
+
+@pytest.fixture(scope="session", autouse=True)
+def _isolated_settings(qapp, tmp_path_factory):
+    """Keep QSettings (last directory, …) out of the user's configuration."""
+    from PySide6.QtCore import QSettings
+
+    qapp.setOrganizationName("Artificial Person Tests")
+    qapp.setApplicationName("Workbench Tests")
+    QSettings.setDefaultFormat(QSettings.Format.IniFormat)
+    QSettings.setPath(QSettings.Format.IniFormat, QSettings.Scope.UserScope,
+                      str(tmp_path_factory.mktemp("settings")))
+
+
+@pytest.fixture(autouse=True)
+def _no_open_plotters():
+    """Like pyvistaqt's own tests: fail if a test leaves a QtInteractor open."""
+    yield
+    from pyvista.plotting import _ALL_PLOTTERS
+
+    open_plotters = [p for p in _ALL_PLOTTERS.values() if not getattr(p, "_closed", True)]
+    assert not open_plotters, f"plotters left open: {open_plotters}"
+
+
+@pytest.fixture
+def make_window(qtbot):
+    """Factory: a shown :class:`MainWindow` on a model path.
+
+    Afterwards every window is closed and deleted, and each one's QtInteractor
+    must be closed, its C++ widget deleted and its VTK render window released.
+    (That the Python objects are then garbage-collected too is checked by
+    ``test_closed_window_is_garbage_collected``; here pytest still holds them.)
+    """
+    from workbench.document import ModelDocument
+    from workbench.main_window import MainWindow
+
+    plotters = []
+
+    def make(path, size=(1200, 760)) -> MainWindow:
+        document = ModelDocument(engine.load_model(path), path)
+        window = MainWindow(document)
+        qtbot.addWidget(window)
+        window.resize(*size)
+        window.show()
+        qtbot.waitExposed(window)
+        window.viewport.set_view("front")  # frame again now that the widget has its real size
+        plotters.append(window.viewport.plotter)
+        return window
+
+    yield make
+    import shiboken6
+    from PySide6.QtCore import QCoreApplication, QEvent
+    from PySide6.QtWidgets import QApplication
+
+    for widget in QApplication.topLevelWidgets():
+        if widget.__class__.__name__ == "MainWindow":
+            widget.close()  # closeEvent closes the plotter
+            widget.deleteLater()
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+    for plotter in plotters:
+        assert plotter._closed, "a QtInteractor was left open"
+        assert plotter.render_window is None, "a VTK render window outlived its window"
+        assert not shiboken6.isValid(plotter), "a QtInteractor widget outlived its window"
+    plotters.clear()
+
+
+@pytest.fixture
+def window(make_window, synthetic_model_path):
+    """The main window on the synthetic head."""
+    return make_window(synthetic_model_path)

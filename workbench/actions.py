@@ -1,0 +1,107 @@
+"""The workbench's commands, declared as data and turned into QActions in one place.
+
+Each :class:`ActionSpec` names an action, its menu, shortcut and icon, and
+a callback taking the main window. Adding a command is adding one entry to
+:data:`ACTIONS`; menus and the toolbar follow.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Callable
+
+from PySide6.QtGui import QAction, QKeySequence
+from PySide6.QtWidgets import QMenu, QMenuBar, QToolBar
+
+from .icons import icon
+
+if TYPE_CHECKING:
+    from .main_window import MainWindow
+
+Shortcut = QKeySequence.StandardKey | str | None
+
+
+@dataclass(frozen=True)
+class ActionSpec:
+    """One command: where it shows, how it is invoked, what it does.
+
+    ``triggered(window)`` runs for plain actions; checkable actions use
+    ``toggled(window, checked)`` instead.
+    """
+
+    id: str
+    text: str
+    menu: str
+    triggered: Callable[["MainWindow"], object] | None = None
+    toggled: Callable[["MainWindow", bool], object] | None = None
+    shortcut: Shortcut = None
+    icon: str | None = None
+    tip: str = ""
+    toolbar: bool = False
+    separator_before: bool = False
+
+
+ACTIONS: tuple[ActionSpec, ...] = (
+    ActionSpec("file.open", "&Open model…", "&File", triggered=lambda w: w.open_model_dialog(),
+               shortcut=QKeySequence.StandardKey.Open, icon="open", toolbar=True,
+               tip="Open a model description (.xml)"),
+    ActionSpec("file.save_as", "Save model &as…", "&File", triggered=lambda w: w.save_model_dialog(),
+               shortcut=QKeySequence.StandardKey.SaveAs, icon="save", toolbar=True,
+               tip="Write the model to a new .xml + .h5 pair"),
+    ActionSpec("file.quit", "&Quit", "&File", triggered=lambda w: w.close(),
+               shortcut=QKeySequence.StandardKey.Quit, separator_before=True),
+    ActionSpec("pose.reset_all", "&Reset all", "&Pose", triggered=lambda w: w.document.reset_all(),
+               shortcut="Ctrl+R", icon="reset", toolbar=True, separator_before=True,
+               tip="Put every parameter back to its default (the rest pose)"),
+    ActionSpec("view.front", "&Front", "&View", triggered=lambda w: w.viewport.set_view("front"),
+               shortcut="Ctrl+1", icon="view-front", toolbar=True, separator_before=True,
+               tip="Look at the face straight on"),
+    ActionSpec("view.side", "&Side", "&View", triggered=lambda w: w.viewport.set_view("side"),
+               shortcut="Ctrl+2", icon="view-side", toolbar=True, tip="Look at the head in profile"),
+    ActionSpec("view.three_quarter", "&Three-quarter", "&View",
+               triggered=lambda w: w.viewport.set_view("three-quarter"),
+               shortcut="Ctrl+3", icon="view-three-quarter", toolbar=True, tip="Look from halfway round"),
+    ActionSpec("view.wireframe", "&Wireframe", "&View", toggled=lambda w, on: w.view_state.set_wireframe(on),
+               shortcut="Ctrl+Shift+W", icon="wireframe", toolbar=True, separator_before=True,
+               tip="Draw the polygons' edges instead of shaded surfaces"),
+)
+
+
+def create_actions(window: "MainWindow", specs: tuple[ActionSpec, ...] = ACTIONS) -> dict[str, QAction]:
+    """One QAction per spec, parented to ``window`` and connected to its callback."""
+    actions: dict[str, QAction] = {}
+    for spec in specs:
+        action = QAction(spec.text, window)
+        action.setObjectName(spec.id)
+        if spec.shortcut is not None:
+            action.setShortcut(QKeySequence(spec.shortcut))
+        if spec.icon:
+            action.setIcon(icon(spec.icon))
+        if spec.tip:
+            action.setToolTip(spec.tip)
+            action.setStatusTip(spec.tip)
+        if spec.toggled is not None:
+            action.setCheckable(True)
+            action.toggled.connect(lambda on, spec=spec: spec.toggled(window, on))
+        elif spec.triggered is not None:
+            action.triggered.connect(lambda _checked=False, spec=spec: spec.triggered(window))
+        actions[spec.id] = action
+    return actions
+
+
+def populate(menubar: QMenuBar, toolbar: QToolBar, actions: dict[str, QAction],
+             specs: tuple[ActionSpec, ...] = ACTIONS) -> dict[str, QMenu]:
+    """Put the actions into menus (created in order of first mention) and the toolbar."""
+    menus: dict[str, QMenu] = {}
+    for spec in specs:
+        menu = menus.get(spec.menu)
+        if menu is None:
+            menu = menus[spec.menu] = menubar.addMenu(spec.menu)
+        elif spec.separator_before:
+            menu.addSeparator()
+        menu.addAction(actions[spec.id])
+        if spec.toolbar:
+            if spec.separator_before and toolbar.actions():
+                toolbar.addSeparator()
+            toolbar.addAction(actions[spec.id])
+    return menus

@@ -1,0 +1,53 @@
+"""Display colours of a model's parts.
+
+A model with painted per-vertex colours (:attr:`engine.Model.vertex_colors`:
+eyebrows, iris, pupil) is drawn in those, as ``engine.render`` does; this
+module is for models without them. A model file may give each part a colour (``<part name="skin"
+color="#e0ac94"/>``, kept in :attr:`engine.Model.part_colors`); parts
+without one get a default chosen from their name, so the default head's
+skin, eyes, teeth, tongue and eyelashes look right without any colours in
+the file.
+
+>>> default_part_color("eyelashes_left")
+'#2b211c'
+"""
+
+from __future__ import annotations
+
+import re
+
+import engine
+
+SKIN = "#e0ac94"
+EYE = "#f3f0ea"
+TEETH = "#efe6cc"
+TONGUE = "#c4525e"
+EYELASHES = "#2b211c"
+FALLBACK = "#c9c4bd"
+
+# First match wins, so the more specific names ("eyelashes", "eyebrow") come before "eye".
+_RULES: tuple[tuple[str, str], ...] = (
+    (r"lash|brow|hair", EYELASHES),
+    (r"eye|iris|sclera|cornea", EYE),
+    (r"teeth|tooth", TEETH),
+    (r"tongue", TONGUE),
+    (r"skin|head|face|body|neck", SKIN),
+)
+_HEX = re.compile(r"#[0-9a-fA-F]{6}")
+
+
+def default_part_color(part: str) -> str:
+    """A hex colour for a part, judged from its name alone."""
+    name = part.lower()
+    for pattern, color in _RULES:
+        if re.search(pattern, name):
+            return color
+    return FALLBACK
+
+
+def part_color(model: engine.Model, part: str) -> str:
+    """The colour to draw ``part`` with: the model's own, else the default for its name."""
+    color = model.part_colors.get(part)
+    if color is not None and _HEX.fullmatch(color):
+        return color
+    return default_part_color(part)

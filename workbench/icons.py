@@ -1,0 +1,26 @@
+"""The workbench's SVG icons (the project's ``icons/`` folder), by name.
+
+>>> icon("open")          # doctest: +SKIP
+<PySide6.QtGui.QIcon ...>
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+from PySide6.QtGui import QIcon
+
+ICON_DIR = Path(__file__).resolve().parent.parent / "icons"
+APP_ICON = "artificial-person"
+
+
+def icon_path(name: str) -> Path:
+    return ICON_DIR / f"{name}.svg"
+
+
+@lru_cache(maxsize=None)
+def icon(name: str) -> QIcon:
+    """The icon ``icons/<name>.svg``; an empty icon if the file is missing (text still shows)."""
+    path = icon_path(name)
+    return QIcon(str(path)) if path.exists() else QIcon()
