@@ -238,25 +238,11 @@ def _run_import_mesh(args) -> int:
 
 # -- info ------------------------------------------------------------------------
 
-def _tree_order(tree) -> list[tuple[str, int]]:
-    """(name, depth) depth-first from the roots, children in definition order."""
-    out: list[tuple[str, int]] = []
-
-    def visit(name: str, depth: int):
-        out.append((name, depth))
-        for child in tree.children(name):
-            visit(child, depth + 1)
-
-    for root in tree.roots():
-        visit(root, 0)
-    return out
-
-
 def model_summary(model) -> dict:
     """The ``info --json`` object: parameters (tree order), landmarks and vertex count."""
     tree = model.parameters
     parameters = []
-    for name, _ in _tree_order(tree):
+    for name, _ in tree.depth_first():
         p = tree[name]
         parameters.append({"name": p.name, "type": p.kind, "group": tree.group(name), "parent": p.parent,
                            "min": p.minimum, "max": p.maximum, "default": p.default})
@@ -273,7 +259,7 @@ def model_report(model) -> str:
     lines = [f"{model.name}: {model.n_vertices} vertices, {n_polygons} polygons, "
              f"{len(model.parts)} parts, {len(model.parameters)} parameters"]
     rows = []
-    for name, depth in _tree_order(tree):
+    for name, depth in tree.depth_first():
         p = tree[name]
         if p.kind == "rotation":
             scale = f"{p.degrees_per_unit:g} deg/unit"

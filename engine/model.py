@@ -259,6 +259,28 @@ class Model:
             raise
         self.changed()
 
+    def reordered(self, order) -> "Model":
+        """A copy with vertex ``i`` taken from old vertex ``order[i]``; faces, regions and
+        landmarks renumbered. ``order`` must be a permutation of ``range(n_vertices)``."""
+        order = np.asarray(order, dtype=np.int64)
+        n = self.n_vertices
+        if order.shape != (n,) or not np.array_equal(np.sort(order), np.arange(n)):
+            raise UserError(f"a vertex order must be a permutation of 0..{n - 1}")
+        new_index = np.empty(n, dtype=np.int64)
+        new_index[order] = np.arange(n)
+        faces = self.faces.copy()
+        i = 0
+        while i < len(faces):
+            k = int(faces[i])
+            faces[i + 1:i + 1 + k] = new_index[faces[i + 1:i + 1 + k]]
+            i += k + 1
+        regions = {name: InfluenceRegion(new_index[r.indices], r.weights, r.displacements)
+                   for name, r in self.regions.items()}
+        return Model(self.vertices[order], faces, list(self.parts), self.vertex_part[order],
+                     self.parameters.copy(), regions, {k: int(new_index[v]) for k, v in self.landmarks.items()},
+                     self.name, self.description, dict(self.part_colors),
+                     None if self.vertex_colors is None else self.vertex_colors[order])
+
     def copy(self) -> "Model":
         return Model(self.vertices.copy(), self.faces.copy(), list(self.parts), self.vertex_part.copy(),
                      self.parameters.copy(), {k: r.copy() for k, r in self.regions.items()},

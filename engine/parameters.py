@@ -212,6 +212,19 @@ class ParameterTree:
             visit(n)
         return done
 
+    def depth_first(self) -> list[tuple[str, int]]:
+        """(name, depth) from each root down, children in definition order (the tree as shown to users)."""
+        out: list[tuple[str, int]] = []
+
+        def visit(name: str, depth: int) -> None:
+            out.append((name, depth))
+            for child in self.children(name):
+                visit(child, depth + 1)
+
+        for root in self.roots():
+            visit(root, 0)
+        return out
+
     def copy(self) -> "ParameterTree":
         return ParameterTree(p.copy() for p in self._params.values())
 

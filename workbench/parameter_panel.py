@@ -51,7 +51,7 @@ class ParameterPanel(QWidget):
         column.setContentsMargins(0, 0, 0, 0)
         column.setSpacing(2)
         tree = model.parameters
-        for name, depth in _tree_order(tree):
+        for name, depth in tree.depth_first():
             row = ParameterSlider(self._document, tree[name], depth)
             self.rows[name] = row
             column.addWidget(row)
@@ -71,15 +71,3 @@ class ParameterPanel(QWidget):
         self.reset_all_button.setEnabled(not self._document.is_at_rest())
 
 
-def _tree_order(tree: engine.ParameterTree) -> list[tuple[str, int]]:
-    """(name, depth) depth-first from each root, children in definition order."""
-    out: list[tuple[str, int]] = []
-
-    def visit(name: str, depth: int) -> None:
-        out.append((name, depth))
-        for child in tree.children(name):
-            visit(child, depth + 1)
-
-    for root in tree.roots():
-        visit(root, 0)
-    return out

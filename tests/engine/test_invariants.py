@@ -414,38 +414,31 @@ def test_vectorised_deformer_equals_literal_reference(seed, n_vertices, n_parame
     np.testing.assert_allclose(model.deform(values), deform_reference(model, values), rtol=0, atol=TOL)
 
 
-def _relabelled(model: Model, perm: np.ndarray) -> Model:
-    """The same model with vertex ``perm[j]`` renamed ``j``."""
-    inv = np.empty_like(perm)
-    inv[perm] = np.arange(len(perm))
-    faces = model.faces.copy()
-    i = 0
-    while i < len(faces):
-        k = int(faces[i])
-        faces[i + 1:i + 1 + k] = inv[faces[i + 1:i + 1 + k]]
-        i += k + 1
-    regions = {n: InfluenceRegion(inv[r.indices], r.weights, r.displacements) for n, r in model.regions.items()}
-    return Model(model.vertices[perm], faces, model.parts, model.vertex_part[perm], model.parameters, regions)
-
-
 @pytest.mark.parametrize("seed", SEEDS)
-def test_fast_path_slices_and_fancy_indices_agree(seed):
-    """The Deformer applies a leaf whose vertices are one run (in its internal order) through
-    a slice and a scattered leaf through an index array. A rig laid out in runs takes the slice
-    path, the same rig with its vertices relabelled takes the index path, and both give the
-    reference (and each other, vertex for vertex). (Looks at ``Deformer.leaves``, whose second
-    field is the index; adjust if the Deformer's internals change.)"""
+def test_fast_path_runs_indices_and_vertex_orders_agree(seed, monkeypatch):
+    """The Deformer applies a leaf through contiguous runs of its internal order, or through an
+    index array when a leaf splits into more than ``Deformer.MAX_RUNS`` runs; and it skips the
+    final reordering when the model's vertex order is already its internal order. All paths
+    give the reference, and each other vertex for vertex. (Looks at ``Deformer.leaves``, whose
+    second field is the list of runs or the index array.)"""
+    from engine.deform import Deformer, optimise_vertex_order
+
     model = rig(seed, 60, 8, 3, False, True)
-    assert any(isinstance(leaf[1], slice) for leaf in model.deformer().leaves)
+    assert all(isinstance(leaf[1], list) for leaf in model.deformer().leaves)
+    ordered, order = optimise_vertex_order(model)
+    assert ordered.deformer().identity_order
     perm = np.random.default_rng(seed).permutation(model.n_vertices)
-    scattered = _relabelled(model, perm)
-    assert any(isinstance(leaf[1], np.ndarray) for leaf in scattered.deformer().leaves)
+    scattered = model.reordered(perm)
+    monkeypatch.setattr(Deformer, "MAX_RUNS", 0)
+    scattered._deformer = None
+    assert all(isinstance(leaf[1], np.ndarray) for leaf in scattered.deformer().leaves)
     rng = np.random.default_rng(900 + seed)
     for _ in range(3):
         values = random_values(rng, model)
         runs = model.deform(values)
         np.testing.assert_allclose(runs, deform_reference(model, values), rtol=0, atol=TOL)
         np.testing.assert_allclose(scattered.deform(values), runs[perm], rtol=0, atol=1e-12)
+        np.testing.assert_allclose(ordered.deform(values), runs[order], rtol=0, atol=1e-12)
 
 
 def test_deformer_refuses_wrong_number_of_values_and_unknown_names():
