@@ -30,6 +30,8 @@ from __future__ import annotations
 import numpy as np
 from scipy import sparse
 
+from .transforms import is_identity
+
 
 class Deformer:
     """Precomputed structure for deforming one :class:`~engine.model.Model` quickly.
@@ -214,7 +216,7 @@ class Deformer:
         out = np.empty((self.n_vertices, 3))
         for k, s in self.blocks:
             T = world[k]
-            if _identity(T):
+            if is_identity(T):
                 out[s] = work[s, :3]
             else:
                 np.matmul(work[s], T[:, :3], out=out[s])
@@ -249,10 +251,6 @@ def optimise_vertex_order(model):
     """
     order = Deformer(model).perm
     return model.reordered(order), order
-
-
-def _identity(T: np.ndarray) -> bool:
-    return T[0, 0] == 1.0 and T[1, 1] == 1.0 and T[2, 2] == 1.0 and np.array_equal(T, np.eye(4))
 
 
 def _rows(a: np.ndarray) -> np.ndarray:

@@ -28,7 +28,8 @@ from pathlib import Path
 import numpy as np
 
 from .errors import MeshImportError, UserError
-from .model import Model, cells_to_triangles, check_cell_array
+from .cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
+from .model import Model
 
 WRITE_FORMATS = (".obj", ".ply", ".npz")
 _DEFAULT_PART = "surface"
@@ -203,9 +204,9 @@ def _read_with_pyvista(path: Path):
         cells = _polys_and_strips(ds)
         if len(cells) == 0:
             continue
-        counts = _cell_counts(cells)
+        counts = cell_sizes(cells)
         shifted = cells.copy()
-        shifted[_index_mask(cells, counts)] += offset
+        shifted[index_mask(cells, counts)] += offset
         slot = _part_slot(label if len(pieces) > 1 else _DEFAULT_PART, part_names, part_index)
         vertex_blocks.append(np.asarray(ds.points, dtype=float))
         cell_blocks.append(shifted)
@@ -244,7 +245,7 @@ def _polys_and_strips(ds) -> np.ndarray:
     if not ds.GetNumberOfStrips():
         return polys
     tris = []
-    for strip in _split_cells(np.asarray(ds.strips, dtype=np.int64)):
+    for strip in split_cells(np.asarray(ds.strips, dtype=np.int64)):
         for j in range(len(strip) - 2):
             a, b, c = strip[j], strip[j + 1], strip[j + 2]
             tris.append((3, a, b, c) if j % 2 == 0 else (3, b, a, c))
@@ -253,8 +254,8 @@ def _polys_and_strips(ds) -> np.ndarray:
 
 def _compact(vertices, faces, face_part, part_names):
     """Drop vertices no polygon uses (keeping order) and give every vertex the part of its first face."""
-    counts = _cell_counts(faces)
-    mask = _index_mask(faces, counts)
+    counts = cell_sizes(faces)
+    mask = index_mask(faces, counts)
     indices = faces[mask]
     owner = np.repeat(np.asarray(face_part, dtype=np.int64), counts)
     used = np.zeros(len(vertices), dtype=bool)
@@ -293,35 +294,6 @@ def _part_names(labels: list[str]) -> list[str]:
 # ---------------------------------------------------------------------------
 # Cell-array helpers
 # ---------------------------------------------------------------------------
-
-def _cell_counts(cells: np.ndarray) -> np.ndarray:
-    """Vertex count of every polygon in a flat cell array ``[n, i0, …, n, …]``."""
-    cells = np.asarray(cells)
-    if len(cells) == 0:
-        return np.zeros(0, dtype=np.int64)
-    k = int(cells[0])
-    if k > 0 and len(cells) % (k + 1) == 0 and np.all(cells[::k + 1] == k):
-        return np.full(len(cells) // (k + 1), k, dtype=np.int64)
-    counts, i = [], 0
-    while i < len(cells):
-        counts.append(int(cells[i]))
-        i += counts[-1] + 1
-    return np.array(counts, dtype=np.int64)
-
-
-def _index_mask(cells: np.ndarray, counts: np.ndarray) -> np.ndarray:
-    """True where the flat cell array holds a vertex index, False at the counts."""
-    mask = np.ones(len(cells), dtype=bool)
-    if len(counts):
-        mask[np.concatenate([[0], np.cumsum(counts[:-1] + 1)])] = False
-    return mask
-
-
-def _split_cells(cells: np.ndarray) -> list[np.ndarray]:
-    counts = _cell_counts(cells)
-    starts = np.concatenate([[0], np.cumsum(counts[:-1] + 1)]) if len(counts) else []
-    return [cells[s + 1:s + 1 + k] for s, k in zip(starts, counts)]
-
 
 # ---------------------------------------------------------------------------
 # Writing
@@ -380,7 +352,7 @@ def _obj_bytes(vertices, faces, parts, vertex_part, name) -> bytes:
     if name:
         out.write(f"o {name}\n")
     out.write("".join(f"v {x!r} {y!r} {z!r}\n" for x, y, z in vertices.tolist()))
-    polygons = _split_cells(faces)
+    polygons = split_cells(faces)
     grouped = parts is not None and vertex_part is not None
     last = None
     for poly in polygons:
@@ -394,7 +366,7 @@ def _obj_bytes(vertices, faces, parts, vertex_part, name) -> bytes:
 
 
 def _ply_bytes(vertices, faces, binary: bool) -> bytes:
-    counts = _cell_counts(faces)
+    counts = cell_sizes(faces)
     count_type = "uchar" if not len(counts) or counts.max() <= 255 else "int"
     header = (
         "ply\n"
@@ -407,11 +379,11 @@ def _ply_bytes(vertices, faces, binary: bool) -> bytes:
         "end_header\n").encode("ascii")
     if not binary:
         body = "".join(f"{x!r} {y!r} {z!r}\n" for x, y, z in vertices.tolist())
-        body += "".join(f"{len(p)} " + " ".join(map(str, p.tolist())) + "\n" for p in _split_cells(faces))
+        body += "".join(f"{len(p)} " + " ".join(map(str, p.tolist())) + "\n" for p in split_cells(faces))
         return header + body.encode("ascii")
     vertex_bytes = np.ascontiguousarray(vertices, dtype="<f8").tobytes()
     # One byte (or four) for each count, four for each index, packed in cell-array order.
-    mask = _index_mask(faces, counts)
+    mask = index_mask(faces, counts)
     count_size = 1 if count_type == "uchar" else 4
     sizes = np.where(mask, 4, count_size)
     starts = np.concatenate([[0], np.cumsum(sizes[:-1])]) if len(faces) else np.zeros(0, dtype=np.int64)

@@ -19,6 +19,7 @@ from typing import Mapping
 import numpy as np
 
 from .errors import ParameterError, UserError
+from .cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
 from .parameters import NAME_PATTERN, Parameter, ParameterTree
 
 COLOR_PATTERN = re.compile(r"#[0-9a-fA-F]{6}")
@@ -164,12 +165,7 @@ class Model:
 
     def polygons(self) -> list[np.ndarray]:
         """Polygons as a list of index arrays."""
-        out, i, f = [], 0, self.faces
-        while i < len(f):
-            k = int(f[i])
-            out.append(f[i + 1:i + 1 + k])
-            i += k + 1
-        return out
+        return split_cells(self.faces)
 
     def part_vertices(self, part: str) -> np.ndarray:
         """Indices of the vertices of one part."""
@@ -269,11 +265,8 @@ class Model:
         new_index = np.empty(n, dtype=np.int64)
         new_index[order] = np.arange(n)
         faces = self.faces.copy()
-        i = 0
-        while i < len(faces):
-            k = int(faces[i])
-            faces[i + 1:i + 1 + k] = new_index[faces[i + 1:i + 1 + k]]
-            i += k + 1
+        mask = index_mask(faces, cell_sizes(faces))
+        faces[mask] = new_index[faces[mask]]
         regions = {name: InfluenceRegion(new_index[r.indices], r.weights, r.displacements)
                    for name, r in self.regions.items()}
         return Model(self.vertices[order], faces, list(self.parts), self.vertex_part[order],
@@ -286,41 +279,3 @@ class Model:
                      self.parameters.copy(), {k: r.copy() for k, r in self.regions.items()},
                      dict(self.landmarks), self.name, self.description, dict(self.part_colors),
                      None if self.vertex_colors is None else self.vertex_colors.copy())
-
-
-def check_cell_array(faces: np.ndarray, n_vertices: int) -> None:
-    """Raise :class:`UserError` unless ``faces`` is a valid flat cell array over ``n_vertices``."""
-    i, f = 0, faces
-    count = 0
-    lengths = []
-    while i < len(f):
-        k = int(f[i])
-        if k < 3 or i + k >= len(f):
-            raise UserError(f"face {count}: malformed polygon list (a polygon needs at least 3 vertices)")
-        lengths.append(k)
-        i += k + 1
-        count += 1
-    if len(f):
-        mask = np.ones(len(f), dtype=bool)
-        starts = np.cumsum([0] + [k + 1 for k in lengths[:-1]])
-        mask[starts] = False
-        idx = f[mask]
-        if idx.min() < 0 or idx.max() >= n_vertices:
-            raise UserError(f"a face names a vertex outside 0..{n_vertices - 1}")
-
-
-def cells_to_triangles(faces: np.ndarray) -> np.ndarray:
-    """Fan-triangulate a flat cell array ``[n, i0, …]`` into (T, 3) indices."""
-    tris, i, f = [], 0, np.asarray(faces)
-    # Fast path: all polygons the same size.
-    if len(f):
-        k = int(f[0])
-        if len(f) % (k + 1) == 0 and np.all(f[::k + 1] == k):
-            poly = f.reshape(-1, k + 1)[:, 1:]
-            return np.concatenate([poly[:, [0, j, j + 1]] for j in range(1, k - 1)]) if k > 3 else poly.copy()
-    while i < len(f):
-        k = int(f[i])
-        poly = f[i + 1:i + 1 + k]
-        tris.extend([poly[0], poly[j], poly[j + 1]] for j in range(1, k - 1))
-        i += k + 1
-    return np.array(tris, dtype=np.int64).reshape(-1, 3)

@@ -125,13 +125,13 @@ def part_material(name: str, colors: Mapping[str, str] | None = None):
 # ---------------------------------------------------------------------------
 
 def _draw(model, positions: np.ndarray, view: str, width: int, height: int) -> np.ndarray:
-    from .mesh_io import _cell_counts
+    from .cells import cell_sizes, cell_starts
 
     _choose_offscreen_backend()
     import pyvista as pv
 
-    counts = _cell_counts(model.faces)
-    starts = np.concatenate([[0], np.cumsum(counts[:-1] + 1)]).astype(np.int64) if len(counts) else counts
+    counts = cell_sizes(model.faces)
+    starts = cell_starts(counts)
     face_part = model.vertex_part[model.faces[starts + 1]] if len(counts) else counts
     plotter = pv.Plotter(off_screen=True, window_size=(width, height), lighting="none")
     try:
@@ -183,10 +183,10 @@ def _choose_offscreen_backend() -> None:
 
 def _part_mesh(pv, faces: np.ndarray, counts: np.ndarray, keep: np.ndarray, positions: np.ndarray):
     """PolyData of the polygons flagged by ``keep``, with smooth point normals, and the model vertices it uses."""
-    from .mesh_io import _index_mask
+    from .cells import index_mask
 
     cells = faces[np.repeat(keep, counts + 1)].copy()
-    mask = _index_mask(cells, counts[keep])
+    mask = index_mask(cells, counts[keep])
     used = np.unique(cells[mask])
     remap = np.full(len(positions), -1, dtype=np.int64)
     remap[used] = np.arange(len(used))
@@ -199,7 +199,7 @@ def _part_mesh(pv, faces: np.ndarray, counts: np.ndarray, keep: np.ndarray, posi
 
 def _vertex_normals(points: np.ndarray, cells: np.ndarray) -> np.ndarray:
     """Area-weighted vertex normals of fan-triangulated polygons (smooth shading)."""
-    from .model import cells_to_triangles
+    from .cells import cells_to_triangles
 
     tris = cells_to_triangles(cells)
     a, b, c = points[tris[:, 0]], points[tris[:, 1]], points[tris[:, 2]]

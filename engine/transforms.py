@@ -63,4 +63,5 @@ def apply(T: np.ndarray, points) -> np.ndarray:
 
 def is_identity(T: np.ndarray) -> bool:
     """True when ``T`` is exactly the identity (no tolerance)."""
-    return bool(np.array_equal(T, IDENTITY))
+    # the diagonal test rejects almost every moving matrix before the full comparison (per-frame path)
+    return T[0, 0] == 1.0 and T[1, 1] == 1.0 and T[2, 2] == 1.0 and bool(np.array_equal(T, IDENTITY))

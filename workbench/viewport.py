@@ -17,6 +17,7 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 
 import engine
+from engine.cells import cell_sizes, cell_starts
 
 from .colors import part_color
 from .document import ModelDocument
@@ -201,8 +202,8 @@ def _split_by_part(model: engine.Model) -> dict[str, tuple[np.ndarray, np.ndarra
     n_parts = len(model.parts)
     if len(faces) == 0:
         return {}
-    starts = _cell_starts(faces)
-    sizes = faces[starts]
+    sizes = cell_sizes(faces)
+    starts = cell_starts(sizes)
     cell_part = model.vertex_part[faces[starts + 1]]
     cell_of_entry = np.repeat(np.arange(len(starts)), sizes + 1)
     is_count = np.zeros(len(faces), dtype=bool)
@@ -220,15 +221,3 @@ def _split_by_part(model: engine.Model) -> dict[str, tuple[np.ndarray, np.ndarra
         cells[~counts] = lookup[used]
         out[model.parts[p]] = (indices, cells)
     return out
-
-
-def _cell_starts(faces: np.ndarray) -> np.ndarray:
-    """Index of each polygon's vertex count in a flat ``[n, i0, …]`` cell array."""
-    k = int(faces[0])
-    if len(faces) % (k + 1) == 0 and np.all(faces[::k + 1] == k):
-        return np.arange(0, len(faces), k + 1)
-    starts, i = [], 0
-    while i < len(faces):
-        starts.append(i)
-        i += int(faces[i]) + 1
-    return np.asarray(starts, dtype=np.int64)
