@@ -19,9 +19,7 @@ from __future__ import annotations
 
 import contextlib
 import io
-import os
 import re
-import tempfile
 import warnings
 from pathlib import Path
 
@@ -29,6 +27,7 @@ import numpy as np
 
 from .errors import MeshImportError, UserError
 from .cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
+from .files import atomic_write_bytes
 from .model import Model
 
 WRITE_FORMATS = (".obj", ".ply", ".npz")
@@ -342,7 +341,7 @@ def write_mesh(path: str | Path, vertices, faces, *, parts=None, vertex_part=Non
         data = _ply_bytes(vertices, faces, binary)
     else:
         data = _npz_bytes(vertices, faces, parts, vertex_part)
-    _atomic_write_bytes(path, data)
+    atomic_write_bytes(path, data)
     return path
 
 
@@ -407,40 +406,3 @@ def _npz_bytes(vertices, faces, parts, vertex_part) -> bytes:
     out = io.BytesIO()
     np.savez_compressed(out, **arrays)
     return out.getvalue()
-
-
-def _atomic_write_bytes(path: Path, data: bytes) -> None:
-    """Write to a temporary file beside ``path``, then rename it over ``path``."""
-    folder = path.parent if str(path.parent) else Path(".")
-    if not folder.is_dir():
-        raise UserError("cannot write: the folder does not exist", file=path)
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
-    except OSError as exc:
-        raise UserError(f"cannot write: {exc.strerror or exc}", file=path) from None
-    try:
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the file the usual permissions
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except OSError as exc:
-        _unlink_quietly(tmp)
-        raise UserError(f"cannot write: {exc.strerror or exc}", file=path) from None
-    except BaseException:
-        _unlink_quietly(tmp)
-        raise
-
-
-def _umask() -> int:
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
-def _unlink_quietly(path: str) -> None:
-    try:
-        os.unlink(path)
-    except FileNotFoundError:
-        pass

@@ -26,40 +26,12 @@ from .errors import ModelFileError, ParameterError, UserError
 from .landmarks import FEATURE_POINTS
 from .model import InfluenceRegion, Model
 from .parameters import Parameter, ParameterTree
+from .xml_io import parse_xml, validate
 
 FORMAT = "artificial-person-model"
 ARRAYS_FORMAT = "artificial-person-arrays"
 VERSION = 1
-SCHEMA_PATH = Path(__file__).parent / "schemas" / "model.xsd"
-_schema = None
-
-
-def _model_schema() -> etree.XMLSchema:
-    global _schema
-    if _schema is None:
-        _schema = etree.XMLSchema(etree.parse(str(SCHEMA_PATH)))
-    return _schema
-
-
-def safe_xml_parser() -> etree.XMLParser:
-    """An lxml parser that expands no entities, loads no DTD and never touches the network."""
-    return etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
-                           dtd_validation=False, huge_tree=False, remove_blank_text=False)
-
-
-def parse_xml(path: str | Path) -> etree._ElementTree:
-    """Parse an XML file safely; syntax errors become :class:`ModelFileError` with file:line."""
-    path = Path(path)
-    try:
-        data = path.read_bytes()
-    except OSError as exc:
-        raise ModelFileError(f"cannot read file: {exc.strerror or exc}", file=path) from None
-    try:
-        return etree.ElementTree(etree.fromstring(data, safe_xml_parser()))
-    except etree.XMLSyntaxError as exc:
-        line = exc.lineno if exc.lineno else None
-        msg = exc.msg.split(", line ")[0] if exc.msg else "malformed XML"
-        raise ModelFileError(f"malformed XML: {msg}", file=path, line=line) from None
+SCHEMA_NAME = "model.xsd"
 
 
 # ---------------------------------------------------------------------------
@@ -82,7 +54,7 @@ def load_model(path: str | Path | None = None) -> Model:
         path = candidates[0]
     if not path.exists():
         raise ModelFileError("no such file", file=path)
-    doc = parse_xml(path)
+    doc = parse_xml(path, ModelFileError)
     root = doc.getroot()
     if root.tag != "model":
         raise ModelFileError(f"not a model description: root element is <{root.tag}>, expected <model>",
@@ -91,14 +63,7 @@ def load_model(path: str | Path | None = None) -> Model:
     if version is not None and version > VERSION:
         raise ModelFileError(f"model format version {version} is newer than this program reads ({VERSION})",
                              file=path, line=root.sourceline)
-    schema = _model_schema()
-    try:
-        valid = schema.validate(doc)
-    except etree.LxmlError as exc:
-        raise ModelFileError(f"cannot validate the model description: {exc}", file=path) from None
-    if not valid:
-        err = schema.error_log.filter_from_errors()[0]
-        raise ModelFileError(_schema_message(err.message), file=path, line=err.line)
+    validate(doc, SCHEMA_NAME, path, ModelFileError)
 
     parts, colors = [], {}
     for el in root.find("parts"):
@@ -188,11 +153,6 @@ def _integer(text: str | None) -> int | None:
 
 def _vec(text: str) -> np.ndarray:
     return np.array([float(t) for t in text.split()])
-
-
-def _schema_message(message: str) -> str:
-    # lxml's messages start with "Element 'x', attribute 'y': ..."; keep them, minus the noise.
-    return message.replace("{http://www.w3.org/2001/XMLSchema}", "xs:")
 
 
 def _read_arrays(path: Path, tree: ParameterTree, n_parts: int):

@@ -291,7 +291,7 @@ def _place_camera(camera, points: np.ndarray, toward_camera, width: int, height:
 
 def write_png(path: str | Path, image: np.ndarray) -> Path:
     """Write an (H, W, 3) uint8 RGB array as an 8-bit PNG, atomically."""
-    from .mesh_io import _atomic_write_bytes
+    from .files import atomic_write_bytes
 
     image = np.ascontiguousarray(image, dtype=np.uint8)
     if image.ndim != 3 or image.shape[2] != 3:
@@ -305,5 +305,5 @@ def write_png(path: str | Path, image: np.ndarray) -> Path:
     png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
            + chunk(b"IDAT", zlib.compress(raw, 6)) + chunk(b"IEND", b""))
     path = Path(path)
-    _atomic_write_bytes(path, png)
+    atomic_write_bytes(path, png)
     return path
