@@ -99,6 +99,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--scale", type=_positive_number, default=None, metavar="S",
                    help="multiply coordinates by S to get mm (default 1: the file is in mm)")
     p.set_defaults(run=_run_import_mesh)
+
+    from .cli_commands import add_verbs
+
+    add_verbs(verbs, _add_model_option, _positive_number)
     return parser
 
 

@@ -44,3 +44,11 @@ class ParameterError(UserError):
 
 class MeshImportError(UserError):
     """A mesh file could not be read as a polygon surface."""
+
+
+class LibraryError(UserError):
+    """A command library file (§2.3 format) is malformed, or does not fit the model."""
+
+
+class CommandError(UserError):
+    """A command file (high- or low-level XML) is malformed, or a command is used wrongly."""
