@@ -87,7 +87,7 @@ def monotone_slopes(times: np.ndarray, values: np.ndarray) -> np.ndarray:
     h0, h1 = h[:-1], h[1:]
     same_sign = (left * right > 0) & (h0 > 0) & (h1 > 0)
     w1, w2 = 2 * h1 + h0, h1 + 2 * h0
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):   # tiny secants: mean → 0
         mean = (w1 + w2) / (w1 / left + w2 / right)
-    slopes[1:-1] = np.where(same_sign, mean, 0.0)
+    slopes[1:-1] = np.where(same_sign & np.isfinite(mean), mean, 0.0)
     return slopes

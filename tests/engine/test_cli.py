@@ -9,7 +9,6 @@ head skip until ``data/default-head/head.xml`` exists.
 from __future__ import annotations
 
 import json
-import os
 import re
 import subprocess
 import sys
@@ -21,6 +20,8 @@ import pytest
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, load_model, save_model
 from engine.paths import default_model_path
+
+from cli_runner import assert_user_error, run
 
 DEFAULT_HEAD_PARAMETERS = {
     "neck_lean", "head_turn", "head_nod", "head_tilt", "jaw_open", "tongue_raise", "eye_left_turn",
@@ -105,24 +106,6 @@ def default_head() -> Path:
 # ---------------------------------------------------------------------------
 # Running the command line
 # ---------------------------------------------------------------------------
-
-def run(*args, cwd=None, command=None) -> subprocess.CompletedProcess:
-    """``python -m engine ARGS`` in a fresh interpreter with no display."""
-    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
-    command = command or [sys.executable, "-m", "engine"]
-    return subprocess.run([*command, *map(str, args)], capture_output=True, text=True, env=env, cwd=cwd,
-                          timeout=120)
-
-
-def assert_user_error(result: subprocess.CompletedProcess) -> str:
-    """Status 2, one ``error:`` line on stderr, no traceback; returns that line."""
-    assert result.returncode == 2, (result.returncode, result.stderr)
-    assert "Traceback" not in result.stderr
-    lines = result.stderr.splitlines()
-    assert len(lines) == 1, result.stderr
-    assert lines[0].startswith("error: ")
-    return lines[0]
-
 
 def read_png(path: Path) -> np.ndarray:
     from PIL import Image  # installed with pyvista
