@@ -22,8 +22,9 @@ with a number. ``#`` starts a comment. Besides the paper's directives
 ``$description``. A line may be scaled by one of the command's arguments:
 ``eye_left_turn * x = 0,0; 200,0.01745; …``. See ``docs/commands.md``.
 
->>> from engine.commands.library_format import parse_library_text
->>> nod = parse_library_text(open("library/HeadNod.lib").read(), "HeadNod.lib")[0]
+>>> from engine.commands.library_format import load_library_file
+>>> from engine.paths import LIBRARY_DIR
+>>> [nod] = load_library_file(LIBRARY_DIR / "HeadNod.lib")
 >>> nod.name, nod.procedure, nod.optional["count"]
 ('HeadNod', 'periodic', 1.0)
 """

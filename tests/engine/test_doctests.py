@@ -1,0 +1,22 @@
+"""The examples in the engine's docstrings run and give what they show."""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+
+import pytest
+
+MODULES = [
+    "engine.errors", "engine.xml_io", "engine.commands.interpolation", "engine.commands.library_format",
+    "engine.commands.library", "engine.commands.command_files", "engine.commands.translator",
+    "engine.timeline",
+]
+
+
+@pytest.mark.parametrize("name", MODULES)
+def test_docstring_examples(name):
+    module = importlib.import_module(name)
+    result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert result.failed == 0
+    assert result.attempted > 0
