@@ -6,6 +6,8 @@ import csv
 
 import pytest
 
+from engine import load_model
+
 from cli_runner import assert_user_error, run
 
 PAPER = '<commands>\n  <HeadNod at="1000" amplitude="60" count="2"/>\n</commands>\n'
@@ -35,7 +37,7 @@ def test_translate_to_a_file_and_tracks_from_both_levels(script, tmp_path):
         assert result.returncode == 0, result.stderr
         with out.open() as fh:
             rows = list(csv.reader(fh))
-        assert rows[0][0] == "time_ms" and "head_nod" in rows[0] and len(rows[0]) == 14
+        assert rows[0][0] == "time_ms" and "head_nod" in rows[0] and len(rows[0]) == 1 + len(load_model().parameters)
         assert len(rows) == 1 + 121
         assert float(rows[-1][0]) == pytest.approx(2000)
     assert (tmp_path / "nod.csv").read_text() == (tmp_path / "low.csv").read_text()
