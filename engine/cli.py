@@ -20,6 +20,7 @@ import sys
 from pathlib import Path
 
 from .errors import ModelFileError, UserError
+from .landmarks import landmark_sort_key
 
 PROG = "artificial-person"
 VIEW_NAMES = ("front", "side", "three-quarter")
@@ -100,9 +101,10 @@ def build_parser() -> argparse.ArgumentParser:
                    help="multiply coordinates by S to get mm (default 1: the file is in mm)")
     p.set_defaults(run=_run_import_mesh)
 
-    from .cli_commands import add_verbs
+    from . import cli_commands, cli_speech
 
-    add_verbs(verbs, _add_model_option, _positive_number)
+    cli_commands.add_verbs(verbs, _add_model_option, _positive_number)
+    cli_speech.add_verbs(verbs, _add_model_option, _positive_number, _size, VIEW_NAMES)
     return parser
 
 
@@ -281,16 +283,10 @@ def model_report(model) -> str:
         lines.append("parameters: none")
     counts = np.bincount(model.vertex_part, minlength=len(model.parts))
     lines.append("parts: " + ", ".join(f"{part} ({counts[i]} vertices)" for i, part in enumerate(model.parts)))
-    ids = sorted(model.landmarks, key=_landmark_key)
+    ids = sorted(model.landmarks, key=landmark_sort_key)
     lines.append(f"landmarks: {len(ids)}" + (f" ({', '.join(ids)})" if ids else ""))
     return "\n".join(lines)
 
-
-def _landmark_key(key: str):
-    try:
-        return tuple(int(t) for t in key.split(".")), key
-    except ValueError:
-        return (10 ** 6,), key
 
 
 def _either(options: tuple[str, ...]) -> str:

@@ -42,3 +42,11 @@ FEATURE_POINTS = {
     "9.5": "bottom left edge of the nose",
     "9.15": "bottom middle edge of the nose (subnasale)",
 }
+
+
+def landmark_sort_key(key: str):
+    """Sort MPEG-4 feature point ids numerically (2.2 before 2.10); other ids last, by name."""
+    try:
+        return tuple(int(t) for t in key.split(".")), key
+    except ValueError:
+        return (10 ** 6,), key

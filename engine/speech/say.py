@@ -1,0 +1,94 @@
+"""The whole speech pipeline: text with inline commands → audio, phones, one timeline.
+
+    text ─► user command interpreter (engine.script) ─► synthesizer (Festival, §2.1)
+         ─► articulation with coarticulation ─┐
+         ─► inline commands, anchored to words ├─► translator (§2.3) ─► timeline ─► video, tables
+         ─► visual prosody (optional) ─────────┘
+
+>>> from engine import load_model
+>>> from engine.speech.say import speak
+>>> speech = speak('Hyvää päivää <HeadNod amplitude="60" count="2"/> mitä kuuluu?', load_model())  # doctest: +SKIP
+>>> speech.timeline.values_at(500)["jaw_open"]                                                   # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from ..commands import load_library, translate
+from ..commands.command_files import Activation, format_number
+from ..errors import CommandError
+from ..files import atomic_write_text
+from ..landmarks import landmark_sort_key
+from ..script import Script, anchored_commands, parse_script
+from ..timeline import Timeline
+from .articulation import ArticulationTable, load_articulation
+from .coarticulation import articulate
+from .prosody import prosody_commands
+
+
+@dataclass
+class Speech:
+    """Everything one utterance produced."""
+
+    script: Script
+    utterance: object          # engine.speech.synthesis.Utterance
+    activations: list[Activation]
+    timeline: Timeline
+
+    @property
+    def duration_ms(self) -> float:
+        return float(self.utterance.duration_ms)
+
+    def frame_times(self, fps: float) -> np.ndarray:
+        """Frame n at n·1000/fps ms, covering the audio (the last frame starts before the audio ends)."""
+        count = max(1, int(math.ceil(self.duration_ms * fps / 1000.0 - 1e-9)))
+        return np.arange(count) * (1000.0 / fps)
+
+
+def speak(text: str, model, synthesizer=None, voice: str | None = None, library=None,
+          table: ArticulationTable | None = None, coarticulation: str = "cohen-massaro",
+          prosody_seed: int | None = None, name: str = "<text>") -> Speech:
+    """Synthesize ``text`` (with inline commands) and build the timeline that animates it."""
+    script = parse_script(text, name)
+    if not script.text.strip():
+        raise CommandError("there is no text to speak (only commands?)", file=name)
+    library = load_library() if library is None else library
+    table = load_articulation() if table is None else table
+    table.check(model)
+    # Check the inline commands before spending time on synthesis.
+    translate([replace(c.command, arguments={"at": 0.0, **c.command.arguments}) for c in script.commands],
+              library, model)
+    if synthesizer is None:
+        from .festival import FestivalSynthesizer
+
+        synthesizer = FestivalSynthesizer()
+    utterance = synthesizer.synthesize(script.text, voice)
+    activations = articulate(utterance.phones, table, coarticulation)
+    commands = anchored_commands(script, utterance.words)
+    if prosody_seed is not None:
+        commands += prosody_commands(utterance.words, utterance.phones, utterance.duration_ms, seed=prosody_seed)
+    activations += translate(commands, library, model)
+    return Speech(script, utterance, activations, Timeline(activations, model))
+
+
+def landmarks_csv(speech: Speech, model, fps: float) -> str:
+    """DESIGN.md's landmarks table: ``frame,time_ms,<id>_x,<id>_y,<id>_z,…``, one row per frame."""
+    ids = sorted(model.landmarks, key=landmark_sort_key)
+    header = ["frame", "time_ms"] + [f"{i}_{axis}" for i in ids for axis in "xyz"]
+    lines = [",".join(header)]
+    times = speech.frame_times(fps)
+    values = speech.timeline.sample(times)
+    names = speech.timeline.parameters
+    for n, (t, row) in enumerate(zip(times, values)):
+        points = model.landmark_positions(dict(zip(names, row)))
+        cells = [str(n), format_number(t)] + [format_number(c) for i in ids for c in points[i]]
+        lines.append(",".join(cells))
+    return "\n".join(lines) + "\n"
+
+
+def write_landmarks(path, speech: Speech, model, fps: float) -> None:
+    atomic_write_text(path, landmarks_csv(speech, model, fps))
