@@ -1,4 +1,4 @@
-"""The animator's deformation (§2.2), vectorised.
+"""The animator's deformation (§2.2): a compiled vertex pass, with a vectorised numpy fallback.
 
 Formulation (derivation in ``docs/deformation.md``): with ``P`` the rest
 position of vertex *i* (row vector),
@@ -19,10 +19,16 @@ at value 0 from re-applying its ancestors' motion to points that stage 2
 moves anyway.
 
 Speed: vertices are grouped once, when the deformer is built, by their
-group-1 weights. Vertices bound with weight 1 to a single parameter form
-contiguous blocks in an internal vertex order and move with one 3×3 matrix
-product per block; only the blended band (neck, jaw line) pays for
-per-vertex matrices. Leaves touch only their own regions.
+group-1 weights and the leaves acting on them (the internal vertex order).
+When the C extension ``engine._deform_kernel`` (``engine/_deform_kernel.c``,
+built by ``pip install -e .``) imports, a frame is one call into it: it
+builds every ``T_k`` and ``T'_k`` and makes one pass over the vertices, in
+segments of vertices that move alike (same group-1 class, same leaves), with
+each vertex's weights read from one array. Otherwise the numpy path moves
+vertices bound to a single parameter in contiguous blocks with one 3×3
+matrix product per block, pays for per-vertex matrices only in the blended
+band (neck, jaw line), and lets leaves touch only their own regions. Both
+give :func:`deform_reference` to rounding.
 """
 
 from __future__ import annotations
@@ -31,6 +37,17 @@ import numpy as np
 from scipy import sparse
 
 from .transforms import is_identity
+
+#: The Plan interface this module builds (``KERNEL_ABI`` in ``_deform_kernel.c``).
+KERNEL_ABI = 1
+
+#: The compiled kernel module ``engine._deform_kernel``, or None (numpy path only).
+try:
+    from . import _deform_kernel as compiled
+except ImportError:        # not compiled (no C compiler at install time)
+    compiled = None
+if compiled is not None and getattr(compiled, "ABI", None) != KERNEL_ABI:
+    compiled = None        # built from an older source: re-run ``pip install -e .``
 
 
 class Deformer:
@@ -41,16 +58,23 @@ class Deformer:
 
     Internally vertices are sorted by how they move: first by their group-1
     class (bound to one parameter, free, or blended), then by the set of
-    leaves acting on them, so that every block and most leaf regions are
-    contiguous runs and move with one BLAS product each. Points are kept
-    homogeneous (N × 4, last column 1) so a product includes the translation.
-    When the model's own vertex order is already this order (see
-    :func:`optimise_vertex_order`), no final reordering is needed.
+    leaves acting on them. The compiled kernel walks this order segment by
+    segment (a run with one class and one set of leaves). The numpy path
+    moves every block and most leaf regions as contiguous runs with one BLAS
+    product each, keeping points homogeneous (N × 4, last column 1) so a
+    product includes the translation. When the model's own vertex order is
+    already this order (see :func:`optimise_vertex_order`), no final
+    reordering is needed.
+
+    ``kernel``: ``None`` (default) uses the compiled vertex pass when
+    ``engine._deform_kernel`` is importable and the numpy path otherwise;
+    ``True`` requires the kernel, ``False`` forces numpy. :attr:`kernel`
+    tells which one this deformer uses.
     """
 
     MAX_RUNS = 64      # a leaf split into more runs than this uses index arrays instead
 
-    def __init__(self, model):
+    def __init__(self, model, kernel: bool | None = None):
         self.revision = model.revision
         tree = model.parameters
         self.names = tree.names
@@ -103,6 +127,100 @@ class Deformer:
         inv = np.empty(n, dtype=np.int64)
         inv[perm] = np.arange(n)
         self.inverse = inv
+        self._leaf_params = leaves
+
+        # Rodrigues' terms per rotation, so every frame builds all matrices in a few array operations.
+        self._rot = np.array([i for i, p in enumerate(self.params) if p.kind == "rotation"], dtype=np.int64)
+        axes = np.array([self.params[i].axis for i in self._rot]).reshape(-1, 3)
+        self._rot_pivot = np.array([self.params[i].pivot for i in self._rot]).reshape(-1, 3)
+        self._rot_scale = np.radians([self.params[i].degrees_per_unit for i in self._rot])
+        self._rot_uu = axes[:, :, None] * axes[:, None, :]
+        cross = np.zeros((len(axes), 3, 3))
+        cross[:, 0, 1], cross[:, 0, 2], cross[:, 1, 2] = -axes[:, 2], axes[:, 1], -axes[:, 0]
+        cross[:, 1, 0], cross[:, 2, 0], cross[:, 2, 1] = axes[:, 2], -axes[:, 1], axes[:, 0]
+        self._rot_cross = cross
+        self._trans = [(i, p.direction) for i, p in enumerate(self.params) if p.kind != "rotation" and not p.field]
+
+        if kernel is None:
+            kernel = compiled is not None
+        elif kernel and compiled is None:
+            raise RuntimeError("the compiled deformation kernel engine._deform_kernel is not built "
+                               "(pip install -e . needs a C compiler and the Python headers)")
+        self.kernel = bool(kernel)
+        self._plan = self._build_plan(model, W, cls, signature) if self.kernel else None
+        if not self.kernel:
+            self._build_numpy(model, W, cls)
+
+    # ------------------------------------------------------------------
+    def _build_plan(self, model, W, cls, signature):
+        """The compiled kernel's static structure (layout in ``engine/_deform_kernel.c``).
+
+        Segments are the runs of the internal order with one group-1 class and one
+        set of leaves; each gets its group-1 columns (blended band only) and its
+        leaves as entries pointing at per-vertex weights in ``data``.
+        """
+        n, perm, group1 = self.n_vertices, self.perm, self.group1
+        params = self.params
+        kind = np.array([0 if p.kind == "rotation" else 2 if p.field else 1 for p in params], dtype=np.int64)
+        vec = (lambda attr: np.ascontiguousarray(np.array([getattr(p, attr) for p in params], dtype=float)
+                                                 .reshape(len(params), 3)))
+        key = np.stack([cls[perm], signature[perm]], axis=1)
+        starts = np.flatnonzero(np.r_[True, (key[1:] != key[:-1]).any(axis=1)]) if n else np.zeros(0, int)
+        stops = np.r_[starts[1:], n].astype(int)
+        regions = {k: model.regions[self.names[k]] for k in self._leaf_params}
+        Wp = W[perm] if n else W
+        segments, entries, data, size = [], [], [], 0
+
+        def add(k, rows):
+            nonlocal size
+            entries.append((k, size))
+            data.extend(rows)
+            size += sum(len(r) for r in rows)
+
+        for a, b in zip(starts, stops):
+            verts = perm[a:b]
+            c = int(cls[verts[0]])
+            carry = group1[c] if c < len(group1) else -1 if c == len(group1) else -2
+            band_first = len(entries)
+            if carry == -2:
+                block = Wp[a:b].tocsc()
+                for col in np.flatnonzero(np.diff(block.indptr)):    # ascending = parameter order
+                    column = np.zeros(b - a)
+                    span = slice(block.indptr[col], block.indptr[col + 1])
+                    column[block.indices[span]] = block.data[span]
+                    add(group1[col], [column])
+            leaf_first = len(entries)
+            for k, region in regions.items():                         # parameter order
+                pos = np.minimum(np.searchsorted(region.indices, verts[0]), len(region.indices) - 1)
+                if region.indices[pos] != verts[0]:
+                    continue                                          # the whole run shares verts[0]'s leaves
+                pos = np.searchsorted(region.indices, verts)
+                w = region.weights[pos]
+                if region.displacements is not None:
+                    add(k, list((region.displacements[pos] * w[:, None]).T))
+                else:
+                    add(k, [w])
+            segments.append((a, b, carry, band_first, leaf_first - band_first, leaf_first,
+                             len(entries) - leaf_first))
+        i64 = np.int64
+        return compiled.Plan(
+            kind=kind,
+            parent=np.asarray(self.parent_index, dtype=i64),
+            topo=np.asarray(self.topological, dtype=i64),
+            axis=vec("axis"), pivot=vec("pivot"),
+            scale=np.radians(np.array([p.degrees_per_unit for p in params], dtype=float)),
+            direction=vec("direction"),
+            rest=np.ascontiguousarray(model.vertices[perm].T, dtype=float),
+            order=np.zeros(0, dtype=i64) if self.identity_order else perm.astype(i64),
+            segments=np.array(segments, dtype=i64).reshape(-1, 7),
+            entries=np.array(entries, dtype=i64).reshape(-1, 2),
+            data=np.concatenate(data) if data else np.zeros(0),
+        )
+
+    def _build_numpy(self, model, W, cls):
+        """Blocks, blended band and leaf runs of the numpy path."""
+        n, perm, inv, group1 = self.n_vertices, self.perm, self.inverse, self.group1
+        leaves = self._leaf_params
         self.rest4 = np.ones((n, 4))
         self.rest4[:, :3] = model.vertices[perm]
 
@@ -147,17 +265,6 @@ class Deformer:
                 disp[:, :3] = region.displacements[order] * w[:, None]
             self.leaves.append((k, where, w4, rest4, disp))
         self._eye4x3 = np.eye(4)[:, :3]
-        # Rodrigues' terms per rotation, so every frame builds all matrices in a few array operations.
-        self._rot = np.array([i for i, p in enumerate(self.params) if p.kind == "rotation"], dtype=np.int64)
-        axes = np.array([self.params[i].axis for i in self._rot]).reshape(-1, 3)
-        self._rot_pivot = np.array([self.params[i].pivot for i in self._rot]).reshape(-1, 3)
-        self._rot_scale = np.radians([self.params[i].degrees_per_unit for i in self._rot])
-        self._rot_uu = axes[:, :, None] * axes[:, None, :]
-        cross = np.zeros((len(axes), 3, 3))
-        cross[:, 0, 1], cross[:, 0, 2], cross[:, 1, 2] = -axes[:, 2], axes[:, 1], -axes[:, 0]
-        cross[:, 1, 0], cross[:, 2, 0], cross[:, 2, 1] = axes[:, 2], -axes[:, 1], axes[:, 0]
-        self._rot_cross = cross
-        self._trans = [(i, p.direction) for i, p in enumerate(self.params) if p.kind != "rotation" and not p.field]
 
     # ------------------------------------------------------------------
     def local_transforms(self, values: np.ndarray) -> np.ndarray:
@@ -191,6 +298,10 @@ class Deformer:
         values = np.asarray(values, dtype=float)
         if values.shape != (len(self.params),):
             raise ValueError(f"expected {len(self.params)} values in tree order, got shape {values.shape}")
+        if self._plan is not None:
+            out = np.empty((self.n_vertices, 3))
+            self._plan.deform(np.ascontiguousarray(values), out)
+            return out
         local, world = self.transforms(values)
 
         # Stage 1: leaves in the rest frame (Eq. 2), in the internal vertex order.
