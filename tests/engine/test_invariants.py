@@ -5,6 +5,10 @@ Every test names the invariant it checks. The synthetic rigs come from
 shipped default head when ``data/default-head/head.xml`` exists. Positions
 are in mm; "exactly" means ``np.array_equal``, otherwise the tolerance is
 1e-9 mm on coordinates of about ±100 mm.
+
+Every test runs twice, through each of the engine's two deformation paths: the
+compiled vertex pass (``engine._deform_kernel``; skipped when it is not built,
+which ``test_deform_kernel.py`` reports as a failure) and the numpy fallback.
 """
 
 from __future__ import annotations
@@ -14,6 +18,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import engine.deform
 from engine.deform import deform_reference
 from engine.errors import ParameterError
 from engine.model import InfluenceRegion, Model
@@ -37,6 +42,17 @@ SHAPES = [
 ]
 SEEDS = [0, 1, 2]
 RIGS = [(seed, *shape) for shape in SHAPES for seed in SEEDS]
+
+
+@pytest.fixture(autouse=True, params=["kernel", "numpy"])
+def deform_path(request, monkeypatch):
+    """Run the test with the compiled kernel, then with the numpy path (``Deformer(model)``
+    picks the kernel exactly when ``engine.deform.compiled`` is set)."""
+    if request.param == "numpy":
+        monkeypatch.setattr(engine.deform, "compiled", None)
+    elif engine.deform.compiled is None:
+        pytest.skip("the compiled deformation kernel is not built")
+    return request.param
 
 
 def rig(seed, n_vertices, n_parameters, depth, partial, contiguous, **kw) -> Model:
@@ -404,9 +420,9 @@ def test_propagation_is_child_first():
        zero_fraction=st.sampled_from([0.0, 0.3, 1.0]), scale=st.sampled_from([1.0, 3.0]))
 def test_vectorised_deformer_equals_literal_reference(seed, n_vertices, n_parameters, depth, partial,
                                                       contiguous, zero_fraction, scale):
-    """The vectorised :class:`Deformer` (blocks, blended band, leaves) gives the literal
-    per-vertex formulation of §2.2 (``engine.deform.deform_reference``) to 1e-9 mm, for
-    random trees, weights, layouts and values (including values beyond the range)."""
+    """The :class:`Deformer` (compiled segments, or numpy blocks, blended band and leaves)
+    gives the literal per-vertex formulation of §2.2 (``engine.deform.deform_reference``) to
+    1e-9 mm, for random trees, weights, layouts and values (including values beyond the range)."""
     rng = np.random.default_rng(seed)
     model = random_model(rng, n_vertices, n_parameters, depth, partial=partial, contiguous=contiguous,
                          landmarks=False)
@@ -416,22 +432,22 @@ def test_vectorised_deformer_equals_literal_reference(seed, n_vertices, n_parame
 
 @pytest.mark.parametrize("seed", SEEDS)
 def test_fast_path_runs_indices_and_vertex_orders_agree(seed, monkeypatch):
-    """The Deformer applies a leaf through contiguous runs of its internal order, or through an
-    index array when a leaf splits into more than ``Deformer.MAX_RUNS`` runs; and it skips the
-    final reordering when the model's vertex order is already its internal order. All paths
-    give the reference, and each other vertex for vertex. (Looks at ``Deformer.leaves``, whose
-    second field is the list of runs or the index array.)"""
+    """The numpy path applies a leaf through contiguous runs of its internal order, or through
+    an index array when a leaf splits into more than ``Deformer.MAX_RUNS`` runs; both paths
+    skip the final reordering when the model's vertex order is already their internal order
+    (the kernel otherwise writes each vertex to its own row). All layouts give the reference,
+    and each other vertex for vertex. (Looks at the numpy ``Deformer.leaves``, whose second
+    field is the list of runs or the index array.)"""
     from engine.deform import Deformer, optimise_vertex_order
 
     model = rig(seed, 60, 8, 3, False, True)
-    assert all(isinstance(leaf[1], list) for leaf in model.deformer().leaves)
+    assert all(isinstance(leaf[1], list) for leaf in Deformer(model, kernel=False).leaves)
     ordered, order = optimise_vertex_order(model)
     assert ordered.deformer().identity_order
     perm = np.random.default_rng(seed).permutation(model.n_vertices)
     scattered = model.reordered(perm)
     monkeypatch.setattr(Deformer, "MAX_RUNS", 0)
-    scattered._deformer = None
-    assert all(isinstance(leaf[1], np.ndarray) for leaf in scattered.deformer().leaves)
+    assert all(isinstance(leaf[1], np.ndarray) for leaf in Deformer(scattered, kernel=False).leaves)
     rng = np.random.default_rng(900 + seed)
     for _ in range(3):
         values = random_values(rng, model)
@@ -517,12 +533,19 @@ def test_deformer_cache_invalidates_after_changed():
 # ---------------------------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def head():
+def loaded_head():
     path = default_model_path()
     if not path.exists():
         pytest.skip(f"the default head is not built yet ({path})")
     from engine import load_model
     return load_model(path)
+
+
+@pytest.fixture
+def head(loaded_head, deform_path):
+    """The default head, its cached deformer dropped so the test's deformation path builds it."""
+    loaded_head.changed()
+    return loaded_head
 
 
 def _head_values(head: Model, rng, names=None, fraction: float = 0.8) -> dict[str, float]:
