@@ -15,7 +15,7 @@ documents the choices and the phones the voices emit.
 
 >>> from engine.speech.festival import prepare_text, scheme_string
 >>> prepare_text("“Hyvää päivää” – sanoi hän…")
-'"Hyvää päivää" - sanoi hän...'
+'"Hyvää päivää", sanoi hän...'
 >>> print(scheme_string('say "hi" \\\\ bye'))
 "say \\"hi\\" \\\\ bye"
 >>> prepare_text("Hyvää 🙂")
@@ -80,6 +80,17 @@ TRANSLITERATION = {
 }
 """Characters outside Latin-1 that are replaced before the text goes to Festival."""
 
+_DASHES = "\u2013\u2014\u2015"
+_STANDALONE_PUNCTUATION = [
+    # a dialogue dash opening a line ("– Mitä kuuluu?") is not read at all
+    (re.compile(f"(^|\\n)[ \\t]*[{_DASHES}][ \\t]+"), r"\1"),
+    # a dash between spaces is a pause: a comma on the word before it
+    (re.compile(f"[ \\t]+[{_DASHES}](?=\\s|$)"), ","),
+    # an ellipsis after a space goes onto the word before it
+    (re.compile("[ \\t]+\u2026"), "\u2026"),
+]
+"""Dashes and ellipses standing alone, rewritten before :data:`TRANSLITERATION` (see :func:`prepare_text`)."""
+
 _VOICE_NAME = re.compile(r"[A-Za-z0-9_]+\Z")
 _WAVE_FILE = "utterance.wav"
 _SCRIPT_FILE = "synthesize.scm"
@@ -93,29 +104,35 @@ def prepare_text(text: str, source: str = "<text>") -> str:
     """The text as Festival will get it: NFC, transliterated, Latin-1 only, no control characters.
 
     Raises :class:`SynthesisError` for empty text and for a character Latin-1
-    cannot carry (naming the character, its code point and its line/column
-    in ``text``).
+    cannot carry, naming the character, its code point and where it stands
+    (``source``, line, column). Before the character-by-character
+    :data:`TRANSLITERATION`, dashes and ellipses that stand alone become the
+    punctuation Festival pauses at instead of words it spells out (a lone
+    ``-`` is read "viiva", a lone ``...`` "piste"):
+
+    >>> prepare_text("– Tule tänne – nyt heti … kiitos")
+    'Tule tänne, nyt heti... kiitos'
     """
     if not isinstance(text, str):
         raise TypeError(f"text must be a str, not {type(text).__name__}")
     text = unicodedata.normalize("NFC", text).replace("\r\n", "\n").replace("\r", "\n")
+    for line, content in enumerate(text.split("\n"), start=1):
+        for column, char in enumerate(content, start=1):
+            if ord(char) > 0xFF and char not in TRANSLITERATION:
+                try:
+                    name = unicodedata.name(char)
+                except ValueError:
+                    name = "unnamed character"
+                raise SynthesisError(
+                    f"Festival reads ISO-8859-1 (Latin-1), which has no character {char!r} "
+                    f"(U+{ord(char):04X} {name}, column {column}); leave it out or replace it",
+                    file=source, line=line)
+    for pattern, replacement in _STANDALONE_PUNCTUATION:
+        text = pattern.sub(replacement, text)
     out = []
-    line, column = 1, 0
     for char in text:
-        column += 1
         char = TRANSLITERATION.get(char, char)
-        if len(char) == 1 and ord(char) > 0xFF:
-            try:
-                name = unicodedata.name(char)
-            except ValueError:
-                name = "unnamed character"
-            raise SynthesisError(
-                f"Festival reads ISO-8859-1 (Latin-1), which has no character {char!r} "
-                f"(U+{ord(char):04X} {name}, column {column}); leave it out or replace it",
-                file=source, line=line)
-        if char == "\n":
-            line, column = line + 1, 0
-        elif len(char) == 1 and unicodedata.category(char) == "Cc" and char != "\t":
+        if len(char) == 1 and unicodedata.category(char) == "Cc" and char not in "\n\t":
             char = " "  # other control characters (NUL, bell, C1 controls) become spaces
         out.append(char)
     prepared = "".join(out)
