@@ -17,7 +17,7 @@ from engine.speech.prosody import prosody_commands, split_phrases, syllables
 Seg = namedtuple("Seg", "label start_ms end_ms")
 
 SUOPUHE_PHONES = ["#", "##", "a", "e", "i", "o", "u", "y", "@", "7", "p", "t", "k", "b", "d", "g", "f", "h", "j",
-                  "l", "m", "n", "N", "r", "s", "v"]
+                  "l", "m", "n", "N", "r", "s", "v", "S", "T"]
 
 
 @pytest.fixture(scope="module")
