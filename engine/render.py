@@ -1,15 +1,21 @@
-"""Offscreen rendering of a model pose to an image (PNG), with pyvista.
+"""Offscreen rendering of model poses to images (PNG), with VTK.
 
-pyvista (and so VTK) is imported inside the functions, never when this module
-is imported, so the engine stays free of VTK until something is rendered.
-Without a display the renderer uses EGL (or OSMesa) directly, so no X server
-is needed and VTK prints no warning about a missing one.
+VTK is imported inside the functions, never when this module is imported, so
+the engine stays free of VTK until something is rendered. Without a display
+the renderer uses EGL (or OSMesa) directly, so no X server is needed and VTK
+prints no warning about a missing one.
+
+:func:`render_model` draws one pose; :class:`FrameRenderer` keeps one scene
+and draws pose after pose into it (video frames: only the vertex positions and
+normals change between frames).
 
 >>> from engine import load_model
->>> from engine.render import render_model
+>>> from engine.render import FrameRenderer, render_model
 >>> head = load_model()                                             # doctest: +SKIP
 >>> image = render_model(head, {"jaw_open": 0.5}, view="three-quarter",
 ...                      size=(600, 800), path="jaw.png")           # (800, 600, 3) uint8
+>>> with FrameRenderer(head, size=(640, 480)) as renderer:         # doctest: +SKIP
+...     frames = [renderer.render(head.deform(jaw_open=v)) for v in (0.0, 0.5, 1.0)]
 """
 
 from __future__ import annotations
@@ -85,17 +91,110 @@ def render_model(model, values: Mapping[str, float] | None = None, view: str = "
     The camera frames the model's rest pose, so every pose of one model is
     seen from the same place. Parts are coloured by ``model.part_colors`` or,
     failing that, by their names (skin, eye…, teeth…, tongue, eyelash…).
+    One picture is one :class:`FrameRenderer` used once; render many poses
+    with a :class:`FrameRenderer` of your own instead.
     """
     if view not in VIEWS:
         raise UserError(f"unknown view '{view}' (use {', '.join(VIEWS)})")
-    width, height = check_size(size)
+    check_size(size)
     if path is not None and Path(path).suffix.lower() != ".png":
         raise UserError("the picture must be written as .png", file=path)
     positions = model.deform(values)
-    image = _draw(model, positions, view, width, height)
+    with FrameRenderer(model, size=size, view=view) as renderer:
+        image = renderer.render(positions)
     if path is not None:
         write_png(path, image)
     return image
+
+
+class FrameRenderer:
+    """One offscreen scene of ``model``, drawn again for every pose (video frames).
+
+    The render window, actors, lights and camera are made once; :meth:`render`
+    only copies new vertex positions and normals into the meshes' arrays and
+    redraws. Use it as a context manager (or call :meth:`close`) so the render
+    window is released::
+
+        with FrameRenderer(head, size=(640, 480)) as renderer:
+            for values in frames:                       # values in tree order
+                image = renderer.render(head.deformer().deform(values))
+
+    ``antialias``: ``True`` (default) draws with 8× multisampling, exactly as
+    :func:`render_model` does; ``False`` draws without it, which on a
+    software OpenGL (Mesa llvmpipe, no GPU) costs about a third as much per
+    frame, at the price of stair-stepped outlines and broken thin eyelashes.
+
+    The camera frames the model's rest pose (as in :func:`render_model`), so
+    every pose is seen from the same place. The scene is plain VTK: pyvista's
+    plotter would also import matplotlib, which alone takes about a second.
+    """
+
+    def __init__(self, model, size: tuple[int, int] = (640, 480), view: str = "front",
+                 antialias: bool = True):
+        if view not in VIEWS:
+            raise UserError(f"unknown view '{view}' (use {', '.join(VIEWS)})")
+        self.width, self.height = check_size(size)
+        self.model = model
+        self.view = view
+        self.antialias = bool(antialias)
+        self._layout = _PartLayout(model)
+        self._window = None
+        self._meshes = []
+        _choose_offscreen_backend()
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+
+        self._vtk_to_numpy = vtk_to_numpy
+        self._pixels = vtkUnsignedCharArray()
+        self._window, self._meshes = _build_scene(model, self._layout, view, self.width, self.height,
+                                                  self.antialias)
+
+    # -- use ---------------------------------------------------------------
+    def render(self, positions: np.ndarray) -> np.ndarray:
+        """The picture of the model with its vertices at ``positions`` (N × 3, mm), as
+        a new (height, width, 3) uint8 RGB array."""
+        if self._window is None:
+            raise RuntimeError("this FrameRenderer is closed")
+        positions = np.asarray(positions, dtype=float)
+        if positions.shape != (self.model.n_vertices, 3):
+            raise ValueError(f"expected ({self.model.n_vertices}, 3) positions, got shape {positions.shape}")
+        points, normals = self._layout.points_and_normals(positions)
+        for (start, stop), (point_array, point_view, normal_array, normal_view) in zip(
+                self._layout.slices, self._meshes):
+            point_view[...] = points[start:stop]
+            normal_view[...] = normals[start:stop]
+            point_array.Modified()
+            normal_array.Modified()
+        return self._grab()
+
+    def _grab(self) -> np.ndarray:
+        """Draw, then read the front buffer (as pyvista's screenshot does: with
+        multisampling, it holds the gamma-correct resolve of the frame)."""
+        window = self._window
+        window.Render()
+        window.GetPixelData(0, 0, self.width - 1, self.height - 1, 1, self._pixels, 0)
+        image = self._vtk_to_numpy(self._pixels).reshape(self.height, self.width, -1)
+        return np.ascontiguousarray(image[::-1, :, :3])
+
+    # -- lifetime ------------------------------------------------------------
+    def close(self) -> None:
+        """Release the render window and its OpenGL context (idempotent)."""
+        window, self._window = self._window, None
+        self._meshes = []
+        if window is not None:
+            window.Finalize()
+
+    def __enter__(self) -> "FrameRenderer":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:     # interpreter shutting down
+            pass
 
 
 def check_size(size) -> tuple[int, int]:
@@ -124,51 +223,175 @@ def part_material(name: str, colors: Mapping[str, str] | None = None):
 
 # ---------------------------------------------------------------------------
 
-def _draw(model, positions: np.ndarray, view: str, width: int, height: int) -> np.ndarray:
-    from .cells import cell_sizes, cell_starts
+class _PartLayout:
+    """Where each part's mesh takes its points from, and how normals are summed.
 
-    _choose_offscreen_backend()
-    import pyvista as pv
+    Every part is drawn as its own mesh over the model vertices its polygons
+    use (a vertex used by two parts appears in both, with each part's own
+    normal). The meshes' points, stacked part after part, are ``positions[gather]``;
+    part ``k`` is rows ``slices[k]`` of that stack. Smooth normals are the
+    area-weighted sum of the fan triangles' normals around each point, one
+    sparse product for all parts at once.
+    """
 
-    counts = cell_sizes(model.faces)
-    starts = cell_starts(counts)
-    face_part = model.vertex_part[model.faces[starts + 1]] if len(counts) else counts
-    plotter = pv.Plotter(off_screen=True, window_size=(width, height), lighting="none")
-    try:
-        plotter.set_background(BACKGROUND[0], top=BACKGROUND[1])
+    def __init__(self, model):
+        from scipy import sparse
+
+        from .cells import cell_sizes, cell_starts, cells_to_triangles, index_mask
+
+        faces = model.faces
+        counts = cell_sizes(faces)
+        starts = cell_starts(counts)
+        face_part = model.vertex_part[faces[starts + 1]] if len(counts) else counts
+        self.parts, self.slices, self.cells = [], [], []
+        gather, triangles, offset = [], [], 0
         for part_index, part in enumerate(model.parts):
             keep = face_part == part_index
             if not keep.any():
                 continue
-            colour, ambient, diffuse, specular, power = part_material(part, model.part_colors)
-            colour = _rgb(pv, colour, part_material(part)[0])
-            mesh, used = _part_mesh(pv, model.faces, counts, keep, positions)
-            style = dict(ambient=ambient, diffuse=diffuse, specular=specular, specular_power=power,
-                         smooth_shading=False, show_scalar_bar=False)
-            if model.vertex_colors is not None:
-                actor = plotter.add_mesh(mesh, scalars=model.vertex_colors[used], rgb=True, **style)
-            elif _is_eyeball(part):
-                rgb = _eye_colours(model.vertices[used], colour)
-                actor = plotter.add_mesh(mesh, scalars=rgb, rgb=True, **style)
-            else:
-                actor = plotter.add_mesh(mesh, color=colour, **style)
-            actor.prop.interpolation = "phong"   # uses our point normals
-        for light in _lights(pv):
-            plotter.add_light(light)
-        _place_camera(plotter.camera, _framed_points(model), VIEWS[view], width, height)
-        plotter.enable_anti_aliasing("msaa", multi_samples=8)
-        image = plotter.screenshot(return_img=True)
-    finally:
-        plotter.close()
-    return np.ascontiguousarray(image[:, :, :3], dtype=np.uint8)
+            cells = faces[np.repeat(keep, counts + 1)].copy()
+            mask = index_mask(cells, counts[keep])
+            used = np.unique(cells[mask])
+            remap = np.full(model.n_vertices, -1, dtype=np.int64)
+            remap[used] = np.arange(len(used))
+            cells[mask] = remap[cells[mask]]
+            self.parts.append(part)
+            self.slices.append((offset, offset + len(used)))
+            self.cells.append(cells)
+            gather.append(used)
+            triangles.append(cells_to_triangles(cells) + offset)
+            offset += len(used)
+        self.gather = np.concatenate(gather) if gather else np.zeros(0, dtype=np.int64)
+        tris = np.concatenate(triangles) if triangles else np.zeros((0, 3), dtype=np.int64)
+        self.n_triangles = n_tris = tris.shape[0]
+        self._corners = np.ascontiguousarray(tris.T).ravel()   # corner 0 of every triangle, then 1, then 2
+        # point × triangle incidence: normals = incidence @ triangle normals
+        self.incidence = sparse.csr_matrix(
+            (np.ones(3 * n_tris), (self._corners, np.tile(np.arange(n_tris), 3))), shape=(offset, n_tris))
+        self._points = np.empty((offset, 3))
+        self._cross = np.empty((3, n_tris))
+
+    def used(self, k: int) -> np.ndarray:
+        """Model vertex indices of part ``k``'s mesh points."""
+        start, stop = self.slices[k]
+        return self.gather[start:stop]
+
+    def points_and_normals(self, positions: np.ndarray):
+        """The stacked mesh points for ``positions`` and their unit normals (zero where undefined)."""
+        points = np.take(positions, self.gather, axis=0, out=self._points)
+        # one gather of every corner's coordinates, laid out (xyz, corner, triangle)
+        corners = points.T[:, self._corners].reshape(3, 3, self.n_triangles)
+        a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
+        b -= a                                              # edge vectors, in place
+        c -= a
+        cross = self._cross                                 # (b − a) × (c − a), by component
+        for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):
+            np.multiply(b[j], c[k], out=cross[i])
+            cross[i] -= b[k] * c[j]
+        normals = self.incidence @ cross.T
+        length = np.sqrt(np.einsum("ij,ij->i", normals, normals))[:, None]
+        return points, np.divide(normals, length, out=np.zeros_like(normals), where=length > 0)
 
 
-def _rgb(pv, colour: str, fallback: str) -> np.ndarray:
-    """A colour pyvista understands (hex or name) as RGB floats in [0, 1]; the fallback if it does not."""
+def _build_scene(model, layout: _PartLayout, view: str, width: int, height: int, antialias: bool):
+    """Render window with the background, one actor per part (at the rest pose),
+    lights, camera and anti-aliasing.
+
+    Returns the window and, per part, the VTK points and normals arrays with
+    writable numpy views on them, for :meth:`FrameRenderer.render` to fill.
+
+    The settings are those pyvista's ``Plotter`` and ``add_mesh`` used to
+    make (the pictures are identical to the pixel), including one quirk:
+    parts coloured per vertex keep pyvista's default colour, light blue, as
+    their specular colour.
+    """
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations of the classes below)
+    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+
+    renderer = vtkRenderer()
+    renderer.SetBackground(*_hex_rgb(BACKGROUND[0]))
+    renderer.SetBackground2(*_hex_rgb(BACKGROUND[1]))
+    renderer.GradientBackgroundOn()
+    renderer.AutomaticLightCreationOff()
+    points, normals = layout.points_and_normals(model.vertices)
+    meshes = []
+    for k, (part, cells) in enumerate(zip(layout.parts, layout.cells)):
+        start, stop = layout.slices[k]
+        used = layout.used(k)
+        colour, ambient, diffuse, specular, power = part_material(part, model.part_colors)
+        colour = _colour_rgb(colour, part_material(part)[0])
+        mesh = vtkPolyData()
+        point_array = numpy_to_vtk(points[start:stop], deep=True)
+        vtk_points = vtkPoints()
+        vtk_points.SetData(point_array)
+        mesh.SetPoints(vtk_points)
+        polys = vtkCellArray()
+        polys.ImportLegacyFormat(numpy_to_vtkIdTypeArray(np.ascontiguousarray(cells, dtype=np.int64), deep=True))
+        mesh.SetPolys(polys)
+        normal_array = numpy_to_vtk(normals[start:stop], deep=True)
+        normal_array.SetName("Normals")
+        mesh.GetPointData().SetNormals(normal_array)
+        if model.vertex_colors is not None:
+            rgb = model.vertex_colors[used]
+        elif _is_eyeball(part):
+            rgb = _eye_colours(model.vertices[used], colour)
+        else:
+            rgb = None
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputData(mesh)
+        mapper.InterpolateScalarsBeforeMappingOn()
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        prop = actor.GetProperty()
+        if rgb is None:
+            mapper.ScalarVisibilityOff()
+            prop.SetColor(*colour)
+        else:
+            colours = numpy_to_vtk(np.ascontiguousarray(rgb, dtype=np.uint8), deep=True)
+            colours.SetName("Colors")
+            mesh.GetPointData().SetScalars(colours)     # unsigned char RGB: drawn as colours, not mapped
+            mapper.ScalarVisibilityOn()
+            mapper.SetScalarModeToUsePointData()
+            prop.SetColor(*_PYVISTA_DEFAULT_COLOUR)
+        prop.SetAmbient(ambient)
+        prop.SetDiffuse(diffuse)
+        prop.SetSpecular(specular)
+        prop.SetSpecularPower(power)
+        prop.SetPointSize(5.0)
+        prop.SetInterpolationToPhong()                  # uses our point normals
+        renderer.AddActor(actor)
+        meshes.append((point_array, vtk_to_numpy(point_array), normal_array, vtk_to_numpy(normal_array)))
+    for position, intensity in _LIGHTS:
+        light = vtkLight()
+        light.SetLightTypeToCameraLight()
+        light.SetPosition(*position)
+        light.SetFocalPoint(0.0, 0.0, 0.0)
+        light.SetIntensity(intensity)
+        renderer.AddLight(light)
+    camera = renderer.GetActiveCamera()
+    focal, position, up, near_far = _camera_pose(_framed_points(model), VIEWS[view], width, height)
+    camera.SetFocalPoint(*focal)
+    camera.SetPosition(*position)
+    camera.SetViewUp(*up)
+    camera.SetViewAngle(VIEW_ANGLE)
+    camera.SetClippingRange(*near_far)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(8 if antialias else 0)
+    window.SetSize(width, height)
+    window.AddRenderer(renderer)
+    return window, meshes
+
+
+def _colour_rgb(colour: str, fallback: str) -> np.ndarray:
+    """A ``#rrggbb`` colour as RGB floats in [0, 1]; the fallback's if it is not one."""
     try:
-        return np.array(pv.Color(colour).float_rgb)
-    except (ValueError, TypeError):
-        return np.array(pv.Color(fallback).float_rgb)
+        return _hex_rgb(colour)
+    except (ValueError, TypeError, AttributeError, IndexError):
+        return _hex_rgb(fallback)
 
 
 def _choose_offscreen_backend() -> None:
@@ -179,36 +402,6 @@ def _choose_offscreen_backend() -> None:
         os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
     elif ctypes.util.find_library("OSMesa"):
         os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkOSOpenGLRenderWindow")
-
-
-def _part_mesh(pv, faces: np.ndarray, counts: np.ndarray, keep: np.ndarray, positions: np.ndarray):
-    """PolyData of the polygons flagged by ``keep``, with smooth point normals, and the model vertices it uses."""
-    from .cells import index_mask
-
-    cells = faces[np.repeat(keep, counts + 1)].copy()
-    mask = index_mask(cells, counts[keep])
-    used = np.unique(cells[mask])
-    remap = np.full(len(positions), -1, dtype=np.int64)
-    remap[used] = np.arange(len(used))
-    cells[mask] = remap[cells[mask]]
-    mesh = pv.PolyData(positions[used], cells)
-    mesh.point_data["Normals"] = _vertex_normals(positions[used], cells)
-    mesh.point_data.active_normals_name = "Normals"
-    return mesh, used
-
-
-def _vertex_normals(points: np.ndarray, cells: np.ndarray) -> np.ndarray:
-    """Area-weighted vertex normals of fan-triangulated polygons (smooth shading)."""
-    from .cells import cells_to_triangles
-
-    tris = cells_to_triangles(cells)
-    a, b, c = points[tris[:, 0]], points[tris[:, 1]], points[tris[:, 2]]
-    face_normals = np.cross(b - a, c - a)
-    normals = np.zeros_like(points)
-    for k in range(3):
-        np.add.at(normals, tris[:, k], face_normals)
-    length = np.linalg.norm(normals, axis=1, keepdims=True)
-    return np.divide(normals, length, out=np.zeros_like(normals), where=length > 0)
 
 
 def _is_eyeball(part: str) -> bool:
@@ -238,15 +431,10 @@ def _hex_rgb(colour: str) -> np.ndarray:
     return np.array([int(colour[i:i + 2], 16) for i in (0, 2, 4)]) / 255.0
 
 
-def _lights(pv):
-    """A three-point set-up in camera space (camera at +Z looking at the origin, +Y up)."""
-    key = pv.Light(position=(-1.0, 0.9, 1.2), focal_point=(0, 0, 0), intensity=0.78,
-                   light_type="camera light")
-    fill = pv.Light(position=(1.3, 0.1, 1.0), focal_point=(0, 0, 0), intensity=0.42,
-                    light_type="camera light")
-    rim = pv.Light(position=(0.4, 1.2, -1.4), focal_point=(0, 0, 0), intensity=0.45,
-                   light_type="camera light")
-    return [key, fill, rim]
+# A three-point set-up in camera space (camera at +Z looking at the origin, +Y up):
+# (position, intensity) of the key, fill and rim lights, all aimed at the origin
+_LIGHTS = [((-1.0, 0.9, 1.2), 0.78), ((1.3, 0.1, 1.0), 0.42), ((0.4, 1.2, -1.4), 0.45)]
+_PYVISTA_DEFAULT_COLOUR = (173 / 255, 216 / 255, 230 / 255)   # "lightblue"; see _build_scene
 
 
 def _framed_points(model) -> np.ndarray:
@@ -268,7 +456,18 @@ def _framed_points(model) -> np.ndarray:
 
 
 def _place_camera(camera, points: np.ndarray, toward_camera, width: int, height: int) -> None:
-    """Perspective camera that fits every point with a margin (mm), looking along ``-toward_camera``."""
+    """Set a pyvista camera to :func:`_camera_pose` (perspective, fits every point with a margin)."""
+    focal, position, up, near_far = _camera_pose(points, toward_camera, width, height)
+    camera.focal_point = tuple(focal)
+    camera.position = tuple(position)
+    camera.up = tuple(up)
+    camera.view_angle = VIEW_ANGLE
+    camera.clipping_range = near_far
+
+
+def _camera_pose(points: np.ndarray, toward_camera, width: int, height: int):
+    """Focal point, position, view-up and clipping range (mm) of a perspective camera
+    looking along ``-toward_camera`` that fits every point with a margin."""
     back = np.asarray(toward_camera, dtype=float)
     back /= np.linalg.norm(back)
     up = np.array([0.0, 1.0, 0.0])
@@ -281,12 +480,8 @@ def _place_camera(camera, points: np.ndarray, toward_camera, width: int, height:
     # distance from the focal plane such that every point projects inside the picture
     distance = max(np.max((w - cw) + np.abs(u - cu) / tan_x), np.max((w - cw) + np.abs(v - cv) / tan_y), 1.0)
     focal = cu * right + cv * up + cw * back
-    camera.focal_point = tuple(focal)
-    camera.position = tuple(focal + distance * back)
-    camera.up = tuple(up)
-    camera.view_angle = VIEW_ANGLE
     near = max(distance - (w.max() - cw) - 10.0, distance * 0.01)
-    camera.clipping_range = (near, distance + (cw - w.min()) + 10.0)
+    return focal, focal + distance * back, up, (near, distance + (cw - w.min()) + 10.0)
 
 
 def write_png(path: str | Path, image: np.ndarray) -> Path:
