@@ -1,0 +1,192 @@
+#!/usr/bin/env python3
+"""Poses → MP4: time to render and encode a talking-head video, as a real-time factor.
+
+Run from the project root::
+
+    .venv/bin/python benchmarks/bench_video.py [--seconds 10] [--fps 30] [--size 640x480]
+                                               [--antialias off|on|both] [--json out.json]
+
+The default head (``engine.load_model()``) moves for ``--seconds`` at
+``--fps``: the jaw opening and closing three times a second, the head turning,
+nodding and tilting slowly, brows and eyelids moving, all on sine waves; the
+audio is a 16 kHz tone (Festival's rate), so the MP4 carries AAC as ``say``'s
+does. Stages, each timed on its own and then all together:
+
+* **setup** — :class:`engine.render.FrameRenderer` made (pyvista/VTK import,
+  OpenGL context, shaders compiled on the first frame);
+* **deform** — ``Deformer.deform`` for every frame;
+* **render** — ``FrameRenderer.render`` for every frame (new points and
+  normals, draw, read the picture back);
+* **encode** — the same frames piped into ffmpeg alone (libx264 + AAC, the
+  settings of :mod:`engine.video`), wall clock and ffmpeg's CPU time;
+* **write_video** — the real thing, end to end: rendering and encoding
+  overlap (ffmpeg runs in its own process), so its time is less than the sum.
+
+Real-time factor = wall-clock time / video length (below 1: faster than real
+time). The machine is shared: the load average is printed with the figures.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
+import engine  # noqa: E402
+from engine import video  # noqa: E402
+from engine.render import FrameRenderer  # noqa: E402
+
+MOTION = {  # parameter: (centre, amplitude as a fraction of the half range, frequency Hz)
+    "jaw_open": (None, 1.0, 3.0),
+    "head_turn": (None, 0.5, 0.2),
+    "head_nod": (None, 0.4, 0.35),
+    "head_tilt": (None, 0.3, 0.15),
+    "brow_raise": (None, 0.8, 0.5),
+    "eyelid_left_close": (None, 1.0, 0.3),
+    "eyelid_right_close": (None, 1.0, 0.3),
+}
+
+
+def motion(model, seconds: float, fps: float):
+    """Frame times (ms), the names moved and their values (frames × names), inside each range."""
+    times = np.arange(int(round(seconds * fps))) * (1000.0 / fps)
+    names = [n for n in MOTION if n in model.parameters]
+    columns = []
+    for k, name in enumerate(names):
+        p = model.parameters[name]
+        _, amplitude, frequency = MOTION[name]
+        centre, half = (p.minimum + p.maximum) / 2, (p.maximum - p.minimum) / 2
+        wave = np.sin(2 * np.pi * frequency * times / 1000.0 + k)
+        columns.append(np.clip(centre + amplitude * half * wave, p.minimum, p.maximum))
+    return times, names, np.stack(columns, axis=1)
+
+
+def tone(seconds: float, rate: int = 16000) -> np.ndarray:
+    t = np.arange(int(seconds * rate)) / rate
+    return (0.3 * np.sin(2 * np.pi * 220 * t) * (0.6 + 0.4 * np.sin(2 * np.pi * 4 * t))).astype(np.float32)
+
+
+def children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scratch: Path) -> dict:
+    model = engine.load_model()
+    times, names, values = motion(model, seconds, fps)
+    frames = len(times)
+    full = np.tile(model.values_array(), (frames, 1))
+    full[:, [model.parameters.names.index(n) for n in names]] = values
+    deformer = model.deformer()
+    audio = tone(seconds)
+
+    t = time.perf_counter()
+    renderer = FrameRenderer(model, size=size, antialias=antialias)
+    renderer.render(model.vertices)                       # first frame: shaders compiled
+    setup = time.perf_counter() - t
+
+    t = time.perf_counter()
+    positions = [deformer.deform(row) for row in full]
+    deform = time.perf_counter() - t
+
+    cpu = time.process_time()
+    t = time.perf_counter()
+    pictures = [renderer.render(p) for p in positions]
+    render = time.perf_counter() - t
+    render_cpu = time.process_time() - cpu
+    renderer.close()
+
+    wav = scratch / "tone.wav"
+    video._write_wav(wav, video._fit_audio(audio, 16000, 0.0, frames, fps), 16000)
+    out = scratch / "encode-only.mp4"
+    command = ["ffmpeg", "-hide_banner", "-nostdin", "-loglevel", "error", "-y", "-f", "rawvideo",
+               "-pix_fmt", "rgb24", "-s", f"{size[0]}x{size[1]}", "-framerate", video._rate_text(fps),
+               "-i", "pipe:0", "-i", str(wav), "-map", "0:v:0", "-map", "1:a:0", *video.AUDIO_ARGS,
+               *video.VIDEO_ARGS, "-movflags", "+faststart", "-f", "mp4", str(out)]
+    cpu = children_cpu()
+    t = time.perf_counter()
+    process = subprocess.Popen(command, stdin=subprocess.PIPE)
+    for picture in pictures:
+        process.stdin.write(picture.tobytes())
+    process.stdin.close()
+    process.wait()
+    encode = time.perf_counter() - t
+    encode_cpu = children_cpu() - cpu
+    del pictures
+
+    out = scratch / "write_video.mp4"
+    cpu = time.process_time()
+    stats = video.write_video(out, model, times, values, names, fps, audio=audio, sample_rate=16000,
+                              size=size, antialias=antialias)
+    own_cpu = time.process_time() - cpu
+    info = video.probe(out)
+    return {
+        "antialias": antialias, "frames": frames, "seconds": seconds, "fps": fps, "size": list(size),
+        "setup_s": setup,
+        "deform_ms_per_frame": 1000 * deform / frames,
+        "render_ms_per_frame": 1000 * render / frames, "render_cpu_ms_per_frame": 1000 * render_cpu / frames,
+        "encode_ms_per_frame": 1000 * encode / frames, "encode_cpu_ms_per_frame": 1000 * encode_cpu / frames,
+        "sum_of_stages_s": setup + deform + render + encode,
+        "write_video_s": stats.total, "real_time_factor": stats.total / seconds,
+        "write_video_breakdown_s": {"deform": stats.deform, "render": stats.render,
+                                    "waiting_for_encoder": stats.encoder_wait, "finishing": stats.finish,
+                                    "encoder_cpu": stats.encoder_cpu, "python_process_cpu": own_cpu},
+        "file_bytes": out.stat().st_size,
+        "video_duration_s": info.video_duration, "audio_duration_s": info.audio_duration,
+        "load_average": os.getloadavg(),
+    }
+
+
+def report(r: dict) -> None:
+    n = r["frames"]
+    print(f"\n== {r['seconds']:g} s at {r['fps']:g} fps, {r['size'][0]}x{r['size'][1]}, "
+          f"antialias {'on (8x MSAA)' if r['antialias'] else 'off'}: {n} frames "
+          f"(load average {r['load_average'][0]:.2f} on {os.cpu_count()} cores)")
+    print(f"  setup (renderer, first frame)   {r['setup_s']:7.2f} s")
+    print(f"  deform                          {r['deform_ms_per_frame']:7.2f} ms/frame")
+    print(f"  render (points, draw, read)     {r['render_ms_per_frame']:7.2f} ms/frame  "
+          f"(CPU {r['render_cpu_ms_per_frame']:.1f} ms)")
+    print(f"  encode alone (x264 + AAC)       {r['encode_ms_per_frame']:7.2f} ms/frame  "
+          f"(ffmpeg CPU {r['encode_cpu_ms_per_frame']:.1f} ms)")
+    print(f"  stages one after another        {r['sum_of_stages_s']:7.2f} s  "
+          f"= {r['sum_of_stages_s'] / r['seconds']:.2f}x real time")
+    b = r["write_video_breakdown_s"]
+    print(f"  write_video, end to end         {r['write_video_s']:7.2f} s  "
+          f"= {r['real_time_factor']:.2f}x real time   ({r['file_bytes'] / 1e6:.2f} MB)")
+    print(f"    in it: deform {b['deform']:.2f} s, render {b['render']:.2f} s, waiting for ffmpeg "
+          f"{b['waiting_for_encoder']:.2f} s, finishing {b['finishing']:.2f} s; ffmpeg CPU "
+          f"{b['encoder_cpu']:.2f} s")
+    print(f"  durations: video {r['video_duration_s']:.3f} s, audio {r['audio_duration_s']:.3f} s")
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--seconds", type=float, default=10.0)
+    parser.add_argument("--fps", type=float, default=30.0)
+    parser.add_argument("--size", default="640x480", help="WxH (default 640x480)")
+    parser.add_argument("--antialias", choices=("off", "on", "both"), default="both")
+    parser.add_argument("--json", default=None, metavar="OUT", help="also write the figures as JSON")
+    args = parser.parse_args(argv)
+    size = tuple(int(s) for s in args.size.lower().split("x"))
+    modes = {"off": [False], "on": [True], "both": [False, True]}[args.antialias]
+    results = []
+    with tempfile.TemporaryDirectory(prefix="bench-video-") as scratch:
+        for antialias in modes:
+            results.append(run(args.seconds, args.fps, size, antialias, Path(scratch)))
+            report(results[-1])
+    if args.json:
+        Path(args.json).write_text(json.dumps(results, indent=2) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
