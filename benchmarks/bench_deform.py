@@ -12,7 +12,10 @@ internal order the model's own, so no frame pays for reordering; the
 shipped head is saved in that order). Every parameter is set to a random
 value inside its range each frame (the worst case: all parameters active).
 
-* **engine** — ``Model.deform`` (the vectorised ``engine.deform.Deformer``).
+* **engine** — ``Model.deform``: ``engine.deform.Deformer`` with the compiled
+  vertex pass (``engine/_deform_kernel.c``) when it is built; the row below
+  it times the numpy fallback (``Deformer(model, kernel=False)``) on the same
+  frames.
 * **peer** — dense linear-blend skinning written the way ``smplx.lbs`` does
   it: weights V × K dense, blend the K homogeneous 4×4 matrices per vertex
   (``W @ A.reshape(K, 16)``), apply with a batched matmul. It gets the same
@@ -43,7 +46,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import engine  # noqa: E402
-from engine.deform import optimise_vertex_order  # noqa: E402
+from engine.deform import Deformer, optimise_vertex_order  # noqa: E402
 from engine.subdivide import subdivide  # noqa: E402
 
 
@@ -118,11 +121,14 @@ def main(argv=None):
               (f"subdivided ×{args.subdivision}²", fine),
               (f"  same, order optimised", optimise_vertex_order(fine)[0])]
     rows = []
+    path = "compiled kernel" if engine.deform.compiled is not None else "numpy (kernel not built)"
+    print(f"engine = Model.deform: {path}; single thread")
     print(f"{'mesh':22s} {'vertices':>9s} {'engine ms':>10s} {'peer ms':>9s} {'floor ms':>9s} "
           f"{'peer/engine':>12s} {'engine/floor':>13s}")
     for label, model in meshes:
         frames = random_frames(model, args.frames)
         deformer = model.deformer()
+        fallback = Deformer(model, kernel=False) if deformer.kernel else None
         peer, floor = DenseLBS(model), CopyFloor(model)
         # the peer must agree with the engine where the two formulations coincide (no leaves active)
         check = frames[0].copy()
@@ -133,12 +139,17 @@ def main(argv=None):
         t_engine = time_per_frame(deformer.deform, frames)
         t_peer = time_per_frame(peer.deform, frames[: max(20, args.frames // 5)])
         t_floor = time_per_frame(floor.deform, frames)
-        rows.append(dict(mesh=label, vertices=model.n_vertices, engine_ms=t_engine, peer_ms=t_peer,
-                         floor_ms=t_floor, speedup_vs_peer=t_peer / t_engine, engine_over_floor=t_engine / t_floor,
+        t_numpy = time_per_frame(fallback.deform, frames) if fallback is not None else None
+        rows.append(dict(mesh=label, vertices=model.n_vertices, engine_path=path, engine_ms=t_engine,
+                         numpy_path_ms=t_numpy, peer_ms=t_peer, floor_ms=t_floor,
+                         speedup_vs_peer=t_peer / t_engine, engine_over_floor=t_engine / t_floor,
                          peer_max_difference_mm=float(err)))
         print(f"{label:22s} {model.n_vertices:9d} {t_engine:10.3f} {t_peer:9.3f} {t_floor:9.3f} "
               f"{t_peer / t_engine:11.1f}× {t_engine / t_floor:12.2f}×   (peer = engine to {err:.1e} mm "
               "with leaves at 0)")
+        if t_numpy is not None:
+            print(f"{'    numpy fallback':22s} {'':9s} {t_numpy:10.3f} {'':9s} {'':9s} "
+                  f"{t_peer / t_numpy:11.1f}× {t_numpy / t_floor:12.2f}×")
     print("goal on the large mesh: ≥ 10× faster than the peer, ≤ 4× the floor")
     if args.json:
         args.json.write_text(json.dumps(rows, indent=2))
