@@ -19,11 +19,13 @@ does. Stages, each timed on its own and then all together:
   normals, draw, read the picture back);
 * **encode** — the same frames piped into ffmpeg alone (libx264 + AAC, the
   settings of :mod:`engine.video`), wall clock and ffmpeg's CPU time;
-* **write_video** — the real thing, end to end: rendering and encoding
+* **write_video** — the real thing, end to end: drawing and encoding
   overlap (ffmpeg runs in its own process), so its time is less than the sum.
 
 Real-time factor = wall-clock time / video length (below 1: faster than real
-time). The machine is shared: the load average is printed with the figures.
+time). The machine is shared: the load average and how much CPU two busy
+processes can get are printed with the figures, and CPU seconds per second
+of video (all processes) give the cost independent of the load.
 """
 
 from __future__ import annotations
@@ -124,11 +126,20 @@ def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scra
     del pictures
 
     out = scratch / "write_video.mp4"
-    cpu = time.process_time()
+    cpu, children = time.process_time(), children_cpu()
     stats = video.write_video(out, model, times, values, names, fps, audio=audio, sample_rate=16000,
                               size=size, antialias=antialias)
     own_cpu = time.process_time() - cpu
     info = video.probe(out)
+    whole = {
+        "seconds": stats.total, "real_time_factor": stats.total / seconds,
+        "deform": stats.deform, "render": stats.render,
+        "waiting_for_encoder": stats.encoder_wait, "finishing": stats.finish,
+        "encoder_cpu": stats.encoder_cpu, "python_process_cpu": own_cpu,
+        "cpu_per_video_second": (own_cpu + children_cpu() - children) / seconds,
+        "file_bytes": out.stat().st_size,
+        "video_duration_s": info.video_duration, "audio_duration_s": info.audio_duration,
+    }
     return {
         "antialias": antialias, "frames": frames, "seconds": seconds, "fps": fps, "size": list(size),
         "setup_s": setup,
@@ -136,21 +147,27 @@ def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scra
         "render_ms_per_frame": 1000 * render / frames, "render_cpu_ms_per_frame": 1000 * render_cpu / frames,
         "encode_ms_per_frame": 1000 * encode / frames, "encode_cpu_ms_per_frame": 1000 * encode_cpu / frames,
         "sum_of_stages_s": setup + deform + render + encode,
-        "write_video_s": stats.total, "real_time_factor": stats.total / seconds,
-        "write_video_breakdown_s": {"deform": stats.deform, "render": stats.render,
-                                    "waiting_for_encoder": stats.encoder_wait, "finishing": stats.finish,
-                                    "encoder_cpu": stats.encoder_cpu, "python_process_cpu": own_cpu},
-        "file_bytes": out.stat().st_size,
-        "video_duration_s": info.video_duration, "audio_duration_s": info.audio_duration,
+        "write_video": whole,
+        "available_cores": available_cores(),
         "load_average": os.getloadavg(),
     }
 
 
+def available_cores(seconds: float = 1.0) -> float:
+    """How many cores' worth of CPU two busy processes get right now (the machine is shared)."""
+    code = ("import time\nt = time.perf_counter(); c = time.process_time()\n"
+            f"while time.perf_counter() - t < {seconds}: pass\n"
+            "print(time.process_time() - c)")
+    spinners = [subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True)
+                for _ in range(os.cpu_count() or 1)]
+    return sum(float(p.communicate()[0]) for p in spinners) / seconds
+
+
 def report(r: dict) -> None:
-    n = r["frames"]
     print(f"\n== {r['seconds']:g} s at {r['fps']:g} fps, {r['size'][0]}x{r['size'][1]}, "
-          f"antialias {'on (8x MSAA)' if r['antialias'] else 'off'}: {n} frames "
-          f"(load average {r['load_average'][0]:.2f} on {os.cpu_count()} cores)")
+          f"antialias {'on (8x MSAA)' if r['antialias'] else 'off'}: {r['frames']} frames "
+          f"(load average {r['load_average'][0]:.2f}; {r['available_cores']:.2f} of {os.cpu_count()} cores "
+          f"free for two busy processes)")
     print(f"  setup (renderer, first frame)   {r['setup_s']:7.2f} s")
     print(f"  deform                          {r['deform_ms_per_frame']:7.2f} ms/frame")
     print(f"  render (points, draw, read)     {r['render_ms_per_frame']:7.2f} ms/frame  "
@@ -159,13 +176,13 @@ def report(r: dict) -> None:
           f"(ffmpeg CPU {r['encode_cpu_ms_per_frame']:.1f} ms)")
     print(f"  stages one after another        {r['sum_of_stages_s']:7.2f} s  "
           f"= {r['sum_of_stages_s'] / r['seconds']:.2f}x real time")
-    b = r["write_video_breakdown_s"]
-    print(f"  write_video, end to end         {r['write_video_s']:7.2f} s  "
-          f"= {r['real_time_factor']:.2f}x real time   ({r['file_bytes'] / 1e6:.2f} MB)")
-    print(f"    in it: deform {b['deform']:.2f} s, render {b['render']:.2f} s, waiting for ffmpeg "
-          f"{b['waiting_for_encoder']:.2f} s, finishing {b['finishing']:.2f} s; ffmpeg CPU "
-          f"{b['encoder_cpu']:.2f} s")
-    print(f"  durations: video {r['video_duration_s']:.3f} s, audio {r['audio_duration_s']:.3f} s")
+    w = r["write_video"]
+    print(f"  write_video, end to end         {w['seconds']:7.2f} s  = {w['real_time_factor']:.2f}x real time   "
+          f"({w['file_bytes'] / 1e6:.2f} MB; {w['cpu_per_video_second']:.2f} CPU-s per video second)")
+    print(f"    in it: deform {w['deform']:.2f} s, render {w['render']:.2f} s, waiting for ffmpeg "
+          f"{w['waiting_for_encoder']:.2f} s, finishing {w['finishing']:.2f} s; CPU: ffmpeg "
+          f"{w['encoder_cpu']:.2f} s, this process {w['python_process_cpu']:.2f} s (OpenGL threads included)")
+    print(f"  durations: video {w['video_duration_s']:.3f} s, audio {w['audio_duration_s']:.3f} s")
 
 
 def main(argv=None) -> int:
