@@ -20,7 +20,11 @@ It writes, next to this script:
 The rig's pivots, angles and weights are not painted by hand: each is fitted
 to the matching artist pose (jaw to ``jawOpen``, eyelids to ``eyeBlink*``,
 brows to ``browInnerUp`` + ``browOuterUp*``), so the baseline rig reproduces
-poses an artist made. See ``docs/default-head.md``.
+poses an artist made. The articulatory parameters of §3.1.2 (``mouth_widen``,
+``lip_protrude``, ``upper_lip_raise``, ``lower_lip_raise``) are displacement
+fields made from the artist's mouth poses and fitted to the lip contact, so
+that the lips close without passing through each other. See
+``docs/default-head.md``.
 """
 
 from __future__ import annotations
@@ -275,6 +279,335 @@ def fit_pivot_yz(rest, displacement) -> np.ndarray:
 
 
 # ---------------------------------------------------------------------------
+# Articulatory parameters (§3.1.2) and the lip contact they must respect
+# ---------------------------------------------------------------------------
+
+CLOSURE_CLEARANCE = 0.15    # mm left between the lips where they meet (closure, and the other fields' checks)
+FOLLOW_DEPTH = 4.5          # mm below the mouth line over which the lower lip follows the upper lip (protrusion)
+SECTION_SPAN = 0.75         # lip sections are checked across this fraction of the mouth's half-width
+CHECK_SECTIONS = 61
+
+
+def _largest(predicate, lo: float, hi: float, steps: int = 25) -> float:
+    """The largest value in [lo, hi] for which ``predicate`` holds (bisection; it must hold at ``lo``)."""
+    if not predicate(lo):
+        raise RuntimeError("lip contact: no value in the search range clears the lips")
+    for _ in range(steps):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if predicate(mid) else (lo, mid)
+    return lo
+
+
+def _smallest(predicate, lo: float, hi: float, steps: int = 14) -> float:
+    """The smallest value in [lo, hi] for which ``predicate`` holds (bisection; it must hold at ``hi``)."""
+    if predicate(lo):
+        return lo
+    if not predicate(hi):
+        raise RuntimeError("lip contact: no value in the search range clears the lips")
+    for _ in range(steps):
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if predicate(mid) else (mid, hi)
+    return hi
+
+
+class LipContact:
+    """The two lips of the rest mesh, and whether a pose makes them pass through each other.
+
+    The lips are told apart by the rest *mouth line*: in each sagittal section (plane x =
+    const) it runs halfway between the lowest point of the upper lip and the highest point of
+    the lower lip, found where their jaw share is unambiguous (upper < 0.35, lower > 0.65).
+    A pose is checked in sagittal sections across the middle ``SECTION_SPAN`` of the mouth:
+    the outlines of the upper and lower lip must not cross, and stay ``clearance`` apart.
+    """
+
+    def __init__(self, rest, triangles, skin, jaw_share, landmarks):
+        self.rest = rest
+        self.landmarks = landmarks
+        corners = rest[[landmarks["8.3"], landmarks["8.4"]]]
+        centre = (rest[landmarks["2.2"]] + rest[landmarks["2.3"]]) / 2
+        half = self.half_width(rest)
+        tri = triangles[np.all(skin[triangles], axis=1)]
+        c = rest[tri].mean(axis=1)
+        zone = ((np.abs(c[:, 0]) < 1.3 * half) & (np.abs(c[:, 1] - centre[1]) < 15)
+                & (c[:, 2] > corners[:, 2].min() - 8))
+        self.triangles, c = tri[zone], c[zone]
+        share = jaw_share[self.triangles].mean(axis=1)
+        xs, ys = [], []
+        for x in np.arange(0.0, 0.95 * half, 0.5):
+            segments, k = self._cut(rest, x + 1e-4)
+            up, lo = segments[share[k] < 0.35].reshape(-1, 2), segments[share[k] > 0.65].reshape(-1, 2)
+            up, lo = up[up[:, 1] > centre[1] - 6], lo[lo[:, 1] < centre[1] + 6]
+            if len(up) and len(lo):
+                xs.append(x)
+                ys.append((up[:, 1].min() + lo[:, 1].max()) / 2)
+        self.line_x, self.line_y = np.array(xs), np.array(ys)
+        self.upper_triangle = c[:, 1] > self.mouth_line(c[:, 0])
+        self.upper_vertex = rest[:, 1] > self.mouth_line(rest[:, 0])
+        in_zone = (skin & (np.abs(rest[:, 0]) < 1.3 * half) & (np.abs(rest[:, 1] - centre[1]) < 15)
+                   & (rest[:, 2] > corners[:, 2].min() - 8))
+        self.lower_lip = np.flatnonzero(in_zone & ~self.upper_vertex)
+        self.upper_contact = np.flatnonzero(in_zone & self.upper_vertex
+                                            & (rest[:, 1] - self.mouth_line(rest[:, 0]) < 1.5))
+        # lower-lip triangles in the contact check: away from the corners, not sharing a vertex with the upper lip
+        shared = np.zeros(len(rest), bool)
+        shared[self.triangles[self.upper_triangle].ravel()] = True
+        front = np.zeros(len(rest), bool)
+        front[self.lower_lip] = ~shared[self.lower_lip] & (np.abs(rest[self.lower_lip, 0]) < 0.85 * half)
+        lower = self.triangles[~self.upper_triangle]
+        self.check_triangles = lower[np.all(front[lower], axis=1)]
+
+    def mouth_line(self, x):
+        return np.interp(np.abs(x), self.line_x, self.line_y)
+
+    def half_width(self, P) -> float:
+        return float(abs(P[self.landmarks["8.3"], 0] - P[self.landmarks["8.4"], 0]) / 2)
+
+    def _cut(self, P, x):
+        """Segments (k, 2, 2) in (z, y) where the plane X = x cuts the mouth triangles, and their triangles."""
+        pts = P[self.triangles]
+        d = pts[:, :, 0] - x
+        below = d < 0
+        segments = np.zeros((len(pts), 2, 2))
+        count = np.zeros(len(pts), dtype=int)
+        for a, b in ((0, 1), (1, 2), (2, 0)):
+            crossing = below[:, a] != below[:, b]
+            t = np.where(crossing, d[:, a] / np.where(crossing, d[:, a] - d[:, b], 1.0), 0.0)
+            q = pts[:, a] + t[:, None] * (pts[:, b] - pts[:, a])
+            for slot in (0, 1):
+                put = crossing & (count == slot)
+                segments[put, slot] = q[put][:, [2, 1]]
+                count[put] += 1
+                crossing &= ~put
+        keep = np.flatnonzero(count == 2)
+        return segments[keep], keep
+
+    def section(self, P, x):
+        """Upper-lip and lower-lip outlines in the sagittal plane X = x, as (z, y) segments."""
+        segments, k = self._cut(P, x)
+        up = self.upper_triangle[k]
+        return segments[up], segments[~up]
+
+    @staticmethod
+    def crossings(A, B) -> int:
+        if len(A) == 0 or len(B) == 0:
+            return 0
+        p, r = A[:, None, 0], (A[:, 1] - A[:, 0])[:, None]
+        q, s = B[None, :, 0], (B[:, 1] - B[:, 0])[None]
+        cross = lambda u, v: u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]  # noqa: E731
+        den = cross(r, s)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t, u = cross(q - p, s) / den, cross(q - p, r) / den
+        e = 1e-9        # outlines that merely share an end point (at a mouth corner) do not cross
+        return int(np.sum((np.abs(den) > 1e-12) & (t > e) & (t < 1 - e) & (u > e) & (u < 1 - e)))
+
+    @staticmethod
+    def distance(A, B) -> float:
+        if len(A) == 0 or len(B) == 0:
+            return np.inf
+
+        def point_to_segments(p, S):
+            a, ab = S[:, 0], S[:, 1] - S[:, 0]
+            t = np.einsum("pij,pij->pi", p[:, None] - a[None], ab[None]) / np.maximum((ab * ab).sum(-1), 1e-12)
+            t = np.clip(t, 0, 1)
+            return np.linalg.norm(p[:, None] - (a[None] + t[..., None] * ab[None]), axis=-1).min()
+        return float(min(point_to_segments(A.reshape(-1, 2), B), point_to_segments(B.reshape(-1, 2), A)))
+
+    def section_clear(self, P, x, clearance) -> bool:
+        U, L = self.section(P, x)
+        return self.crossings(U, L) == 0 and self.distance(U, L) >= clearance
+
+    def clear(self, P, clearance, n: int = CHECK_SECTIONS) -> bool:
+        """True if the lips keep ``clearance`` mm apart and do not cross in every checked section."""
+        half = self.half_width(P)
+        return all(self.section_clear(P, x, clearance)
+                   for x in np.linspace(-SECTION_SPAN, SECTION_SPAN, n) * half + 1e-4)
+
+    def upper_floor(self, P, points):
+        """Lowest y of the (posed) upper lip straight above or below each point's (x, z); nan where none."""
+        T = P[self.triangles[self.upper_triangle]]
+        a, v0, v1 = T[:, 0][:, [0, 2]], (T[:, 1] - T[:, 0])[:, [0, 2]], (T[:, 2] - T[:, 0])[:, [0, 2]]
+        den = v0[:, 0] * v1[:, 1] - v0[:, 1] * v1[:, 0]
+        dq = points[:, None, [0, 2]] - a[None]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s = (dq[..., 0] * v1[:, 1] - dq[..., 1] * v1[:, 0]) / den
+            t = (v0[:, 0] * dq[..., 1] - v0[:, 1] * dq[..., 0]) / den
+        inside = (np.abs(den) > 1e-12) & (s >= 0) & (t >= 0) & (s + t <= 1)
+        y = np.where(inside, T[:, 0, 1] + s * (T[:, 1, 1] - T[:, 0, 1]) + t * (T[:, 2, 1] - T[:, 0, 1]), np.inf)
+        floor = y.min(axis=1)
+        return np.where(np.isfinite(floor), floor, np.nan)
+
+    SAMPLES = np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1], [.5, .5, 0], [0, .5, .5], [.5, 0, .5],
+                        [1 / 3, 1 / 3, 1 / 3], [2 / 3, 1 / 6, 1 / 6], [1 / 6, 2 / 3, 1 / 6], [1 / 6, 1 / 6, 2 / 3]])
+
+    def overlap(self, P, clearance) -> np.ndarray:
+        """Per vertex: how far (mm) the lower-lip surface around it rises above ``upper floor − clearance``."""
+        tri = self.check_triangles
+        points = np.einsum("sk,tkc->tsc", self.SAMPLES, P[tri]).reshape(-1, 3)
+        depth = points[:, 1] - (self.upper_floor(P, points) - clearance)
+        depth = np.where(np.isfinite(depth), np.maximum(depth, 0.0), 0.0).reshape(len(tri), len(self.SAMPLES))
+        owed = np.zeros(len(P))
+        for k in range(3):
+            np.maximum.at(owed, tri[:, k], (depth * (self.SAMPLES[:, k] > 0)).max(axis=1))
+        return owed
+
+
+def smooth_nodes(values, passes: int = 1):
+    """[1 2 1]/4 smoothing of values on nodes x = 0, h, 2h, … (mirrored at 0, flat at the end)."""
+    v = np.asarray(values, dtype=float)
+    for _ in range(passes):
+        p = np.r_[v[1], v, v[-1]]
+        v = (p[:-2] + 2 * p[1:-1] + p[2:]) / 4
+    return v
+
+
+def fit_closure(contact: LipContact, region, forward, clearance, nodes: int = 25, iterations: int = 4):
+    """The lower-lip closure field: ``region · (0, lift(|x|), forward)``, ``lift`` fitted section by
+    section so that the lower lip just meets the upper lip (``clearance`` apart, never crossing)."""
+    rest = contact.rest
+    xs = np.linspace(0, SECTION_SPAN * contact.half_width(rest), nodes)
+    x_abs = np.abs(rest[:, 0])
+    up = region[:, None] * np.array([0.0, 1.0, 0.0])
+
+    def field(lift, shift=0.0):
+        T = np.zeros((len(rest), 3))
+        T[:, 1] = np.interp(x_abs, xs, lift) - shift
+        T[:, 2] = forward
+        return region[:, None] * T
+
+    lift = np.zeros(nodes)
+    for _ in range(iterations):
+        P = rest + field(lift)
+        extra = [_largest(lambda v: contact.section_clear(P + v * up, x + 1e-4, clearance), -6.0, 6.0)
+                 for x in xs]
+        lift = lift + smooth_nodes(extra)
+    # one common downward shift, if needed, so that the sections between the nodes clear as well
+    shift = _smallest(lambda s: contact.clear(rest + field(lift, s), clearance), 0.0, 3.0)
+    return field(lift, shift), lift
+
+
+def follow_upper_lip(contact: LipContact, D, closed, depth=FOLLOW_DEPTH, k: int = 3):
+    """``D`` with the lower lip near the mouth line moving like the upper lip it touches when closed.
+
+    ``closed`` are the positions with the lips closed (rest + closure field): each lower-lip
+    vertex takes the motion of its nearest upper-lip contact vertices there, fully at the
+    mouth line and fading out ``depth`` mm below it, so a field that moves both lips keeps
+    them in contact the way closure left them."""
+    from scipy.spatial import cKDTree
+
+    rest, lower, upper = contact.rest, contact.lower_lip, contact.upper_contact
+    dist, idx = cKDTree(closed[upper]).query(closed[lower], k=list(range(1, k + 1)))
+    w = 1.0 / np.maximum(dist, 0.3)
+    w /= w.sum(axis=1, keepdims=True)
+    partner = np.einsum("nk,nkc->nc", w, D[upper][idx])
+    b = 1.0 - smoothstep((contact.mouth_line(rest[lower, 0]) - rest[lower, 1]) / depth)
+    out = D.copy()
+    out[lower] = (1 - b[:, None]) * D[lower] + b[:, None] * partner
+    return out
+
+
+def keep_lips_apart(contact: LipContact, D, clearance, companions, adjacency, lower_side, rounds: int = 20):
+    """``D`` with the lower lip lowered wherever ``D`` (alone, and added to each companion field)
+    would push it into the upper lip; the lowering spreads over three rings of neighbours."""
+    rest = contact.rest
+    lowered = np.zeros(len(rest))
+    for _ in range(rounds):
+        out = D.copy()
+        out[:, 1] -= lowered
+        owed = np.zeros(len(rest))
+        for extra in companions:
+            owed = np.maximum(owed, contact.overlap(rest + out + extra, clearance))
+        if owed.max() < 1e-3 and all(contact.clear(rest + out + extra, 0.0) for extra in companions):
+            return out, float(lowered.max())
+        step = owed + 0.02 * (owed > 0)
+        for _ in range(3):
+            neighbours = adjacency.multiply(step[None, :]).max(axis=1).toarray().ravel()
+            step = np.where(lower_side, np.maximum(step, 0.7 * neighbours), 0.0)
+        lowered += step
+    raise RuntimeError("lip contact: could not keep the lips apart")
+
+
+def articulation(vertices, triangles, is_skin, jaw_share, landmarks, target, adjacency):
+    """The articulatory parameters of §3.1.2 as displacement fields fitted to the artist's poses.
+
+    Returns ``(parameters, fields, summary)``: ``fields[name]`` is an (n, 3) mm field for value 1.
+    """
+    arkit = "faceunits01/targets/faceunits/"
+    contact = LipContact(vertices, triangles, is_skin, jaw_share, landmarks)
+    lm, P0 = landmarks, vertices
+    # Speech moves the lower face only (§3.1.2: jaw, lips and their surroundings): the artist's fields
+    # fade out between 10 mm above the nose tip and 5 mm below the lower eyelid, and only skin moves.
+    y0, y1 = P0[lm["9.3"], 1] + 10.0, P0[lm["3.3"], 1] - 5.0
+    lower_face = (1.0 - smoothstep((P0[:, 1] - y0) / (y1 - y0))) * is_skin
+
+    def pose(*names):
+        return sum(target(arkit + n + ".target") for n in names) * lower_face[:, None]
+
+    # lower_lip_raise: the region of the artist's mouthShrugLower (AU17 pushes the lower lip up
+    # and forward), carried straight forward until the lower lip's midpoint is under the upper
+    # lip's (2.3 under 2.2), and lifted section by section until the lips just meet.
+    shrug = np.linalg.norm(target(arkit + "mouthShrugLower.target"), axis=1)
+    region = np.clip(shrug / shrug[lm["2.3"]], 0.0, 1.0) * is_skin * ~contact.upper_vertex
+    forward = float(P0[lm["2.2"], 2] - P0[lm["2.3"], 2])
+    closure, lift = fit_closure(contact, region, forward, CLOSURE_CLEARANCE)
+    closed = P0 + closure
+
+    lower_side = is_skin & ~contact.upper_vertex
+    companions = [np.zeros_like(P0), closure]        # each field alone, and with the lips closed
+
+    def apart(D):
+        return keep_lips_apart(contact, D, CLOSURE_CLEARANCE, companions, adjacency, lower_side)
+
+    # mouth_widen: both mouthStretch, plus the share of both mouthSmile that keeps the corners level
+    stretch, smile = pose("mouthStretchLeft", "mouthStretchRight"), pose("mouthSmileLeft", "mouthSmileRight")
+    smile_share = float(-(stretch[lm["8.3"], 1] + stretch[lm["8.4"], 1]) / (smile[lm["8.3"], 1] + smile[lm["8.4"], 1]))
+    widen, widen_lowered = apart(stretch + smile_share * smile)
+    # lip_protrude: mouthPucker; its lower lip follows the upper lip it touches when closed, and is
+    # lowered where the artist's pose presses the lips into each other.
+    protrude, protrude_lowered = apart(follow_upper_lip(contact, pose("mouthPucker"), closed))
+    # upper_lip_raise: mouthUpperUp, both sides
+    upper, upper_lowered = apart(pose("mouthUpperUpLeft", "mouthUpperUpRight"))
+
+    fields = {"mouth_widen": widen, "lip_protrude": protrude, "upper_lip_raise": upper,
+              "lower_lip_raise": closure}
+
+    def at(D, key):
+        return (P0 + D)[lm[key]]
+
+    def gap(D):
+        return float(np.linalg.norm(at(D, "2.2") - at(D, "2.3")))
+
+    def corners(D):
+        return float(np.linalg.norm(at(D, "8.3") - at(D, "8.4")) - np.linalg.norm(P0[lm["8.3"]] - P0[lm["8.4"]]))
+
+    z81, z82 = (float(protrude[lm[k], 2]) for k in ("8.1", "8.2"))
+    y22 = float(upper[lm["2.2"], 1])
+    parameters = [
+        Parameter("mouth_widen", "translation", parent="head_tilt", field=True, minimum=-0.5, maximum=1.2,
+                  description=f"Mouth widening (§3.1.2): lip corners out and back; 1 = the artist's mouthStretch "
+                              f"(both sides) + {smile_share:.2f} × mouthSmile (corners level): corners "
+                              f"{corners(widen):+.1f} mm apart; − narrows."),
+        Parameter("lip_protrude", "translation", parent="head_tilt", field=True, minimum=-0.5, maximum=1.2,
+                  description=f"Lip protrusion and rounding (§3.1.2); 1 = the artist's mouthPucker: lips "
+                              f"{z81:.1f} / {z82:.1f} mm forward (8.1 / 8.2), corners {corners(protrude):+.1f} mm; "
+                              "the lips keep touching as closure left them; − retracts."),
+        Parameter("upper_lip_raise", "translation", parent="head_tilt", field=True, minimum=0.0, maximum=1.2,
+                  description=f"Upper lip raise (AU10); 1 = the artist's mouthUpperUp, both sides: the upper lip's "
+                              f"midpoint {y22:.1f} mm up."),
+        Parameter("lower_lip_raise", "translation", parent="jaw_open", field=True, minimum=-0.5, maximum=1.0,
+                  description=f"Lower lip raise / lip closure; 1 = the lower lip meets the upper lip (with "
+                              f"jaw_open 0: inner lip gap {gap(np.zeros_like(P0)):.1f} → {gap(closure):.1f} mm, "
+                              f"lower lip {forward:.1f} mm forward); − drops it back."),
+    ]
+    summary = {
+        "contact": contact, "closure_lift": lift, "forward": forward, "smile_share": smile_share,
+        "lowered": {"mouth_widen": widen_lowered, "lip_protrude": protrude_lowered,
+                    "upper_lip_raise": upper_lowered},
+        "gap": {n: gap(D) for n, D in fields.items()}, "corners": {n: corners(D) for n, D in fields.items()},
+    }
+    return parameters, fields, summary
+
+
+# ---------------------------------------------------------------------------
 # The derivation
 # ---------------------------------------------------------------------------
 
@@ -477,6 +810,14 @@ def derive(wheel: AnnyWheel):
                               "1 = the artist's browInnerUp + browOuterUp."),
         np.flatnonzero(w), w[w > 0])
 
+    # Articulatory parameters (§3.1.2): displacement fields fitted to the artist's mouth poses.
+    triangles = np.array([[poly[0], poly[i], poly[i + 1]] for poly in quads for i in range(1, len(poly) - 1)])
+    art_params, art_fields, _ = articulation(vertices, triangles, is_skin, jaw_w, landmarks, target, adjacency)
+    for p in art_params:
+        field = np.round(art_fields[p.name], 4)
+        moved = np.flatnonzero(np.abs(field).max(axis=1) > 0)
+        add(p, moved, np.ones(len(moved)), field[moved])
+
     tree = ParameterTree(params)
     model = Model(vertices, np.concatenate([[len(poly), *poly] for poly in quads]),
                   [p for p, _, _ in PARTS], vertex_part, tree, regions, landmarks,
@@ -641,6 +982,20 @@ def main(argv=None) -> int:
         extra = f"{p.degrees_per_unit:.2f}°/unit pivot {np.round(p.pivot, 1)}" if p.kind == "rotation" else ""
         print(f"  {p.name:20s} group {model.parameters.group(p.name)}  {len(r.indices):5d} vertices  {extra}")
     print("landmarks:", ", ".join(f"{k}:{v}" for k, v in sorted(model.landmarks.items())))
+    rest = model.landmark_positions()
+
+    def gap(lm):
+        return np.linalg.norm(lm["2.2"] - lm["2.3"])
+
+    def corners(lm):
+        return np.linalg.norm(lm["8.3"] - lm["8.4"])
+
+    print(f"articulation (value 1; rest inner lip gap {gap(rest):.2f} mm):")
+    for name in ("mouth_widen", "lip_protrude", "upper_lip_raise", "lower_lip_raise"):
+        lm = model.landmark_positions({name: 1.0})
+        print(f"  {name:16s} gap {gap(lm):5.2f} mm  corners {corners(lm) - corners(rest):+6.2f} mm"
+              f"  8.1/8.2 forward {lm['8.1'][2] - rest['8.1'][2]:+5.2f} / {lm['8.2'][2] - rest['8.2'][2]:+5.2f} mm"
+              f"  2.2 up {lm['2.2'][1] - rest['2.2'][1]:+5.2f} mm")
     print(f"reference poses: {len(poses)}")
     return 0
 

@@ -26,7 +26,7 @@ from cli_runner import assert_user_error, run
 DEFAULT_HEAD_PARAMETERS = {
     "neck_lean", "head_turn", "head_nod", "head_tilt", "jaw_open", "tongue_raise", "eye_left_turn",
     "eye_left_raise", "eye_right_turn", "eye_right_raise", "eyelid_left_close", "eyelid_right_close",
-    "brow_raise",
+    "brow_raise", "mouth_widen", "lip_protrude", "upper_lip_raise", "lower_lip_raise",
 }
 SKIN = np.array([0xE2, 0xAD, 0x8F])
 
