@@ -45,7 +45,11 @@ FEATURE_POINTS = {
 
 
 def landmark_sort_key(key: str):
-    """Sort MPEG-4 feature point ids numerically (2.2 before 2.10); other ids last, by name."""
+    """Sort MPEG-4 feature point ids numerically (2.2 before 2.10); other ids last, by name.
+
+    >>> sorted(["2.10", "nose", "2.2", "10.1"], key=landmark_sort_key)
+    ['2.2', '2.10', '10.1', 'nose']
+    """
     try:
         return tuple(int(t) for t in key.split(".")), key
     except ValueError:

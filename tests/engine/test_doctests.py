@@ -10,7 +10,8 @@ import pytest
 MODULES = [
     "engine.errors", "engine.xml_io", "engine.commands.interpolation", "engine.commands.library_format",
     "engine.commands.library", "engine.commands.command_files", "engine.commands.translator",
-    "engine.timeline",
+    "engine.timeline", "engine.script", "engine.speech.articulation", "engine.speech.coarticulation",
+    "engine.speech.prosody", "engine.landmarks",
 ]
 
 
