@@ -19,7 +19,7 @@ from one seed, so the same text and seed give the same face.
 >>> from engine.speech.synthesis import Segment
 >>> words = [Segment("hyvää", 100, 400), Segment("päivää", 400, 800)]
 >>> [c.name for c in prosody_commands(words, [], duration_ms=1000, seed=1)]
-['BrowRaise', 'HeadNod']
+['BrowRaise', 'Blink', 'HeadNod']
 """
 
 from __future__ import annotations
