@@ -147,3 +147,20 @@ def test_say_errors_are_one_line(tmp_path, args, words):
     assert result.returncode == 2, result.stderr
     assert "Traceback" not in result.stderr and words in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
+
+
+def test_say_mp4_has_audio_and_video_that_agree_within_one_frame(tmp_path):
+    from engine.video import probe, read_frames
+
+    text_file = tmp_path / "talk.txt"
+    text_file.write_text("Pappa ja mummo <BrowRaise/> ostivat omenoita.\n", encoding="utf-8")
+    out = tmp_path / "talk.mp4"
+    result = run("say", "--file", text_file, "--voice", "hy_fi_mv_diphone", "--fps", "25", "--size", "320x240",
+                 "-o", out, "--quiet")
+    assert result.returncode == 0, result.stderr
+    info = probe(out)
+    assert info.video_start == pytest.approx(0, abs=1e-3) and info.audio_start == pytest.approx(0, abs=1e-3)
+    assert abs(info.video_duration - info.audio_duration) <= 1 / 25
+    assert (info.width, info.height) == (320, 240) and info.fps == pytest.approx(25)
+    frames = read_frames(out, [0, info.frames // 2])
+    assert frames.shape[1:] == (240, 320, 3) and np.abs(frames[0].astype(int) - frames[1]).max() > 30
