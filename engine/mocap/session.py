@@ -1,0 +1,281 @@
+"""A motion-capture session: imported markers ready for analysis (§3.1.1), and its HDF5 file.
+
+A :class:`Session` is what ``mocap import`` produces and what frame
+selection and multistage PCA read: marker trajectories in millimetres with
+the head motion removed, the raw trajectories as the file had them, which
+samples were missing or gap-filled, the per-frame head alignment, and any
+phone labels. Lengths are mm, times ms.
+
+The session file (HDF5) is written atomically and carries
+``format = "artificial-person-mocap-session"`` and ``version = 1``; reading
+refuses anything else with a :class:`~engine.mocap.errors.SessionFileError`
+naming the file. Layout, version 1::
+
+    attrs      format, version, rate_hz (frames per second), source, units = "mm"
+    markers    (M,) str      marker names: MPEG-4 feature point ids ("8.3") or the file's own labels
+    positions  (F, M, 3) f8  mm, head motion removed, NaN where missing
+    raw        (F, M, 3) f8  mm, as read from the file (no filling, no alignment), NaN where missing
+    missing    (F, M) bool   still missing after gap filling (excluded from analysis)
+    filled     (F, M) bool   missing in the file, filled by the spline
+    alignment  (F, 4, 4) f8  per-frame rigid transform, row-vector convention: [raw, 1] · A = [positions, 1];
+                             NaN for frames that could not be aligned
+    reference  (R,) str      the head-fixed markers the alignment used
+    report     str           JSON: the gap report and import settings (see engine.mocap.gaps)
+    phones/start_ms, phones/end_ms (P,) f8 and phones/label (P,) str   optional phone labels
+
+>>> import numpy as np
+>>> s = Session(markers=["2.1", "8.1"], positions=np.zeros((3, 2, 3)), raw=np.zeros((3, 2, 3)), rate_hz=60.0,
+...             missing=np.zeros((3, 2), bool), alignment=np.tile(np.eye(4), (3, 1, 1)))
+>>> s.times_ms
+array([ 0.        , 16.66666667, 33.33333333])
+>>> s.n_frames, s.n_markers
+(3, 2)
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import h5py
+import numpy as np
+
+from .errors import MocapError, SessionFileError
+
+SESSION_FORMAT = "artificial-person-mocap-session"
+SESSION_VERSION = 1
+
+
+@dataclass
+class Session:
+    """Imported marker data (mm, ms). Arrays are validated on construction.
+
+    ``phones`` are ``(start_ms, end_ms, label)`` triples on the session's
+    clock, which starts at 0 ms on the first frame (:attr:`times_ms`).
+    """
+
+    markers: list[str]
+    positions: np.ndarray
+    """(F, M, 3) mm, head motion removed, NaN where missing."""
+    raw: np.ndarray
+    """(F, M, 3) mm as read from the file: no filling, no alignment; NaN where the file had a gap."""
+    rate_hz: float
+    missing: np.ndarray
+    """(F, M) bool, True where a marker is still missing after gap filling."""
+    alignment: np.ndarray
+    """(F, 4, 4) row-vector transforms, ``[raw, 1] · alignment[f] = [positions, 1]``; NaN where unaligned."""
+    phones: list[tuple[float, float, str]] = field(default_factory=list)
+    source: str = ""
+    report: dict = field(default_factory=dict)
+    filled: np.ndarray | None = None
+    """(F, M) bool, True where the file had a gap that the spline filled (None: nothing filled)."""
+    reference: list[str] = field(default_factory=list)
+    """The head-fixed markers the alignment used."""
+
+    def __post_init__(self):
+        self.markers = [str(m) for m in self.markers]
+        self.positions = np.asarray(self.positions, dtype=float)
+        self.raw = np.asarray(self.raw, dtype=float)
+        self.missing = np.asarray(self.missing, dtype=bool)
+        self.alignment = np.asarray(self.alignment, dtype=float)
+        self.rate_hz = float(self.rate_hz)
+        self.reference = [str(m) for m in self.reference]
+        self.phones = [(float(a), float(b), str(c)) for a, b, c in self.phones]
+        n_markers = len(self.markers)
+        if self.positions.ndim != 3 or self.positions.shape[1:] != (n_markers, 3):
+            raise MocapError(f"positions have shape {self.positions.shape}, expected (frames, {n_markers}, 3)")
+        n_frames = self.positions.shape[0]
+        if self.raw.shape != self.positions.shape:
+            raise MocapError(f"raw positions have shape {self.raw.shape}, expected {self.positions.shape}")
+        if self.missing.shape != (n_frames, n_markers):
+            raise MocapError(f"the missing mask has shape {self.missing.shape}, expected {(n_frames, n_markers)}")
+        if self.filled is None:
+            self.filled = np.zeros((n_frames, n_markers), bool)
+        self.filled = np.asarray(self.filled, dtype=bool)
+        if self.filled.shape != (n_frames, n_markers):
+            raise MocapError(f"the filled mask has shape {self.filled.shape}, expected {(n_frames, n_markers)}")
+        if self.alignment.shape != (n_frames, 4, 4):
+            raise MocapError(f"the alignment has shape {self.alignment.shape}, expected {(n_frames, 4, 4)}")
+        if not (np.isfinite(self.rate_hz) and self.rate_hz > 0):
+            raise MocapError(f"the frame rate must be a positive number of frames per second, not {self.rate_hz}")
+        if len(set(self.markers)) != n_markers:
+            raise MocapError("marker names must be unique")
+        unknown = [m for m in self.reference if m not in self.markers]
+        if unknown:
+            raise MocapError(f"reference markers {', '.join(unknown)} are not among the session's markers")
+
+    @property
+    def n_frames(self) -> int:
+        return int(self.positions.shape[0])
+
+    @property
+    def n_markers(self) -> int:
+        return len(self.markers)
+
+    @property
+    def times_ms(self) -> np.ndarray:
+        """(F,) time of every frame in ms; the first frame is at 0 ms."""
+        return np.arange(self.n_frames) * (1000.0 / self.rate_hz)
+
+    def marker_index(self, name: str) -> int:
+        """Column of marker ``name`` in the arrays; a :class:`MocapError` if the session lacks it."""
+        try:
+            return self.markers.index(name)
+        except ValueError:
+            raise MocapError(f"the session has no marker '{name}' (it has {', '.join(self.markers)})") from None
+
+
+# -- the file ----------------------------------------------------------------------
+
+def save_session(session: Session, path: str | Path) -> None:
+    """Write ``session`` to an HDF5 file atomically (temporary file beside ``path``, then rename)."""
+    path = Path(path)
+    folder = path.parent if str(path.parent) else Path(".")
+    if not folder.is_dir():
+        raise SessionFileError("cannot write: the folder does not exist", file=path)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
+    os.close(fd)
+    try:
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)
+        _write(session, tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except FileNotFoundError:
+            pass
+        raise
+
+
+def _write(s: Session, tmp: str) -> None:
+    text = h5py.string_dtype()
+    with h5py.File(tmp, "w", track_order=True) as f:
+        f.attrs["format"] = SESSION_FORMAT
+        f.attrs["version"] = SESSION_VERSION
+        f.attrs["rate_hz"] = s.rate_hz
+        f.attrs["source"] = s.source
+        f.attrs["units"] = "mm"
+        f.create_dataset("markers", data=np.array(s.markers, dtype=object), dtype=text)
+        big = {"compression": "gzip", "shuffle": True} if s.positions.size > 4096 else {}
+        f.create_dataset("positions", data=s.positions, **big)
+        f.create_dataset("raw", data=s.raw, **big)
+        f.create_dataset("missing", data=s.missing, **big)
+        f.create_dataset("filled", data=s.filled, **big)
+        f.create_dataset("alignment", data=s.alignment, **big)
+        f.create_dataset("reference", data=np.array(s.reference, dtype=object), dtype=text)
+        f.create_dataset("report", data=json.dumps(s.report, sort_keys=True), dtype=text)
+        g = f.create_group("phones")
+        g.create_dataset("start_ms", data=np.array([p[0] for p in s.phones], float))
+        g.create_dataset("end_ms", data=np.array([p[1] for p in s.phones], float))
+        g.create_dataset("label", data=np.array([p[2] for p in s.phones], dtype=object), dtype=text)
+
+
+def load_session(path: str | Path) -> Session:
+    """Read a session file, checking its format, version and every array's shape."""
+    path = Path(path)
+    if not path.exists():
+        raise SessionFileError("no such file", file=path)
+    try:
+        f = h5py.File(path, "r")
+    except OSError:
+        raise SessionFileError("not a readable HDF5 file (is it a session written by 'mocap import'?)",
+                               file=path) from None
+    with f:
+        fmt = _text(f.attrs.get("format"))
+        if fmt != SESSION_FORMAT:
+            raise SessionFileError(f"not a motion-capture session (format attribute is {fmt!r}, "
+                                   f"expected '{SESSION_FORMAT}')", file=path)
+        try:
+            version = int(f.attrs.get("version"))
+        except (TypeError, ValueError):
+            raise SessionFileError("the session has no valid 'version' attribute", file=path) from None
+        if version != SESSION_VERSION:
+            raise SessionFileError(f"session format version {version} is not one this program reads "
+                                   f"(it reads version {SESSION_VERSION})", file=path)
+        reader = _Reader(f, path)
+        markers = reader.strings("markers")
+        positions = reader.array("positions", float, 3)
+        n_frames, n_markers = positions.shape[0], len(markers)
+        shape = (n_frames, n_markers)
+        try:
+            rate = float(f.attrs["rate_hz"])
+        except (KeyError, TypeError, ValueError):
+            raise SessionFileError("the session has no valid 'rate_hz' attribute", file=path) from None
+        try:
+            report = json.loads(_text(reader.scalar("report")) or "{}")
+        except json.JSONDecodeError as exc:
+            raise SessionFileError(f"the '/report' dataset is not valid JSON ({exc.msg})", file=path) from None
+        phones = []
+        if "phones" in f:
+            starts = reader.array("phones/start_ms", float, 1)
+            ends = reader.array("phones/end_ms", float, 1)
+            labels = reader.strings("phones/label")
+            if not (len(starts) == len(ends) == len(labels)):
+                raise SessionFileError("the phones/start_ms, phones/end_ms and phones/label datasets differ "
+                                       "in length", file=path)
+            phones = list(zip(starts.tolist(), ends.tolist(), labels))
+        try:
+            return Session(
+                markers=markers, positions=positions,
+                raw=reader.array("raw", float, 3, positions.shape),
+                rate_hz=rate,
+                missing=reader.array("missing", bool, 2, shape),
+                alignment=reader.array("alignment", float, 3, (n_frames, 4, 4)),
+                phones=phones, source=_text(f.attrs.get("source")) or "", report=report,
+                filled=reader.array("filled", bool, 2, shape) if "filled" in f else None,
+                reference=reader.strings("reference") if "reference" in f else [],
+            )
+        except SessionFileError:
+            raise
+        except MocapError as exc:
+            raise SessionFileError(f"inconsistent session: {exc.message}", file=path) from None
+
+
+class _Reader:
+    """Dataset access that turns every surprise into a :class:`SessionFileError` naming the dataset."""
+
+    def __init__(self, f: h5py.File, path: Path):
+        self.f, self.path = f, path
+
+    def _dataset(self, name: str) -> h5py.Dataset:
+        if name not in self.f:
+            raise SessionFileError(f"missing HDF5 dataset '/{name}'", file=self.path)
+        data = self.f[name]
+        if not isinstance(data, h5py.Dataset):
+            raise SessionFileError(f"'/{name}' is not a dataset", file=self.path)
+        return data
+
+    def array(self, name: str, dtype, ndim: int, shape: tuple | None = None) -> np.ndarray:
+        data = self._dataset(name)
+        try:
+            arr = np.asarray(data[()]).astype(dtype)
+        except (TypeError, ValueError):
+            raise SessionFileError(f"dataset '/{name}' does not hold numbers", file=self.path) from None
+        if arr.ndim != ndim or (shape is not None and arr.shape != tuple(shape)):
+            want = tuple(shape) if shape is not None else f"{ndim} dimensions"
+            raise SessionFileError(f"dataset '/{name}' has shape {arr.shape}, expected {want}", file=self.path)
+        return arr
+
+    def strings(self, name: str) -> list[str]:
+        data = self._dataset(name)
+        arr = np.asarray(data[()])
+        if arr.ndim != 1:
+            raise SessionFileError(f"dataset '/{name}' has shape {arr.shape}, expected a list of names",
+                                   file=self.path)
+        return [_text(v) for v in arr.tolist()]
+
+    def scalar(self, name: str):
+        return self._dataset(name)[()]
+
+
+def _text(value) -> str | None:
+    if isinstance(value, bytes):
+        return value.decode("utf-8", errors="replace")
+    if value is None:
+        return None
+    return str(value)
