@@ -1,0 +1,79 @@
+"""The ``export-gltf`` verb: the head with its parameters as glTF 2.0 morph targets (docs/export.md).
+
+>>> from engine.cli import main
+>>> main(["export-gltf", "-o", "head.glb"])                                      # doctest: +SKIP
+>>> main(["export-gltf", "--parameters", "jaw_open,brow_raise", "--no-arkit",
+...       "--value", "jaw_open=0.5", "-o", "head.gltf"])                          # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+from pathlib import Path
+
+from .errors import UserError
+
+
+def add_verbs(verbs, add_model_option) -> None:
+    """Add ``export-gltf`` to the CLI's sub-parsers."""
+    p = verbs.add_parser("export-gltf", help="write the model with its parameters as glTF 2.0 morph targets "
+                                             "(Blender, Unity, Unreal, three.js)")
+    add_model_option(p)
+    p.add_argument("--parameters", default=None, type=_names, metavar="NAME,...",
+                   help="parameters to export as morph targets, comma-separated (default: all; '' for none)")
+    p.add_argument("--value", dest="values", action="extend", nargs="+", type=_setting, default=[],
+                   metavar="NAME=VALUE",
+                   help="the value a parameter's target shows at weight 1 (default 1, or the range's end)")
+    arkit = p.add_mutually_exclusive_group()
+    arkit.add_argument("--arkit", dest="arkit", action="store_true", default=None,
+                       help="add the ARKit-52 targets from the poses file (default: with the shipped head only)")
+    arkit.add_argument("--no-arkit", dest="arkit", action="store_false", help="leave the ARKit-52 targets out")
+    p.add_argument("--poses", default=None, metavar="POSES.h5",
+                   help="file of displacement fields for --arkit and --pose-group "
+                        "(default: the shipped head's reference-poses.h5)")
+    p.add_argument("--pose-group", dest="pose_groups", action="append", default=[], metavar="GROUP",
+                   help="also export every pose of this group of the poses file, e.g. expression_units")
+    p.add_argument("--no-target-normals", dest="target_normals", action="store_false",
+                   help="leave out the targets' normal changes (about half the file size)")
+    p.add_argument("-o", "--output", required=True, metavar="OUT.(glb|gltf)",
+                   help="binary .glb, or .gltf with its buffer beside it as .bin")
+    p.set_defaults(run=run_export_gltf)
+
+
+def _names(text: str) -> list[str]:
+    return [n.strip() for n in text.split(",") if n.strip()]
+
+
+def _setting(text: str) -> tuple[str, float]:
+    from .cli import _setting as setting
+
+    return setting(text)
+
+
+def run_export_gltf(args: argparse.Namespace) -> int:
+    from .cli import _load, _require_suffix
+    from .gltf_export import SUFFIXES, export_gltf, parameter_targets, pose_targets
+    from .paths import default_model_path
+
+    out = _require_suffix(args.output, SUFFIXES, "export-gltf")
+    model = _load(args.model)
+    shipped = args.model is None or Path(args.model).resolve() == default_model_path().resolve()
+    values = dict(args.values)
+    targets = parameter_targets(model, args.parameters, values)
+    groups = list(args.pose_groups)
+    if (shipped if args.arkit is None else args.arkit) and "arkit" not in groups:
+        groups.insert(0, "arkit")
+    if groups and args.poses is None and not shipped:
+        raise UserError("the shipped poses fit the shipped head only: give --poses POSES.h5 for this model")
+    for group in groups:
+        targets += pose_targets(model, args.poses, group)
+    mesh = export_gltf(model, out, targets, target_normals=args.target_normals)
+    size = out.stat().st_size + (out.with_suffix(".bin").stat().st_size if out.suffix.lower() == ".gltf" else 0)
+    print(f"wrote {out}: {len(mesh.primitives)} parts, {mesh.n_points} vertices, "
+          f"{len(mesh.target_names)} morph targets, {_megabytes(size)}")
+    return 0
+
+
+def _megabytes(size: int) -> str:
+    return f"{size / 1e6:.1f} MB" if size >= 1e5 else f"{math.ceil(size / 1e3)} kB"
