@@ -1,0 +1,339 @@
+"""Synthetic motion capture with a known answer: virtual markers on the default head (§3.1.1).
+
+No openly licensed lip and jaw speech recordings exist that we could ship, so
+the tests (and anyone trying the pipeline) use recordings made up from the
+default head itself:
+
+1. phones (from Festival, or given) → articulatory tracks of the head's own
+   parameters (``jaw_open``, ``mouth_widen``, ``lip_protrude``,
+   ``upper_lip_raise``, ``lower_lip_raise``) through the phone → target table
+   ``library/articulation/finnish.phones`` with Cohen–Massaro coarticulation
+   (:func:`engine.speech.coarticulation.articulation_tracks`), sampled at the
+   capture rate (60 fps, as the paper's MacReflex);
+2. the head deformed by those values (exactly, through the model's own
+   deformation) and read at its landmark vertices: one virtual marker per
+   MPEG-4 feature point — the lip contour 8.1–8.8, the chin 2.1 and 2.10, and
+   head-fixed reference points on the nose (9.x) and at the eye corners (3.x);
+3. smooth random rigid head motion, Gaussian marker noise, single-frame
+   dropouts and gaps (NaN), as an optical tracker gives them.
+
+What comes back (:class:`SyntheticRecording`) holds the observed markers and
+the ground truth: the clean articulation-only markers, the generating tracks,
+the per-marker displacement basis (the derivative of every marker position
+with respect to every parameter at rest, mm per unit) and the head motion.
+With ``linear=True`` the markers are exactly ``rest + tracks · basis``, so the
+motion lies in a known 5-dimensional subspace; by default they are the head's
+real deformation, in which ``jaw_open`` is a rotation (a slightly curved
+path) and the lower lip rides on the jaw.
+
+Lengths are mm, times ms; frame ``i`` is at ``i · 1000 / rate_hz`` ms.
+
+>>> from engine.speech.synthesis import Segment
+>>> phones = [Segment("#", 0, 100), Segment("p", 100, 180), Segment("a", 180, 330), Segment("#", 330, 430)]
+>>> rec = synthesize_recording(phones=phones, noise_mm=0, head_motion=False, gaps=False)
+>>> rec.positions.shape == (rec.n_frames, len(rec.markers), 3), rec.parameters[0]
+(True, 'jaw_open')
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import UserError
+
+#: Markers of the lip contour and the jaw: what the paper analysed (§3.1.1, "8.x and 2.1").
+ARTICULATION_MARKERS = ("2.1", "8.1", "8.2", "8.3", "8.4", "8.5", "8.6", "8.7", "8.8")
+#: Head-fixed markers for removing head motion (the paper's 9.x; eye corners instead of 20.x).
+REFERENCE_MARKERS = ("9.1", "9.2", "9.3", "9.4", "9.5", "9.15", "3.7", "3.8", "3.11", "3.12")
+#: The default marker set: articulation markers, the chin boss and the reference markers.
+DEFAULT_MARKERS = ARTICULATION_MARKERS + ("2.10",) + REFERENCE_MARKERS
+#: Sentences with every Finnish vowel and most consonants, bilabial closures and rounding.
+DEFAULT_TEXT = "Papu ja kala. Hyvää päivää, mitä kuuluu? Öljyä ja syötävää."
+
+
+@dataclass
+class SyntheticRecording:
+    """A made-up capture session and the truth behind it (mm, ms)."""
+
+    markers: list[str]
+    positions: np.ndarray
+    """(F, M, 3) observed: articulation + head motion + noise, NaN where missing."""
+    rate_hz: float
+    phones: list[tuple[float, float, str]]
+    """(start_ms, end_ms, label) on the recording's clock (frame 0 at 0 ms)."""
+    missing: np.ndarray
+    """(F, M) bool, True where a marker dropped out."""
+    clean: np.ndarray
+    """(F, M, 3) articulation only: no head motion, no noise, no gaps."""
+    rest: np.ndarray
+    """(M, 3) marker positions on the head at rest."""
+    parameters: list[str]
+    """The articulatory parameters driven (those that move a marker)."""
+    tracks: np.ndarray
+    """(F, P) the generating parameter values."""
+    basis: np.ndarray
+    """(P, M, 3) marker displacement per unit of each parameter at rest, mm (the true subspace)."""
+    head_rotation: np.ndarray
+    """(F, 3, 3) head rotation; observed = pivot + R (x − pivot) + t, column vectors."""
+    head_translation: np.ndarray
+    """(F, 3) head translation, mm."""
+    head_pivot: np.ndarray
+    """(3,) centre of the head rotation, mm."""
+    reference: list[str] = field(default_factory=list)
+    """The head-fixed markers among :attr:`markers` (for head-motion removal)."""
+    text: str = ""
+
+    @property
+    def n_frames(self) -> int:
+        return int(self.positions.shape[0])
+
+    @property
+    def times_ms(self) -> np.ndarray:
+        return np.arange(self.n_frames) * (1000.0 / self.rate_hz)
+
+    def marker_index(self, names) -> np.ndarray:
+        """Columns of the named markers."""
+        return np.array([self.markers.index(n) for n in names], dtype=np.int64)
+
+
+def synthesize_recording(text: str | None = None, *, phones=None, model=None, table=None,
+                         markers=DEFAULT_MARKERS, rate_hz: float = 60.0, linear: bool = False,
+                         head_motion: bool = True, head_rotation_deg: float = 3.0,
+                         head_translation_mm: float = 4.0, noise_mm: float = 0.2,
+                         gaps: bool = True, dropout_probability: float = 0.002,
+                         gaps_per_minute: float = 4.0, gap_frames: tuple[int, int] = (2, 30),
+                         long_gap_frames: int = 90, seed: int = 0, voice: str | None = None,
+                         synthesizer=None) -> SyntheticRecording:
+    """Make up a marker recording of ``text`` spoken by the default head.
+
+    Parameters
+    ----------
+    text : str, optional
+        Finnish text for Festival (default :data:`DEFAULT_TEXT` when ``phones``
+        is not given). Needs Festival with the Suopuhe voices.
+    phones : list of segments or ``(start_ms, end_ms, label)``, optional
+        Phone timings to use instead of running Festival (e.g. recorded from
+        an earlier run), ms.
+    model : engine.Model, optional
+        The head (default: the shipped default head). Markers sit on its
+        landmark vertices.
+    table : ArticulationTable, optional
+        Phone → target table (default ``library/articulation/finnish.phones``).
+    markers : sequence of landmark ids
+        Virtual markers, in this order (default :data:`DEFAULT_MARKERS`).
+    rate_hz : float
+        Frames per second (60, like the paper's MacReflex).
+    linear : bool
+        True: markers are exactly ``rest + Σ tracks_k · basis_k`` (a known
+        linear subspace). False (default): the head's real deformation.
+    head_motion : bool
+        Add smooth random rigid motion of the whole head: rotations of about
+        ``head_rotation_deg`` degrees and translations of about
+        ``head_translation_mm`` mm, a few tenths of a hertz.
+    noise_mm : float
+        Standard deviation of Gaussian marker noise per coordinate, mm.
+    gaps : bool
+        Add missing samples (NaN): isolated dropouts with probability
+        ``dropout_probability`` per marker and frame, gaps of ``gap_frames``
+        (min, max) frames at ``gaps_per_minute`` per marker, and one long gap
+        of ``long_gap_frames`` frames on one lip marker (too long to fill).
+    seed : int
+        One seed, one recording.
+
+    Raises :class:`UserError` for markers the model lacks or phones that are
+    empty, and :class:`~engine.speech.synthesis.SynthesisError` when Festival
+    is needed but missing.
+    """
+    from ..model_files import load_model
+    from ..speech.articulation import load_articulation
+    from ..speech.coarticulation import articulation_tracks
+
+    model = load_model() if model is None else model
+    table = load_articulation() if table is None else table
+    if not (np.isfinite(rate_hz) and rate_hz > 0):
+        raise UserError(f"the frame rate must be a positive number of frames per second, not {rate_hz}")
+    markers = [str(m) for m in markers]
+    unknown = [m for m in markers if m not in model.landmarks]
+    if unknown:
+        raise UserError(f"the model has no landmark for markers {', '.join(unknown)} "
+                        f"(it has {', '.join(sorted(model.landmarks))})")
+    if phones is None:
+        text = DEFAULT_TEXT if text is None else text
+        if synthesizer is None:
+            from ..speech.festival import FestivalSynthesizer
+            synthesizer = FestivalSynthesizer()
+        phones = synthesizer.synthesize(text, voice).phones
+    segments = _segments(phones)
+    if not segments:
+        raise UserError("no phones to articulate")
+
+    rng = np.random.default_rng(seed)
+    end_ms = segments[-1].end_ms
+    n_frames = int(np.floor(end_ms * rate_hz / 1000.0)) + 1
+    times = np.arange(n_frames) * (1000.0 / rate_hz)
+
+    sub = model_at_landmarks(model, markers)
+    names = [p for p in table.parameters if p in model.parameters]
+    all_tracks = articulation_tracks(segments, _Subtable(table, names), times)
+    basis_all = _jacobian(sub, names)
+    moving = [k for k in range(len(names)) if np.abs(basis_all[k]).max() > 1e-9]
+    parameters = [names[k] for k in moving]
+    tracks = all_tracks[:, moving]
+    basis = basis_all[moving]
+    rest = sub.vertices.copy()
+
+    if linear:
+        clean = rest[None] + np.einsum("fp,pmc->fmc", tracks, basis)
+    else:
+        deformer = sub.deformer()
+        order = {n: i for i, n in enumerate(sub.parameters.names)}
+        values = np.zeros((n_frames, len(order)))
+        for j, name in enumerate(parameters):
+            values[:, order[name]] = tracks[:, j]
+        clean = np.stack([deformer.deform(v) for v in values])
+
+    pivot = _head_pivot(model)
+    rotation = np.tile(np.eye(3), (n_frames, 1, 1))
+    translation = np.zeros((n_frames, 3))
+    if head_motion:
+        angles = _smooth_noise(rng, times, 3, head_rotation_deg)
+        rotation = _rotations(np.radians(angles))
+        translation = _smooth_noise(rng, times, 3, head_translation_mm)
+    observed = pivot + np.einsum("fij,fmj->fmi", rotation, clean - pivot) + translation[:, None, :]
+    if noise_mm > 0:
+        observed = observed + rng.normal(0.0, noise_mm, observed.shape)
+    missing = np.zeros(observed.shape[:2], dtype=bool)
+    if gaps:
+        missing = _dropouts(rng, n_frames, markers, rate_hz, dropout_probability, gaps_per_minute,
+                            gap_frames, long_gap_frames)
+    observed[missing] = np.nan
+
+    return SyntheticRecording(
+        markers=markers, positions=observed, rate_hz=float(rate_hz),
+        phones=[(s.start_ms, s.end_ms, s.label) for s in segments], missing=missing, clean=clean,
+        rest=rest, parameters=parameters, tracks=tracks, basis=basis, head_rotation=rotation,
+        head_translation=translation, head_pivot=pivot,
+        reference=[m for m in markers if m in REFERENCE_MARKERS], text=text or "")
+
+
+def model_at_landmarks(model, keys):
+    """A copy of ``model`` reduced to the vertices of the landmarks ``keys`` (in that order).
+
+    It deforms exactly like the full model at those vertices, in microseconds
+    instead of milliseconds: every influence region is cut down to them and
+    the parameter tree is kept whole. Its landmarks are ``keys`` → 0, 1, ….
+    """
+    keys = [str(k) for k in keys]
+    missing = [k for k in keys if k not in model.landmarks]
+    if missing:
+        raise UserError(f"the model has no landmark {', '.join(missing)}")
+    vertices = np.array([model.landmarks[k] for k in keys], dtype=np.int64)
+    return model_at_vertices(model, vertices, landmarks={k: i for i, k in enumerate(keys)})
+
+
+def model_at_vertices(model, vertices, landmarks=None):
+    """A copy of ``model`` reduced to the given vertex indices (no faces); see :func:`model_at_landmarks`.
+
+    A vertex listed twice appears twice, with the same weights.
+    """
+    from ..model import InfluenceRegion, Model
+
+    vertices = np.asarray(vertices, dtype=np.int64).reshape(-1)
+    regions = {}
+    for name, region in model.regions.items():
+        pos = np.searchsorted(region.indices, vertices)        # region indices are sorted
+        inside = pos < len(region.indices)
+        inside[inside] = region.indices[pos[inside]] == vertices[inside]
+        new_index, old = np.flatnonzero(inside), pos[inside]
+        displacements = None if region.displacements is None else region.displacements[old].reshape(-1, 3)
+        regions[name] = InfluenceRegion(new_index, region.weights[old] if len(old) else np.zeros(0), displacements)
+    return Model(model.vertices[vertices], np.zeros(0, dtype=np.int64), list(model.parts),
+                 model.vertex_part[vertices], model.parameters.copy(), regions, landmarks or {},
+                 name=f"{model.name} (markers)")
+
+
+# -- the pieces -----------------------------------------------------------------------
+
+class _Subtable:
+    """The articulation table restricted to the parameters the model has."""
+
+    def __init__(self, table, names):
+        self._table, self.parameters, self.exponent = table, list(names), table.exponent
+        self._columns = [table.parameters.index(n) for n in names]
+
+    def arrays(self, labels):
+        return tuple(a[:, self._columns] for a in self._table.arrays(labels))
+
+
+def _segments(phones):
+    from ..speech.synthesis import Segment
+
+    out = []
+    for p in phones:
+        if isinstance(p, Segment):
+            out.append(p)
+        elif hasattr(p, "label"):
+            out.append(Segment(str(p.label), float(p.start_ms), float(p.end_ms)))
+        else:
+            start, end, label = p[:3]
+            out.append(Segment(str(label), float(start), float(end)))
+    return out
+
+
+def _jacobian(sub, names, step: float = 1e-4) -> np.ndarray:
+    """(P, M, 3) derivative of the marker positions with respect to each parameter at rest (central)."""
+    out = []
+    for name in names:
+        plus = sub.deform({name: step})
+        minus = sub.deform({name: -step})
+        out.append((plus - minus) / (2 * step))
+    return np.array(out)
+
+
+def _head_pivot(model) -> np.ndarray:
+    """Where the head turns: the pivot of the head nod if the model has one, else the mesh centre."""
+    for name in ("head_nod", "head_turn", "head_tilt"):
+        if name in model.parameters and model.parameters[name].kind == "rotation":
+            return model.parameters[name].pivot.copy()
+    return model.vertices.mean(axis=0)
+
+
+def _smooth_noise(rng, times_ms, n: int, amplitude: float) -> np.ndarray:
+    """(F, n) smooth random signals: three sines per channel, 0.1–0.7 Hz, RMS ≈ ``amplitude``/√2."""
+    t = times_ms / 1000.0
+    out = np.zeros((len(t), n))
+    for j in range(n):
+        for _ in range(3):
+            f = rng.uniform(0.1, 0.7)
+            out[:, j] += rng.uniform(0.3, 1.0) * np.sin(2 * np.pi * f * t + rng.uniform(0, 2 * np.pi))
+    return amplitude * out / 1.5
+
+
+def _rotations(angles: np.ndarray) -> np.ndarray:
+    """(F, 3, 3) rotations R = Rz · Ry · Rx from (F, 3) angles in radians."""
+    cx, cy, cz = np.cos(angles).T
+    sx, sy, sz = np.sin(angles).T
+    zero, one = np.zeros_like(cx), np.ones_like(cx)
+    rx = np.stack([np.stack([one, zero, zero], -1), np.stack([zero, cx, -sx], -1), np.stack([zero, sx, cx], -1)], 1)
+    ry = np.stack([np.stack([cy, zero, sy], -1), np.stack([zero, one, zero], -1), np.stack([-sy, zero, cy], -1)], 1)
+    rz = np.stack([np.stack([cz, -sz, zero], -1), np.stack([sz, cz, zero], -1), np.stack([zero, zero, one], -1)], 1)
+    return rz @ ry @ rx
+
+
+def _dropouts(rng, n_frames, markers, rate_hz, probability, per_minute, gap_frames, long_gap) -> np.ndarray:
+    missing = rng.random((n_frames, len(markers))) < probability
+    minutes = n_frames / rate_hz / 60.0
+    lo, hi = gap_frames
+    for m in range(len(markers)):
+        for _ in range(rng.poisson(per_minute * minutes)):
+            length = int(rng.integers(lo, hi + 1))
+            start = int(rng.integers(0, max(1, n_frames - length)))
+            missing[start:start + length, m] = True
+    lips = [i for i, name in enumerate(markers) if name.startswith("8.")]
+    if long_gap > 0 and lips and n_frames > long_gap + 2:
+        m = int(rng.choice(lips))
+        start = int(rng.integers(1, n_frames - long_gap))
+        missing[start:start + long_gap, m] = True
+    return missing
