@@ -500,7 +500,7 @@ def _sign(pattern: np.ndarray, mean: np.ndarray) -> float:
     return -1.0 if _dominant(pattern, mean)[1] < 0 else 1.0
 
 
-_WORDS = {("down", 1): "lowering (jaw opening)", ("down", -1): "raising",
+_WORDS = {("down", 1): "lowering", ("down", -1): "raising",
           ("out", 1): "widening", ("out", -1): "narrowing (rounding)",
           ("forward", 1): "protrusion", ("forward", -1): "retraction"}
 
@@ -515,7 +515,10 @@ def describe_component(art: Articulation, k: int) -> str:
     the sign in :func:`multistage_pca`, so it is always positive there.
     """
     key, value = _dominant(art.components[k], art.mean)
-    return _WORDS[(key, 1 if value >= 0 else -1)]
+    word = _WORDS[(key, 1 if value >= 0 else -1)]
+    stage = int(art.stages[k])
+    guided_by_jaw = 0 < stage <= len(art.stage_markers) and "2.1" in art.stage_markers[stage - 1]
+    return f"jaw opening ({word})" if guided_by_jaw and key == "down" else word
 
 
 def _largest_motion(art: Articulation, k: int) -> str:
@@ -697,27 +700,39 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
     shape at ``+amplitude`` standard deviations, blue at ``−amplitude``, with
     a line from each mean marker to its ``+`` position. Both views use one
     scale (true mm), the front view with the subject's left on the right,
-    the side view with the face to the right. Returns the (H, W, 3) uint8
+    the side view with the face to the right. A component whose largest
+    motion would be too small to see is magnified, and its row says by how
+    much (``X5``). Returns the (H, W, 3) uint8
     image and, with ``path``, writes it as PNG.
     """
     from ..render import write_png
 
     views = (("FRONT", 0, 1), ("SIDE", 2, 1))
-    shapes = [art.mean] + [art.mean + s * amplitude * c for c in art.components for s in (1, -1)]
+    # Small components are drawn magnified (×2, ×5, ×10 …, shown in the row's title) so that
+    # their largest marker motion is at least 4 % of the picture's span.
+    span = max(float(np.ptp(art.mean, axis=0).max()), 1e-6)
+    gains = [_gain(amplitude * np.abs(c).max(), 0.04 * span) for c in art.components]
+    shapes = [art.mean] + [art.mean + s * g * amplitude * c for c, g in zip(art.components, gains) for s in (1, -1)]
     pts = np.concatenate(shapes)
     n_rows = art.n_components
-    width, height = 2 * PANEL, n_rows * (PANEL + HEADER) + HEADER
+    width, height = 2 * PANEL, n_rows * (PANEL + HEADER) + 2 * HEADER
     image = np.full((height, width, 3), 255, dtype=np.uint8)
     extent = max(float(np.ptp(pts, axis=0).max()), 1e-6)
     scale = 0.8 * PANEL / extent
-    for col, (title, ax, ay) in enumerate(views):
-        _text_at(image, title, col * PANEL + PANEL // 2 - 3 * len(title), 6, (0, 0, 0))
     grey, red, blue = (150, 150, 150), (210, 30, 30), (30, 60, 210)
+    _text_at(image, "GREY MEAN", 8, 4, grey)
+    _text_at(image, f"RED +{amplitude:g} SD", 140, 4, red)
+    _text_at(image, f"BLUE -{amplitude:g} SD", 290, 4, blue)
+    for col, (title, ax, ay) in enumerate(views):
+        _text_at(image, title, col * PANEL + PANEL // 2 - 6 * len(title) // 2, HEADER + 4, (0, 0, 0))
     contour = [art.markers.index(m) for m in LIP_CONTOUR if m in art.markers]
     for k in range(n_rows):
-        top = HEADER + k * (PANEL + HEADER)
+        top = 2 * HEADER + k * (PANEL + HEADER)
         label = f"PC{k + 1}  STAGE {art.stages[k]}  {100 * art.explained_variance_ratio[k]:.1f}%"
+        if gains[k] != 1:
+            label += f"  X{gains[k]:g}"
         _text_at(image, label, 8, top + 6, (0, 0, 0))
+        shown = gains[k] * amplitude * art.components[k]
         for col, (_, ax, ay) in enumerate(views):
             left = col * PANEL
             centre = np.array([pts[:, ax].min() + pts[:, ax].max(), pts[:, ay].min() + pts[:, ay].max()]) / 2
@@ -728,8 +743,8 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
 
             _rect(image, left, top + HEADER, PANEL, PANEL - 2, (225, 225, 225))
             mean_px = to_px(art.mean)
-            plus_px = to_px(art.mean + amplitude * art.components[k])
-            minus_px = to_px(art.mean - amplitude * art.components[k])
+            plus_px = to_px(art.mean + shown)
+            minus_px = to_px(art.mean - shown)
             for shape, colour in ((mean_px, grey), (minus_px, blue), (plus_px, red)):
                 if len(contour) > 1:
                     for a, b in zip(contour[:-1], contour[1:]):
@@ -742,6 +757,18 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
     if path is not None:
         write_png(path, image)
     return image
+
+
+def _gain(largest: float, wanted: float) -> float:
+    """1, or the smallest of 2, 5, 10, 20, 50 … that makes ``largest`` at least ``wanted``."""
+    if largest <= 0 or largest >= wanted:
+        return 1.0
+    for exponent in range(0, 7):
+        for step in (1, 2, 5):
+            gain = step * 10.0 ** exponent
+            if gain > 1 and largest * gain >= wanted:
+                return gain
+    return 1e6
 
 
 def _rect(image, x, y, w, h, colour) -> None:
@@ -784,6 +811,10 @@ _GLYPHS = {
     "N": "10001 11001 10101 10011 10001 10001 10001", "I": "01110 00100 00100 00100 00100 00100 01110",
     "D": "11110 10001 10001 10001 10001 10001 11110", ".": "00000 00000 00000 00000 00000 01100 01100",
     "%": "11000 11001 00010 00100 01000 10011 00011", " ": "00000 00000 00000 00000 00000 00000 00000",
+    "B": "11110 10001 10001 11110 10001 10001 11110", "L": "10000 10000 10000 10000 10000 10000 11111",
+    "U": "10001 10001 10001 10001 10001 10001 01110", "M": "10001 11011 10101 10101 10001 10001 10001",
+    "Y": "10001 10001 01010 00100 00100 00100 00100", "X": "00000 10001 01010 00100 01010 10001 00000",
+    "+": "00000 00100 00100 11111 00100 00100 00000", "-": "00000 00000 00000 11111 00000 00000 00000",
 }
 
 
