@@ -101,11 +101,12 @@ def build_parser() -> argparse.ArgumentParser:
                    help="multiply coordinates by S to get mm (default 1: the file is in mm)")
     p.set_defaults(run=_run_import_mesh)
 
-    from . import cli_commands, cli_export, cli_speech
+    from . import cli_commands, cli_export, cli_mocap, cli_speech
 
     cli_commands.add_verbs(verbs, _add_model_option, _positive_number)
     cli_speech.add_verbs(verbs, _add_model_option, _positive_number, _size, VIEW_NAMES)
     cli_export.add_verbs(verbs, _add_model_option)
+    cli_mocap.add_verbs(verbs, _add_model_option, _positive_number)
     return parser
 
 

@@ -1,0 +1,95 @@
+"""TRC marker files (Motion Analysis; the format OpenSim reads), tab-separated::
+
+    PathFileType  4  (X/Y/Z)  take1.trc
+    DataRate  CameraRate  NumFrames  NumMarkers  Units  OrigDataRate  OrigDataStartFrame  OrigNumFrames
+    60        60          600        32          mm     60            1                   600
+    Frame#  Time  name1        name2 ...
+                  X1  Y1  Z1   X2  Y2  Z2 ...
+    (an optional blank line)
+    1  0.000  x  y  z  x  y  z ...
+
+DataRate, NumFrames, NumMarkers and Units (mm, cm or m) are required. A
+missing sample is empty cells (or NaN); a row may leave out the empty cells
+of missing markers at its end.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from .errors import MarkerFileError
+from .readers import Recording, nan_partial_samples, parse_number, parse_rows, read_text_lines, unit_scale
+
+REQUIRED_KEYS = ("DataRate", "NumFrames", "NumMarkers", "Units")
+
+
+def read_trc(path: str | Path) -> Recording:
+    """Read a TRC file; positions in mm, empty cells as NaN."""
+    path = Path(path)
+    lines = read_text_lines(path)
+    if not lines or not lines[0].strip().lower().startswith("pathfiletype"):
+        raise MarkerFileError("not a TRC file: the first line must start with PathFileType", file=path, line=1)
+    if len(lines) < 5:
+        raise MarkerFileError("the TRC header ends early: it needs the key line, the value line, the marker "
+                              "names and the X1 Y1 Z1 line (truncated?)", file=path, line=len(lines))
+    keys = _split(lines[1])
+    values = _split(lines[2])
+    if len(values) < len(keys):
+        raise MarkerFileError(f"{len(values)} header values for {len(keys)} header keys on line 2", file=path,
+                              line=3)
+    header = dict(zip(keys, values))
+    missing = [k for k in REQUIRED_KEYS if k not in header]
+    if missing:
+        raise MarkerFileError(f"the TRC header lacks {', '.join(missing)}", file=path, line=2)
+    rate = parse_number(header["DataRate"], "DataRate", path, 3)
+    if not (np.isfinite(rate) and rate > 0):
+        raise MarkerFileError(f"DataRate must be a positive frame rate, not {header['DataRate']}", file=path, line=3)
+    n_frames = _whole(header["NumFrames"], "NumFrames", path)
+    n_markers = _whole(header["NumMarkers"], "NumMarkers", path)
+    scale = unit_scale(header["Units"], path, line=3)
+
+    names = [c.strip() for c in lines[3].split("\t")[2:] if c.strip()]
+    if len(names) != n_markers:
+        raise MarkerFileError(f"the marker-name line lists {len(names)} markers but NumMarkers is {n_markers}",
+                              file=path, line=4)
+    duplicates = sorted({n for n in names if names.count(n) > 1})
+    if duplicates:
+        raise MarkerFileError(f"marker name(s) {', '.join(duplicates)} appear more than once", file=path, line=4)
+    axes = [c.strip() for c in lines[4].split("\t") if c.strip()]
+    if len(axes) != 3 * n_markers:
+        raise MarkerFileError(f"the X1 Y1 Z1 line has {len(axes)} coordinate names for {n_markers} markers",
+                              file=path, line=5)
+
+    data = lines[5:]
+    tab = any("\t" in ln for ln in data[:5])
+    n_columns = 2 + 3 * n_markers
+    ends_with_newline = path.read_bytes()[-1:] in (b"\n", b"\r")
+    table = parse_rows(data, 6, n_columns, path, delimiter="\t" if tab else None, empty_is_missing=True,
+                       short_rows_at=3, last_line_complete=ends_with_newline)
+    if len(table) != n_frames:
+        last = len(lines)
+        if len(table) < n_frames:
+            raise MarkerFileError(f"the file ends after {len(table)} frames but NumFrames is {n_frames} "
+                                  "(truncated?)", file=path, line=last)
+        raise MarkerFileError(f"{len(table)} frames of data but NumFrames is {n_frames}", file=path, line=last)
+    positions = nan_partial_samples(table[:, 2:].reshape(n_frames, n_markers, 3) * scale)
+    start_ms = 1000.0 * float(table[0, 1]) if n_frames and np.isfinite(table[0, 1]) else 0.0
+    return Recording(labels=names, positions=positions, rate_hz=rate, source=path.name, format="trc",
+                     units=header["Units"].strip(), start_ms=start_ms)
+
+
+def _split(line: str) -> list[str]:
+    cells = line.split("\t") if "\t" in line else line.split()
+    return [c.strip() for c in cells if c.strip()]
+
+
+def _whole(text: str, key: str, path: Path) -> int:
+    try:
+        n = int(float(text))
+    except ValueError:
+        raise MarkerFileError(f"{key} '{text}' is not a whole number", file=path, line=3) from None
+    if n < 0 or n != float(text):
+        raise MarkerFileError(f"{key} '{text}' is not a whole number", file=path, line=3)
+    return n
