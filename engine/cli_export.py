@@ -2,6 +2,7 @@
 
 >>> from engine.cli import main
 >>> main(["export-gltf", "-o", "head.glb"])                                      # doctest: +SKIP
+>>> main(["export-gltf", "--skeleton", "-o", "rigged.glb"])                      # doctest: +SKIP
 >>> main(["export-gltf", "--parameters", "jaw_open,brow_raise", "--no-arkit",
 ...       "--value", "jaw_open=0.5", "-o", "head.gltf"])                          # doctest: +SKIP
 """
@@ -34,6 +35,9 @@ def add_verbs(verbs, add_model_option) -> None:
                         "(default: the shipped head's reference-poses.h5)")
     p.add_argument("--pose-group", dest="pose_groups", action="append", default=[], metavar="GROUP",
                    help="also export every pose of this group of the poses file, e.g. expression_units")
+    p.add_argument("--skeleton", action="store_true",
+                   help="export the rigid group-1 parameters (head, jaw, eyes) as joints of a skeleton "
+                        "instead of morph targets: exact at every value, and leaves ride on them as here")
     p.add_argument("--no-target-normals", dest="target_normals", action="store_false",
                    help="leave out the targets' normal changes (about half the file size)")
     p.add_argument("-o", "--output", required=True, metavar="OUT.(glb|gltf)",
@@ -53,14 +57,18 @@ def _setting(text: str) -> tuple[str, float]:
 
 def run_export_gltf(args: argparse.Namespace) -> int:
     from .cli import _load, _require_suffix
-    from .gltf_export import SUFFIXES, export_gltf, parameter_targets, pose_targets
+    from .gltf_export import SUFFIXES, export_gltf, parameter_targets, pose_targets, skeleton_parameters
     from .paths import default_model_path
 
     out = _require_suffix(args.output, SUFFIXES, "export-gltf")
     model = _load(args.model)
     shipped = args.model is None or Path(args.model).resolve() == default_model_path().resolve()
     values = dict(args.values)
-    targets = parameter_targets(model, args.parameters, values)
+    names = args.parameters
+    if names is None and args.skeleton:
+        joints = set(skeleton_parameters(model))
+        names = [name for name, _ in model.parameters.depth_first() if name not in joints]
+    targets = parameter_targets(model, names, values)
     groups = list(args.pose_groups)
     if (shipped if args.arkit is None else args.arkit) and "arkit" not in groups:
         groups.insert(0, "arkit")
@@ -68,10 +76,11 @@ def run_export_gltf(args: argparse.Namespace) -> int:
         raise UserError("the shipped poses fit the shipped head only: give --poses POSES.h5 for this model")
     for group in groups:
         targets += pose_targets(model, args.poses, group)
-    mesh = export_gltf(model, out, targets, target_normals=args.target_normals)
+    mesh = export_gltf(model, out, targets, target_normals=args.target_normals, skeleton=args.skeleton)
     size = out.stat().st_size + (out.with_suffix(".bin").stat().st_size if out.suffix.lower() == ".gltf" else 0)
     print(f"wrote {out}: {len(mesh.primitives)} parts, {mesh.n_points} vertices, "
-          f"{len(mesh.target_names)} morph targets, {_megabytes(size)}")
+          f"{len(mesh.target_names)} morph targets"
+          + (f", {len(mesh.skin.names)} joints" if mesh.skin is not None else "") + f", {_megabytes(size)}")
     return 0
 
 

@@ -43,7 +43,7 @@ GLB_MAGIC, GLB_JSON, GLB_BIN = 0x46546C67, 0x4E4F534A, 0x004E4942
 SUFFIXES = (".glb", ".gltf")
 POSES_FORMAT = "artificial-person-poses"
 
-_FLOAT, _USHORT, _UINT = 5126, 5123, 5125
+_FLOAT, _UBYTE, _USHORT, _UINT = 5126, 5121, 5123, 5125
 _COMPONENTS = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16, 5125: np.uint32, 5126: np.float32}
 _WIDTHS = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT2": 4, "MAT3": 9, "MAT4": 16}
 _ARRAY_BUFFER, _ELEMENT_ARRAY_BUFFER = 34962, 34963
@@ -183,7 +183,7 @@ class _Buffer:
     def __init__(self):
         self.chunks, self.length, self.views, self.accessors = [], 0, [], []
 
-    def add(self, array: np.ndarray, target: int | None, bounds: bool = True) -> int:
+    def add(self, array: np.ndarray, target: int | None, bounds: bool = True, kind: str | None = None) -> int:
         array = np.ascontiguousarray(array)
         data = array.astype(array.dtype.newbyteorder("<"), copy=False).tobytes()
         view = {"buffer": 0, "byteOffset": self.length, "byteLength": len(data)}
@@ -193,10 +193,10 @@ class _Buffer:
         pad = -len(data) % 4
         self.chunks.append(data + b"\0" * pad)
         self.length += len(data) + pad
-        component = {np.dtype(np.float32): _FLOAT, np.dtype(np.uint16): _USHORT,
+        component = {np.dtype(np.float32): _FLOAT, np.dtype(np.uint8): _UBYTE, np.dtype(np.uint16): _USHORT,
                      np.dtype(np.uint32): _UINT}[array.dtype]
         accessor = {"bufferView": len(self.views) - 1, "componentType": component, "count": int(array.shape[0]),
-                    "type": "SCALAR" if array.ndim == 1 else f"VEC{array.shape[1]}"}
+                    "type": kind or ("SCALAR" if array.ndim == 1 else f"VEC{array.shape[1]}")}
         if bounds and len(array):
             flat = array.reshape(len(array), -1)
             # float32 values written as Python floats: the JSON numbers round-trip to the same float32
@@ -213,12 +213,15 @@ def _number(v):
     return int(v) if isinstance(v, np.integer) else float(v)
 
 
-def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bool = True) -> tuple[dict, bytes]:
+def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bool = True,
+                  skeleton: bool = False) -> tuple[dict, bytes]:
     """The glTF JSON document (without ``buffers[0].uri``) and its binary buffer.
 
     Positions and displacements are scaled from mm to metres. ``target_normals``
     adds each target's change of the smooth normals (renderers that shade
     morphs with them, e.g. three.js and Unity, then light a turned head right).
+    ``skeleton`` exports the rigid group-1 parameters as joints instead (see
+    :func:`skeleton_parameters`); their morph targets must then be left out.
     """
     from .render import _PartLayout, part_material
 
@@ -230,6 +233,10 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
     for t in targets:
         if np.shape(t.displacements) != (model.n_vertices, 3) or not np.all(np.isfinite(t.displacements)):
             raise UserError(f"morph target '{t.name}': expected {model.n_vertices}×3 finite displacements")
+    rig = _Rig(model) if skeleton else None
+    for t in targets:
+        if rig is not None and t.source == "parameter" and t.name in rig.names:
+            raise UserError(f"parameter '{t.name}' is a joint of the skeleton, so it cannot also be a morph target")
     layout = _PartLayout(model)
     if not layout.parts:
         raise UserError("the model has no polygons to export")
@@ -256,6 +263,9 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
         if rgb is not None:
             attributes["COLOR_0"] = buf.add(_srgb_to_linear(rgb / 255.0).astype(np.float32), _ARRAY_BUFFER)
         attributes[MODEL_VERTEX] = buf.add(used.astype(np.float32), _ARRAY_BUFFER)
+        if rig is not None:
+            attributes["JOINTS_0"] = buf.add(rig.joints[used], _ARRAY_BUFFER, bounds=False)
+            attributes["WEIGHTS_0"] = buf.add(rig.weights[used], _ARRAY_BUFFER, bounds=False)
         triangles = np.asarray(_triangles(layout, k), dtype=np.uint16 if stop - start < 65535 else np.uint32)
         primitive = {"attributes": attributes, "indices": buf.add(triangles.reshape(-1), _ELEMENT_ARRAY_BUFFER,
                                                                   bounds=False),
@@ -283,16 +293,141 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
         mesh["extras"] = {"targetNames": names, "targets": [t.metadata() for t in targets]}
     from . import __version__
 
+    nodes, roots = [{"name": model.name, "mesh": 0}], [0]
+    skins = []
+    if rig is not None:
+        nodes[0]["skin"] = 0
+        roots.append(len(nodes))
+        skins.append(rig.skin(nodes, buf))
     data = buf.data()
     document = {
         "asset": {"version": "2.0", "generator": f"Artificial Person {__version__}",
                   "extras": {"model": model.name, "description": model.description, "units": "metres"}},
-        "scene": 0, "scenes": [{"name": model.name, "nodes": [0]}],
-        "nodes": [{"name": model.name, "mesh": 0}],
-        "meshes": [mesh], "materials": materials,
+        "scene": 0, "scenes": [{"name": model.name, "nodes": roots}],
+        "nodes": nodes, "meshes": [mesh], "materials": materials,
         "accessors": buf.accessors, "bufferViews": buf.views, "buffers": [{"byteLength": len(data)}],
     }
+    if skins:
+        document["skins"] = skins
     return document, data
+
+
+def skeleton_parameters(model) -> list[str]:
+    """The parameters a skeleton exports as joints: the rigid group-1 (non-leaf) ones, in tree order."""
+    tree = model.parameters
+    return [name for name, _ in tree.depth_first() if tree.group(name) == 1]
+
+
+class _Rig:
+    """Group-1 parameters as glTF joints: a ``root`` joint (vertices no rigid parameter carries),
+    then one joint per parameter, nested as the parameter tree.
+
+    A joint rests at its pivot (translations: at the origin) with its local +X
+    along the rotation axis (translation direction), so a parameter value is a
+    turn about, or a slide along, the joint's own X. Each joint's skinning
+    matrix ``G · G_rest⁻¹`` is then the engine's propagated ``T'`` (column
+    convention ``T'_c = T'_parent · T_c``), and the skin weights are the
+    engine's normalised group-1 weights (at most four per vertex: more are cut
+    to the four largest and renormalised).
+    """
+
+    def __init__(self, model):
+        tree = model.parameters
+        self.names = skeleton_parameters(model)
+        for name in self.names:
+            if tree[name].default != 0:
+                raise UserError(f"parameter '{name}' rests at {tree[name].default:g}: a skeleton needs "
+                                "its rigid parameters to rest at 0")
+        n = model.n_vertices
+        w = np.stack([model.regions[name].dense(n) for name in self.names], axis=1) if self.names \
+            else np.zeros((n, 0))
+        total = w.sum(axis=1)
+        w = np.hstack([(total == 0)[:, None].astype(float), np.divide(w, total[:, None], out=np.zeros_like(w),
+                                                                       where=total[:, None] > 0)])
+        order = np.argsort(-w, axis=1, kind="stable")[:, :4]
+        top = np.take_along_axis(w, order, axis=1)
+        if top.shape[1] < 4:
+            order = np.hstack([order, np.zeros((n, 4 - top.shape[1]), dtype=order.dtype)])
+            top = np.hstack([top, np.zeros((n, 4 - top.shape[1]))])
+        top /= top.sum(axis=1, keepdims=True)
+        order[top == 0] = 0
+        dtype = np.uint8 if len(self.names) < 255 else np.uint16
+        self.joints, self.weights = order.astype(dtype), top.astype(np.float32)
+        self.frames = {name: _joint_frame(tree[name]) for name in self.names}
+        self.tree = tree
+
+    def skin(self, nodes: list[dict], buf: _Buffer) -> dict:
+        """Append the joint nodes to ``nodes``; return the skin."""
+        first = len(nodes)
+        index = {name: first + 1 + i for i, name in enumerate(self.names)}
+        nodes.append({"name": "root", "children": []})
+        ibm = [np.eye(4)]
+        for name in self.names:
+            p = self.tree[name]
+            rotation, origin = self.frames[name]
+            parent_rotation, parent_origin = self.frames.get(p.parent, (np.eye(3), np.zeros(3)))
+            local = parent_rotation.T @ rotation
+            node = {"name": name, "translation": (parent_rotation.T @ (origin - parent_origin)).tolist(),
+                    "rotation": _quaternion(local).tolist(),
+                    "extras": {"parameter": name, "minimum": p.minimum, "maximum": p.maximum}}
+            if p.kind == "rotation":
+                node["extras"].update(motion="rotation about the joint's +X", degrees_per_unit=p.degrees_per_unit)
+            else:
+                node["extras"].update(motion="translation along the joint's +X",
+                                      mm_per_unit=float(np.linalg.norm(p.direction)))
+            nodes[index.get(p.parent, first)].setdefault("children", []).append(len(nodes))
+            nodes.append(node)
+            inverse = np.eye(4)
+            inverse[:3, :3], inverse[:3, 3] = rotation.T, -rotation.T @ origin
+            ibm.append(inverse)
+        matrices = np.stack([m.T.reshape(16) for m in ibm]).astype(np.float32)   # glTF matrices are column-major
+        return {"name": "parameters", "skeleton": first, "joints": list(range(first, len(nodes))),
+                "inverseBindMatrices": buf.add(matrices, None, bounds=False, kind="MAT4")}
+
+
+def _joint_frame(p) -> tuple[np.ndarray, np.ndarray]:
+    """Rest orientation (local +X along the axis or direction) and origin (the pivot, metres) of a joint."""
+    if p.kind == "rotation":
+        return _rotation_from_x(p.axis), p.pivot * METRES_PER_MM
+    length = np.linalg.norm(p.direction)
+    return _rotation_from_x(p.direction / length if length else np.array([1.0, 0, 0])), np.zeros(3)
+
+
+def _rotation_from_x(a: np.ndarray) -> np.ndarray:
+    """The smallest rotation taking +X to the unit vector ``a`` (Rodrigues)."""
+    x = np.array([1.0, 0.0, 0.0])
+    v, c = np.cross(x, a), float(x @ a)
+    s2 = float(v @ v)
+    if s2 < 1e-24:
+        return np.eye(3) if c > 0 else np.diag([-1.0, 1.0, -1.0])
+    k = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+    return np.eye(3) + k + k @ k * ((1 - c) / s2)
+
+
+def _quaternion(r: np.ndarray) -> np.ndarray:
+    """Unit quaternion (x, y, z, w), glTF's order, of a rotation matrix (from its largest component)."""
+    t = np.trace(r)
+    options = [1 + t, 1 + r[0, 0] - r[1, 1] - r[2, 2], 1 - r[0, 0] + r[1, 1] - r[2, 2], 1 - r[0, 0] - r[1, 1] + r[2, 2]]
+    k = int(np.argmax(options))
+    s = 2 * np.sqrt(options[k])
+    if k == 0:
+        q = [(r[2, 1] - r[1, 2]) / s, (r[0, 2] - r[2, 0]) / s, (r[1, 0] - r[0, 1]) / s, s / 4]
+    elif k == 1:
+        q = [s / 4, (r[0, 1] + r[1, 0]) / s, (r[0, 2] + r[2, 0]) / s, (r[2, 1] - r[1, 2]) / s]
+    elif k == 2:
+        q = [(r[0, 1] + r[1, 0]) / s, s / 4, (r[1, 2] + r[2, 1]) / s, (r[0, 2] - r[2, 0]) / s]
+    else:
+        q = [(r[0, 2] + r[2, 0]) / s, (r[1, 2] + r[2, 1]) / s, s / 4, (r[1, 0] - r[0, 1]) / s]
+    q = np.array(q)
+    return q / np.linalg.norm(q)
+
+
+def _matrix(q) -> np.ndarray:
+    """Rotation matrix of a unit quaternion (x, y, z, w)."""
+    x, y, z, w = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
 
 
 def _triangles(layout, k: int) -> np.ndarray:
@@ -322,7 +457,7 @@ def glb_bytes(document: dict, data: bytes) -> bytes:
 
 
 def export_gltf(model, path: str | Path, targets: Iterable[MorphTarget] = (),
-                target_normals: bool = True) -> "GltfMesh":
+                target_normals: bool = True, skeleton: bool = False) -> "GltfMesh":
     """Write ``model`` with ``targets`` as ``path`` (``.glb``, or ``.gltf`` with a ``.bin`` beside it).
 
     The file is read back with :func:`read_gltf` before it is written (both
@@ -334,7 +469,7 @@ def export_gltf(model, path: str | Path, targets: Iterable[MorphTarget] = (),
     suffix = path.suffix.lower()
     if suffix not in SUFFIXES:
         raise UserError(f"unknown glTF extension '{path.suffix or path.name}' (use .glb or .gltf)", file=path)
-    document, data = gltf_document(model, targets, target_normals=target_normals)
+    document, data = gltf_document(model, targets, target_normals=target_normals, skeleton=skeleton)
     if suffix == ".glb":
         blob = glb_bytes(document, data)
         mesh = _parse(path, *_split_glb(blob, path))
@@ -363,6 +498,8 @@ class GltfPrimitive:
     model_vertex: np.ndarray | None = None
     targets: list[dict[str, np.ndarray]] = field(default_factory=list)
     material: dict = field(default_factory=dict)
+    joints: np.ndarray | None = None
+    weights: np.ndarray | None = None
 
 
 @dataclass
@@ -374,14 +511,27 @@ class GltfMesh:
     target_names: list[str]
     weights: np.ndarray
     document: dict
+    skin: "GltfSkin | None" = None
 
     @property
     def n_points(self) -> int:
         return sum(len(p.positions) for p in self.primitives)
 
-    def model_positions(self, n_vertices: int, weights: Mapping[str, float] | None = None) -> np.ndarray:
-        """Morphed positions (metres) in the model's vertex order via ``_MODEL_VERTEX``;
-        NaN for model vertices no primitive holds."""
+    def model_positions(self, n_vertices: int, weights: Mapping[str, float] | None = None,
+                        joints: Mapping[str, float] | None = None) -> np.ndarray:
+        """Posed positions (metres) in the model's vertex order via ``_MODEL_VERTEX``; NaN for
+        model vertices no primitive holds.
+
+        ``weights`` are morph target weights by name; ``joints`` parameter values
+        of a skeleton's joints (``value × degrees_per_unit`` degrees about the
+        joint's +X, or ``value × mm_per_unit`` along it), applied by linear blend
+        skinning after the morph targets, as glTF does.
+        """
+        skinning = None
+        if joints:
+            if self.skin is None:
+                raise UserError("the file has no skeleton to pose")
+            skinning = self.skin.matrices(joints)
         w = np.zeros(len(self.target_names))
         for name, v in (weights or {}).items():
             if name not in self.target_names:
@@ -395,8 +545,42 @@ class GltfMesh:
             for weight, target in zip(w, p.targets):
                 if weight:
                     P = P + weight * target["POSITION"]
+            if skinning is not None:
+                blended = np.einsum("vk,vkij->vij", p.weights, skinning[p.joints])
+                P = np.einsum("vij,vj->vi", blended[:, :3, :3], P) + blended[:, :3, 3]
             out[p.model_vertex] = P
         return out
+
+
+@dataclass
+class GltfSkin:
+    """A skin as read back: joint names, parents (index into ``names``, −1 for none),
+    rest local transforms, inverse bind matrices and the joints' ``extras``."""
+
+    names: list[str]
+    parents: list[int]
+    rest: list[np.ndarray]
+    inverse_bind: np.ndarray
+    extras: list[dict]
+
+    def matrices(self, values: Mapping[str, float]) -> np.ndarray:
+        """Skinning matrix ``G · IBM`` of every joint (4×4, column convention) for parameter values."""
+        for name in values:
+            if name not in self.names:
+                raise UserError(f"no joint named '{name}' (joints: {', '.join(self.names)})")
+        world: list[np.ndarray] = []
+        for i, name in enumerate(self.names):       # the writer lists parents before children
+            motion = np.eye(4)
+            value = float(values.get(name, 0.0))
+            extras = self.extras[i]
+            if value and "degrees_per_unit" in extras:
+                a = np.radians(value * extras["degrees_per_unit"])
+                motion[1:3, 1:3] = [[np.cos(a), -np.sin(a)], [np.sin(a), np.cos(a)]]
+            elif value and "mm_per_unit" in extras:
+                motion[0, 3] = value * extras["mm_per_unit"] * METRES_PER_MM
+            local = self.rest[i] @ motion
+            world.append(local if self.parents[i] < 0 else world[self.parents[i]] @ local)
+        return np.stack(world) @ self.inverse_bind
 
 
 def read_gltf(path: str | Path) -> GltfMesh:
@@ -542,7 +726,40 @@ class _Reader:
         names = list(spec.get("extras", {}).get("targetNames", [f"target_{i}" for i in range(n_targets)]))
         if len(weights) != n_targets or len(names) != n_targets:
             self.fail(f"mesh 0: {n_targets} morph targets but {len(weights)} weights and {len(names)} target names")
-        return GltfMesh(spec.get("name", ""), prims, names, weights, doc)
+        return GltfMesh(spec.get("name", ""), prims, names, weights, doc, self.skin(prims))
+
+    def skin(self, prims: list[GltfPrimitive]) -> GltfSkin | None:
+        doc = self.doc
+        holder = [n for n in doc.get("nodes", []) if n.get("mesh") == 0 and "skin" in n]
+        if not holder:
+            return None
+        skin = doc["skins"][holder[0]["skin"]]
+        joints = list(skin["joints"])
+        ibm = self.accessor(skin["inverseBindMatrices"])
+        if ibm.shape != (len(joints), 16):
+            self.fail(f"skin: {len(ibm)} inverse bind matrices for {len(joints)} joints")
+        parent_of = {c: i for i, n in enumerate(doc["nodes"]) for c in n.get("children", [])}
+        parents, rest = [], []
+        for j in joints:
+            node = doc["nodes"][j]
+            parent = parent_of.get(j)
+            if parent is not None and parent in joints and joints.index(parent) > joints.index(j):
+                self.fail(f"skin: joint '{node.get('name')}' is listed before its parent")
+            parents.append(joints.index(parent) if parent in joints else -1)
+            local = np.eye(4)
+            local[:3, :3] = _matrix(node.get("rotation", [0, 0, 0, 1]))
+            local[:3, 3] = node.get("translation", [0, 0, 0])
+            rest.append(local)
+        for p in prims:
+            if p.joints is None or p.weights is None:
+                self.fail(f"primitive '{p.name}' of a skinned mesh has no JOINTS_0 and WEIGHTS_0")
+            if p.joints.max(initial=0) >= len(joints):
+                self.fail(f"primitive '{p.name}': JOINTS_0 names a joint past the {len(joints)} of the skin")
+            if np.any(np.abs(p.weights.sum(axis=1) - 1) > 2e-3):
+                self.fail(f"primitive '{p.name}': skin weights do not sum to 1")
+        names = [doc["nodes"][j].get("name", f"joint_{j}") for j in joints]
+        return GltfSkin(names, parents, rest, ibm.reshape(-1, 4, 4).transpose(0, 2, 1).astype(float),
+                        [doc["nodes"][j].get("extras", {}) for j in joints])
 
     def primitive(self, i: int, spec: dict) -> GltfPrimitive:
         attributes = spec["attributes"]
@@ -577,5 +794,7 @@ class _Reader:
             targets.append(entry)
         material = self.doc["materials"][spec["material"]] if "material" in spec else {}
         vertex = arrays.get(MODEL_VERTEX)
+        joints = arrays.get("JOINTS_0")
         return GltfPrimitive(name, positions, flat.reshape(-1, 3), arrays.get("NORMAL"), arrays.get("COLOR_0"),
-                             None if vertex is None else vertex.astype(np.int64), targets, material)
+                             None if vertex is None else vertex.astype(np.int64), targets, material,
+                             None if joints is None else joints.astype(np.int64), arrays.get("WEIGHTS_0"))

@@ -17,8 +17,8 @@ import pytest
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, UserError, load_model
 from engine.cells import cells_to_triangles
 from engine.gltf_export import (
-    METRES_PER_MM, MODEL_VERTEX, GltfFileError, MorphTarget, export_gltf, glb_bytes, gltf_document,
-    parameter_targets, pose_targets, read_gltf, target_value,
+    METRES_PER_MM, MODEL_VERTEX, GltfFileError, MorphTarget, _matrix, _quaternion, _rotation_from_x, export_gltf,
+    glb_bytes, gltf_document, parameter_targets, pose_targets, read_gltf, skeleton_parameters, target_value,
 )
 from engine.paths import default_model_path, reference_poses_path
 from engine.render import _PartLayout
@@ -251,6 +251,62 @@ def test_a_model_without_targets_exports(model, tmp_path):
 
 
 # ---------------------------------------------------------------------------
+# Skeleton: group-1 parameters as joints
+# ---------------------------------------------------------------------------
+
+def test_skeleton_reproduces_deform(model, tmp_path):
+    assert skeleton_parameters(model) == ["head_turn"]
+    leaves = parameter_targets(model, ["brow", "slide", "smile"])
+    mesh = export_gltf(model, tmp_path / "rig.glb", leaves, skeleton=True)
+    assert mesh.skin.names == ["root", "head_turn"] and mesh.skin.parents == [-1, 0]
+    tol = f32_tolerance(model)
+    for turn in (0.0, 0.4, -0.6):
+        for smile in (0.0, 0.5):                 # leaf motion authored at rest, carried by the joint
+            np.testing.assert_allclose(
+                mesh.model_positions(model.n_vertices, {"smile": smile / target_value(model.parameters["smile"])},
+                                     joints={"head_turn": turn}),
+                model.deform({"head_turn": turn, "smile": smile}) * METRES_PER_MM, rtol=0, atol=tol)
+    with pytest.raises(UserError, match="is a joint of the skeleton"):
+        gltf_document(model, parameter_targets(model, ["head_turn"]), skeleton=True)
+    with pytest.raises(UserError, match="no joint named 'brow'"):
+        mesh.model_positions(model.n_vertices, joints={"brow": 0.1})
+
+
+def test_skeleton_needs_rigid_parameters_at_rest_at_zero(model):
+    shifted = model.copy()
+    shifted.parameters.replace(shifted.parameters["head_turn"].copy(default=0.1))
+    with pytest.raises(UserError, match="rests at 0.1"):
+        gltf_document(shifted, skeleton=True)
+
+
+def test_reader_refuses_a_broken_skin(model, tmp_path):
+    document, data = gltf_document(model, skeleton=True)
+    document["skins"][0]["joints"].pop()
+    path = tmp_path / "skin.glb"
+    path.write_bytes(glb_bytes(document, data))
+    with pytest.raises(GltfFileError, match="2 inverse bind matrices for 1 joints"):
+        read_gltf(path)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_joint_frames_and_quaternions(seed):
+    rng = np.random.default_rng(seed)
+    axes = [rng.normal(size=3) for _ in range(20)] + [np.array(a, float) for a in
+                                                      ([1, 0, 0], [-1, 0, 0], [0, -1, 0], [0, 0, 1], [-1, 1e-9, 0])]
+    for a in axes:
+        a = a / np.linalg.norm(a)
+        r = _rotation_from_x(a)
+        assert np.allclose(r @ [1, 0, 0], a, atol=1e-12) and np.allclose(r.T @ r, np.eye(3), atol=1e-12)
+        assert np.linalg.det(r) == pytest.approx(1.0)
+        assert np.allclose(_matrix(_quaternion(r)), r, atol=1e-12)
+    for angle, axis in ((np.pi, (1, 1, 0)), (np.pi, (0, 1, 1)), (np.pi - 1e-9, (1, 2, 3))):
+        axis = np.array(axis) / np.linalg.norm(axis)
+        k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+        r = np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
+        assert np.allclose(_matrix(_quaternion(r)), r, atol=1e-9)
+
+
+# ---------------------------------------------------------------------------
 # Pose files
 # ---------------------------------------------------------------------------
 
@@ -397,6 +453,23 @@ def test_vtk_reads_the_default_head(head_export):
     assert np.array_equal(skin.point_data[MODEL_VERTEX], skin_prim.model_vertex)
 
 
+def test_default_head_with_a_skeleton_is_exact_where_morphs_are_not(head_export, tmp_path):
+    head = head_export[0]
+    joints = skeleton_parameters(head)
+    assert {"head_turn", "jaw_open", "eye_left_turn"} <= set(joints)
+    leaves = [n for n, _ in head.parameters.depth_first() if n not in joints]
+    mesh = export_gltf(head, tmp_path / "rig.glb", parameter_targets(head, leaves), skeleton=True)
+    pose = {"head_turn": 0.3, "jaw_open": 0.5, "neck_lean": -0.2, "eye_left_turn": 0.4}
+    expected = head.deform({**pose, "lower_lip_raise": 1.0, "mouth_widen": 0.6})
+    rigged = mesh.model_positions(head.n_vertices, {"lower_lip_raise": 1.0, "mouth_widen": 0.6}, joints=pose)
+    np.testing.assert_allclose(rigged, expected * METRES_PER_MM, rtol=0, atol=f32_tolerance(head))
+    morphs = head_export[2]                        # the same pose as a sum of morph targets is centimetres off
+    chord = morphs.model_positions(head.n_vertices, {
+        **{k: v / target_value(head.parameters[k]) for k, v in pose.items()},
+        "lower_lip_raise": 1.0, "mouth_widen": 0.6})
+    assert np.linalg.norm(chord / METRES_PER_MM - expected, axis=1).max() > 5.0
+
+
 @pytest.mark.slow
 def test_cli_exports_a_selection(tmp_path):
     if not default_model_path().exists():
@@ -408,6 +481,11 @@ def test_cli_exports_a_selection(tmp_path):
     mesh = read_gltf(tmp_path / "sel.gltf")
     assert mesh.target_names == ["jaw_open", "brow_raise"]
     assert mesh.document["meshes"][0]["extras"]["targets"][0]["value"] == 0.5
+    result = run("export-gltf", "--skeleton", "--no-arkit", "-o", tmp_path / "rig.glb")
+    assert result.returncode == 0, result.stderr
+    assert ", 8 joints, " in result.stdout
+    rig = read_gltf(tmp_path / "rig.glb")
+    assert "jaw_open" in rig.skin.names and "jaw_open" not in rig.target_names and "mouth_widen" in rig.target_names
 
 
 @pytest.mark.slow
@@ -418,6 +496,7 @@ def test_cli_exports_a_selection(tmp_path):
     (["--value", "jaw_open", "-o", "x.glb"], "is not NAME=VALUE"),
     (["--pose-group", "nope", "-o", "x.glb"], "no pose group 'nope'"),
     (["--arkit", "--no-arkit", "-o", "x.glb"], "not allowed with argument"),
+    (["--skeleton", "--parameters", "head_nod", "-o", "x.glb"], "'head_nod' is a joint of the skeleton"),
 ])
 def test_cli_errors(tmp_path, arguments, message):
     if not default_model_path().exists():
