@@ -10,6 +10,10 @@ glTF blends targets linearly, so a rotation's target is its straight-line
 (secant) linearisation through the rest pose and the pose at the chosen value:
 exact at weights 0 and 1, a chord in between (docs/export.md).
 
+With ``skeleton=True`` the rigid group-1 parameters become joints of a glTF
+skin instead (:func:`skeleton_parameters`), which reproduces ``model.deform``
+exactly, leaves riding on the joints as in the engine.
+
 Units: the model is in mm, glTF in metres, so coordinates are scaled by
 0.001; both use +Y up with the face toward +Z, so no axes are swapped.
 
