@@ -78,8 +78,11 @@ def run_import(args) -> int:
     if out.suffix.lower() not in SESSION_SUFFIXES:
         raise UserError(f"unknown output extension '{out.suffix or out.name}' for a session (use .h5)", file=out)
     csv_given = args.columns or args.time_column or args.rate or args.units != "mm"
-    if csv_given and args.format not in ("auto", "csv"):
-        raise UserError("--columns, --time-column, --rate and --units apply to CSV tables only")
+    if csv_given and Path(args.file).is_file():
+        from .mocap.readers import detect_format
+
+        if (detect_format(args.file) if args.format == "auto" else args.format) != "csv":
+            raise UserError("--columns, --time-column, --rate and --units apply to CSV tables only")
     layout = CsvLayout(columns=args.columns, time_column=args.time_column, rate_hz=args.rate, units=args.units)
     if args.tier is not None and args.labels is None:
         raise UserError("--tier needs --labels TEXTGRID")

@@ -20,7 +20,6 @@ and are excluded from analysis.
 from __future__ import annotations
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 
 def find_gaps(missing: np.ndarray) -> list[tuple[int, int]]:
@@ -70,6 +69,8 @@ def fill_gaps(positions: np.ndarray, max_gap_frames: int):
             valid = np.flatnonzero(~absent[:, m])
             at = np.concatenate([np.arange(a, b) for a, b in fillable])
             if len(valid) >= 2:
+                from scipy.interpolate import CubicSpline  # scipy.interpolate takes a second to import: only here
+
                 spline = CubicSpline(valid, filled[valid, m], axis=0, bc_type="not-a-knot")
                 filled[at, m] = spline(at)
                 was_filled[at, m] = True

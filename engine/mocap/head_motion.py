@@ -76,11 +76,14 @@ def apply_alignment(positions: np.ndarray, alignment: np.ndarray) -> np.ndarray:
 
 
 def remove_head_motion(positions: np.ndarray, missing: np.ndarray, reference: list[int],
-                       reference_frame: str | int = "first"):
+                       reference_frame: str | int = "first", filled: np.ndarray | None = None):
     """Align every frame's reference markers to a reference frame; returns ``(aligned, alignment, info)``.
 
     ``positions`` (F, M, 3) mm with NaN where ``missing`` (F, M); ``reference``
-    the column indices of the head-fixed markers. ``reference_frame`` is
+    the column indices of the head-fixed markers. ``filled`` (F, M) marks
+    gap-filled samples: a frame aligns on its measured reference markers when
+    it has three, and takes filled ones only when it must (a spline estimate
+    would otherwise tilt an exact alignment). ``reference_frame`` is
     ``"first"`` (the first frame with every reference marker present), a frame
     index, or ``"mean"`` (the mean reference shape after aligning to the
     first, then every frame aligned to that mean: two rounds of generalised
@@ -95,6 +98,10 @@ def remove_head_motion(positions: np.ndarray, missing: np.ndarray, reference: li
                          f"not {len(reference)}")
     ref_points = positions[:, reference]
     present = ~np.asarray(missing, bool)[:, reference]
+    if filled is not None:
+        measured = present & ~np.asarray(filled, bool)[:, reference]
+        enough = measured.sum(axis=1) >= MIN_REFERENCE
+        present = np.where(enough[:, None], measured, present)
     complete = np.flatnonzero(present.all(axis=1))
     if isinstance(reference_frame, (int, np.integer)) and not isinstance(reference_frame, bool):
         frame = int(reference_frame)

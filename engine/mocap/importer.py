@@ -102,7 +102,7 @@ def build_session(recording: Recording, *, mapping: dict | None = None, max_gap_
     }
     if reference:
         index = [markers.index(r) for r in reference]
-        positions, alignment, info = remove_head_motion(filled, missing, index, reference_frame)
+        positions, alignment, info = remove_head_motion(filled, missing, index, reference_frame, filled=was_filled)
         unaligned = ~np.isfinite(alignment[:, 0, 0])
         missing = missing | unaligned[:, None]
         positions[missing] = np.nan
