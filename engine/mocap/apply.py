@@ -395,8 +395,12 @@ def surface_coordinates(graph, region, dims: int = 3) -> np.ndarray:
         raise MocapError("part of the region is not connected to the rest along the surface")
     sq = dist ** 2
     centred = sq - sq.mean(axis=0) - sq.mean(axis=1)[:, None] + sq.mean()
-    eigenvalues, eigenvectors = np.linalg.eigh(-0.5 * centred)
-    top = np.argsort(eigenvalues)[::-1][:dims]
+    from scipy.linalg import eigh
+
+    n = len(region)
+    dims = min(dims, n)
+    eigenvalues, eigenvectors = eigh(-0.5 * centred, subset_by_index=[n - dims, n - 1])   # the largest only
+    top = np.argsort(eigenvalues)[::-1]
     return eigenvectors[:, top] * np.sqrt(np.maximum(eigenvalues[top], 0.0))
 
 
