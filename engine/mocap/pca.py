@@ -220,6 +220,18 @@ class Stage:
 DEFAULT_STAGES = (Stage(("2.1",), 1), Stage(("8.*",), 4))
 
 
+def default_stages(n_components: int = 5) -> tuple[Stage, ...]:
+    """The paper's stages for ``n_components`` in all: one jaw component (2.1), the rest from the lips (8.x).
+
+    >>> [(s.markers, s.components) for s in default_stages(3)]
+    [(('2.1',), 1), (('8.*',), 2)]
+    """
+    if int(n_components) != n_components or n_components < 1:
+        raise MocapError(f"the number of components must be a whole number ≥ 1, not {n_components}")
+    jaw = Stage(("2.1",), 1)
+    return (jaw,) if n_components == 1 else (jaw, Stage(("8.*",), int(n_components) - 1))
+
+
 def parse_stage(text: str) -> Stage:
     """A stage from ``"MARKERS:COMPONENTS"``, markers comma-separated, globs allowed.
 
@@ -384,7 +396,7 @@ def multistage_pca(source, positions=None, *, stages=DEFAULT_STAGES, frames=None
     else:
         selection = "" if frames is None else f"{len(frames)} listed frames"
     n_total = positions.shape[0]
-    frames = np.arange(n_total) if frames is None else np.asarray(frames, dtype=np.int64).reshape(-1)
+    frames = np.arange(n_total) if frames is None else np.unique(np.asarray(frames, dtype=np.int64).reshape(-1))
     bad = frames[(frames < 0) | (frames >= n_total)]
     if len(bad):
         raise MocapError(f"frames {', '.join(map(str, bad[:5]))} are outside the recording (0–{n_total - 1})")
