@@ -2,7 +2,8 @@
 
 Children are indented under their parent, so the parameter tree of §2.2
 reads at a glance (rigid group-1 parameters in bold). The panel rebuilds its
-rows when another model is opened; pose changes are each row's own business.
+rows when another model is opened or the tree is edited (and undone); pose
+changes are each row's own business.
 """
 
 from __future__ import annotations
@@ -38,13 +39,19 @@ class ParameterPanel(QWidget):
         layout.addWidget(self.reset_all_button)
 
         document.model_replaced.connect(self._build)
+        document.parameters_changed.connect(self._rebuild)
         document.values_changed.connect(self._update_reset_all)
         self._build(document.model)
 
     def row(self, name: str) -> ParameterSlider:
         return self.rows[name]
 
+    def _rebuild(self, _names: list) -> None:
+        self._build(self._document.model)
+
     def _build(self, model: engine.Model) -> None:
+        for row in self.rows.values():
+            row.retire()
         self.rows.clear()
         content = QWidget()
         column = QVBoxLayout(content)

@@ -99,6 +99,10 @@ class ParameterSlider(QWidget):
         self.label.setFixedWidth(label)
         self.spin.setFixedWidth(spin)
 
+    def retire(self) -> None:
+        """Stop following the document (the panel is replacing this row; its parameter may be gone)."""
+        self._document.values_changed.disconnect(self._on_values_changed)
+
     # -- listeners -------------------------------------------------------
     def _on_slider_moved(self, position: int) -> None:
         self._document.set_value(self.parameter.name, self.value_at(position))

@@ -21,9 +21,13 @@ class ModelStatusBar(QStatusBar):
         self.addPermanentWidget(self.model_label)
         document.model_replaced.connect(self._show_model)
         document.values_changed.connect(self._show_change)
+        document.parameters_changed.connect(self._show_tree_change)
         self._show_model(document.model)
 
-    def _show_model(self, model: engine.Model) -> None:
+    def _show_tree_change(self, _names: list) -> None:
+        self._show_model(self._document.model, clear=False)
+
+    def _show_model(self, model: engine.Model, clear: bool = True) -> None:
         self.model_label.setText(f"{model.name} · {model.n_vertices:,} vertices · "
                                  f"{len(model.parameters)} parameters")
         self.clearMessage()

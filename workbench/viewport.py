@@ -68,6 +68,9 @@ class Viewport(QWidget):
 
         document.model_replaced.connect(self._on_model_replaced)
         document.values_changed.connect(self._on_values_changed)
+        # A model edit (tree, weights; also undo and redo) changes the deformation of the pose shown.
+        document.parameters_changed.connect(self._on_values_changed)
+        document.regions_changed.connect(self._on_values_changed)
         view_state.wireframe_changed.connect(self._on_wireframe_changed)
         view_state.part_visibility_changed.connect(self._on_part_visibility_changed)
         self._build(document.model)
