@@ -272,7 +272,8 @@ class HeldOutError:
                 f"face at rest {self.rest_rms_mm:.3f} mm\n")
 
 
-def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation, markers, positions) -> HeldOutError:
+def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation, markers, positions,
+                         register: bool = False) -> HeldOutError:
     """Fit the new parameters to held-out frames, deform the model, measure at the landmarks.
 
     ``markers`` names the columns of ``positions`` ((F, M, 3), mm, head
@@ -281,6 +282,11 @@ def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation,
     alignment, the parameters :attr:`AppliedArticulation.names` are fitted
     by least squares to the markers present, the model is deformed with
     those values and the landmark vertices are compared with the markers.
+
+    Frames from the recording the PCA analysed share its coordinates. A
+    *different* recording has had its head motion removed relative to its
+    own reference frame: pass ``register=True`` to first move it rigidly into
+    the analysed recording's coordinates (:func:`register_recording`).
     """
     from .synthetic import model_at_landmarks
 
@@ -291,6 +297,9 @@ def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation,
     x = np.asarray(positions, dtype=float)
     if x.ndim != 3 or x.shape[1:] != (len(markers), 3):
         raise MocapError(f"marker positions have shape {x.shape}, expected (frames, {len(markers)}, 3)")
+    if register:
+        rotation, translation = register_recording(art, markers, x)
+        x = x @ rotation.T + translation
     x = x[:, [markers.index(m) for m in applied.markers]]
     target = applied.to_model(x)                                            # (F, m, 3) model mm
     sub = model_at_landmarks(model, applied.markers)                        # exact at these vertices, fast
@@ -331,6 +340,33 @@ def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation,
         per_frame_rms_mm=np.sqrt(np.nanmean(errors[frames] ** 2, axis=1)), n_frames=int(frames.sum()),
         rest_rms_mm=float(np.sqrt(np.nanmean(rest_err ** 2))), pca_rms_mm=float(np.sqrt(np.nanmean(pca_err ** 2))),
         values=fitted)
+
+
+def register_recording(art: Articulation, markers, positions, iterations: int = 30):
+    """The rigid motion (R, t) that takes another recording into the coordinates ``art`` was computed in.
+
+    Minimises ``Σ_f |R x_f + t − (mean + Σ_k v_fk C_k)|²`` over one rotation
+    and translation for the whole recording and free component values per
+    frame (alternating Procrustes and least squares), on the frames where
+    every analysed marker is present. ``positions`` (F, M, 3) mm, columns
+    named by ``markers``. Returns ``R`` (3, 3) and ``t`` (3,): ``x ↦ x Rᵀ + t``.
+    """
+    x = art._take(positions, markers)
+    complete = np.isfinite(x).all(axis=(1, 2))
+    if not complete.any():
+        raise MocapError("no frame has every analysed marker: cannot register the recording")
+    x = x[complete]
+    flat = x.reshape(-1, 3)
+    _, rotation, translation = _umeyama(x.mean(axis=0), art.mean, scale=False)
+    for _ in range(iterations):
+        moved = x @ rotation.T + translation
+        target = art.reconstruct(art.values(moved))
+        _, new_rotation, new_translation = _umeyama(flat, target.reshape(-1, 3), scale=False)
+        step = np.abs(new_rotation - rotation).max() + np.abs(new_translation - translation).max()
+        rotation, translation = new_rotation, new_translation
+        if step < 1e-10:
+            break
+    return rotation, translation
 
 
 # -- geometry -----------------------------------------------------------------------------
@@ -452,8 +488,8 @@ def _align(mean, comps, target, rest_offset: bool, ridge: float = 1e-6):
     return scale, rotation, translation, values, rms
 
 
-def _umeyama(source, target):
-    """Scale s, rotation R, translation t minimising Σ |s R x + t − y|² (Umeyama 1991)."""
+def _umeyama(source, target, scale: bool = True):
+    """Scale s, rotation R, translation t minimising Σ |s R x + t − y|² (Umeyama 1991); s = 1 if not ``scale``."""
     mx, my = source.mean(axis=0), target.mean(axis=0)
     x, y = source - mx, target - my
     u, d, vt = np.linalg.svd(y.T @ x / len(x))
@@ -464,8 +500,8 @@ def _umeyama(source, target):
     var = np.sum(x ** 2) / len(x)
     if var <= 0:
         raise MocapError("the markers all sit at one point: cannot align them to the model")
-    scale = float(np.sum(d * s) / var)
-    return scale, rotation, my - scale * rotation @ mx
+    factor = float(np.sum(d * s) / var) if scale else 1.0
+    return factor, rotation, my - factor * rotation @ mx
 
 
 def _parent(model, markers, vertices) -> str | None:

@@ -12,8 +12,10 @@ default head itself:
    capture rate (60 fps, as the paper's MacReflex);
 2. the head deformed by those values (exactly, through the model's own
    deformation) and read at its landmark vertices: one virtual marker per
-   MPEG-4 feature point — the lip contour 8.1–8.8, the chin 2.1 and 2.10, and
-   head-fixed reference points on the nose (9.x) and at the eye corners (3.x);
+   MPEG-4 feature point — the lip contour 8.1–8.8, the chin 2.1 and 2.10, the
+   eye corners (3.x) and head-fixed reference points on the nose bridge (9.12)
+   and the forehead (11.1–11.3), placed on the skin where the head has no
+   landmark for them (:func:`marker_vertices`);
 3. smooth random rigid head motion, Gaussian marker noise, single-frame
    dropouts and gaps (NaN), as an optical tracker gives them.
 
@@ -45,10 +47,13 @@ from ..errors import UserError
 
 #: Markers of the lip contour and the jaw: what the paper analysed (§3.1.1, "8.x and 2.1").
 ARTICULATION_MARKERS = ("2.1", "8.1", "8.2", "8.3", "8.4", "8.5", "8.6", "8.7", "8.8")
-#: Head-fixed markers for removing head motion (the paper's 9.x; eye corners instead of 20.x).
-REFERENCE_MARKERS = ("9.1", "9.2", "9.3", "9.4", "9.5", "9.15", "3.7", "3.8", "3.11", "3.12")
-#: The default marker set: articulation markers, the chin boss and the reference markers.
-DEFAULT_MARKERS = ARTICULATION_MARKERS + ("2.10",) + REFERENCE_MARKERS
+#: Head-fixed markers for removing head motion: nose bridge and forehead (on the default head the
+#: nostril and nose-base points 9.1–9.5 and 9.15 move with the lips, so they would not do).
+REFERENCE_MARKERS = ("9.12", "11.1", "11.2", "11.3")
+#: Eye corners: still during speech, captured like the paper's other markers.
+EYE_MARKERS = ("3.7", "3.8", "3.11", "3.12")
+#: The default marker set: articulation markers, the chin boss, eye corners and the reference markers.
+DEFAULT_MARKERS = ARTICULATION_MARKERS + ("2.10",) + EYE_MARKERS + REFERENCE_MARKERS
 #: Sentences with every Finnish vowel and most consonants, bilabial closures and rounding.
 DEFAULT_TEXT = "Papu ja kala. Hyvää päivää, mitä kuuluu? Öljyä ja syötävää."
 
@@ -121,8 +126,9 @@ def synthesize_recording(text: str | None = None, *, phones=None, model=None, ta
         landmark vertices.
     table : ArticulationTable, optional
         Phone → target table (default ``library/articulation/finnish.phones``).
-    markers : sequence of landmark ids
-        Virtual markers, in this order (default :data:`DEFAULT_MARKERS`).
+    markers : sequence of ids
+        Virtual markers, in this order (default :data:`DEFAULT_MARKERS`):
+        the model's landmarks, or the reference points :func:`marker_vertices` places.
     rate_hz : float
         Frames per second (60, like the paper's MacReflex).
     linear : bool
@@ -155,10 +161,7 @@ def synthesize_recording(text: str | None = None, *, phones=None, model=None, ta
     if not (np.isfinite(rate_hz) and rate_hz > 0):
         raise UserError(f"the frame rate must be a positive number of frames per second, not {rate_hz}")
     markers = [str(m) for m in markers]
-    unknown = [m for m in markers if m not in model.landmarks]
-    if unknown:
-        raise UserError(f"the model has no landmark for markers {', '.join(unknown)} "
-                        f"(it has {', '.join(sorted(model.landmarks))})")
+    places = marker_vertices(model, markers)
     if phones is None:
         text = DEFAULT_TEXT if text is None else text
         if synthesizer is None:
@@ -174,7 +177,7 @@ def synthesize_recording(text: str | None = None, *, phones=None, model=None, ta
     n_frames = int(np.floor(end_ms * rate_hz / 1000.0)) + 1
     times = np.arange(n_frames) * (1000.0 / rate_hz)
 
-    sub = model_at_landmarks(model, markers)
+    sub = model_at_vertices(model, [places[m] for m in markers], landmarks={m: i for i, m in enumerate(markers)})
     names = [p for p in table.parameters if p in model.parameters]
     all_tracks = articulation_tracks(segments, _Subtable(table, names), times)
     basis_all = _jacobian(sub, names)
@@ -216,6 +219,45 @@ def synthesize_recording(text: str | None = None, *, phones=None, model=None, ta
         rest=rest, parameters=parameters, tracks=tracks, basis=basis, head_rotation=rotation,
         head_translation=translation, head_pivot=pivot,
         reference=[m for m in markers if m in REFERENCE_MARKERS], text=text or "")
+
+
+def marker_vertices(model, markers) -> dict[str, int]:
+    """Vertex of every marker: the model's landmark of that id, else a head-fixed point placed on the skin.
+
+    Placed points (where the model has no landmark): ``9.12`` nose bridge
+    (midline, at the height of the inner eye corners 3.8/3.11, frontmost),
+    ``11.1`` forehead middle (midline, 45 mm above the brow tops 4.3/4.4),
+    ``11.3`` / ``11.2`` forehead left / right (x = ±35 mm, 40 mm above the
+    brows). Each is the frontmost skin vertex within 6 mm of that spot in
+    x and y. Other ids the model lacks raise :class:`UserError`.
+    """
+    out = {}
+    for m in markers:
+        if m in model.landmarks:
+            out[m] = int(model.landmarks[m])
+        elif m in _PLACED:
+            out[m] = _place(model, *_PLACED[m], marker=m)
+        else:
+            raise UserError(f"the model has no landmark for marker {m} (it has "
+                            f"{', '.join(sorted(model.landmarks))}; placed points: {', '.join(_PLACED)})")
+    return out
+
+
+# id → (x mm or None for the midline, landmark pair whose mean y is the base, mm above it)
+_PLACED = {"9.12": (0.0, ("3.8", "3.11"), 0.0), "11.1": (0.0, ("4.3", "4.4"), 45.0),
+           "11.2": (-35.0, ("4.3", "4.4"), 40.0), "11.3": (35.0, ("4.3", "4.4"), 40.0)}
+
+
+def _place(model, x, base, above, marker) -> int:
+    if not all(b in model.landmarks for b in base) or "skin" not in model.parts:
+        raise UserError(f"cannot place marker {marker}: the model needs landmarks {' and '.join(base)} and a skin part")
+    y = np.mean([model.vertices[model.landmarks[b], 1] for b in base]) + above
+    v = model.vertices
+    near = np.flatnonzero((model.vertex_part == model.parts.index("skin"))
+                          & (np.abs(v[:, 0] - x) <= 6.0) & (np.abs(v[:, 1] - y) <= 6.0))
+    if not len(near):
+        raise UserError(f"cannot place marker {marker}: no skin near x = {x:g}, y = {y:.0f} mm")
+    return int(near[np.argmax(v[near, 2])])
 
 
 def model_at_landmarks(model, keys):
