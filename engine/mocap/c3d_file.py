@@ -19,8 +19,6 @@ import numpy as np
 from .errors import MarkerFileError
 from .readers import Recording, unit_scale, zero_triplets_to_nan
 
-PROCESSOR_INTEL = 84
-PROCESSOR_MIPS = 86
 
 
 def read_c3d(path: str | Path) -> Recording:
@@ -53,7 +51,7 @@ def read_c3d(path: str | Path) -> Recording:
         labels = labels[:n_points]
         labels = _unique(labels)
         mm = unit_scale(units or "mm", path)
-        if reader.proc_type in (PROCESSOR_INTEL, PROCESSOR_MIPS):
+        if reader.proc_type in ("INTEL", "MIPS"):  # IEEE floats, little- or big-endian
             xyz, valid = _read_points(fh, reader, n_frames, n_points, path)
         else:
             xyz, valid = _read_points_slowly(reader, n_frames, n_points, path)
@@ -92,7 +90,7 @@ def _read_points(fh, reader, n_frames, n_points, path):
     """All frames' point words in one read: (F, P, 3) coordinates (scaled) and (F, P) validity."""
     is_float = reader.point_scale < 0
     word = 4 if is_float else 2
-    order = ">" if reader.proc_type == PROCESSOR_MIPS else "<"
+    order = ">" if reader.proc_type == "MIPS" else "<"
     n_analog = int(reader.analog_used) * int(reader.analog_per_frame)
     frame_bytes = 4 * n_points * word + n_analog * word
     start = (int(reader.header.data_block) - 1) * 512

@@ -24,7 +24,7 @@ import numpy as np
 from .errors import MocapError
 
 MIN_REFERENCE = 3
-_COLLINEAR = 1e-9  # second singular value of the centred points relative to the first
+_COLLINEAR = 1e-9  # second singular value of the cross-covariance relative to the first
 
 
 def kabsch(points: np.ndarray, target: np.ndarray, present: np.ndarray) -> np.ndarray:
@@ -49,7 +49,7 @@ def kabsch(points: np.ndarray, target: np.ndarray, present: np.ndarray) -> np.nd
     q_mean = (wf[..., None] * q).sum(axis=1) / safe
     pc = (p - p_mean[:, None]) * wf[..., None]
     qc = (q - q_mean[:, None]) * wf[..., None]
-    H = np.einsum("fki,fkj->fij", pc, qc)
+    H = pc.transpose(0, 2, 1) @ qc
     U, S, Vt = np.linalg.svd(H)
     d = np.sign(np.linalg.det(U @ Vt))
     d[d == 0] = 1.0
@@ -58,21 +58,20 @@ def kabsch(points: np.ndarray, target: np.ndarray, present: np.ndarray) -> np.nd
     D[:, 1, 1] = 1.0
     D[:, 2, 2] = d
     R = U @ D @ Vt  # row-vector rotation: p @ R
-    t = q_mean - np.einsum("fi,fij->fj", p_mean, R)
+    t = q_mean - (p_mean[:, None, :] @ R)[:, 0]
     A = np.zeros((n_frames, 4, 4))
     A[:, :3, :3] = R
     A[:, 3, :3] = t
     A[:, 3, 3] = 1.0
-    # the spread of the frame's own points decides whether a rotation is determined
-    spread = np.linalg.svd(np.einsum("fki,fkj->fij", pc, pc), compute_uv=False)
-    bad = (count < MIN_REFERENCE) | (spread[:, 1] <= _COLLINEAR * np.maximum(spread[:, 0], 1e-300))
+    # points on a line leave the rotation about that line undetermined: H then has rank one
+    bad = (count < MIN_REFERENCE) | (S[:, 1] <= _COLLINEAR * np.maximum(S[:, 0], 1e-300))
     A[bad] = np.nan
     return A
 
 
 def apply_alignment(positions: np.ndarray, alignment: np.ndarray) -> np.ndarray:
     """Move (F, M, 3) positions by per-frame (F, 4, 4) row-vector transforms."""
-    return np.einsum("fmi,fij->fmj", positions, alignment[:, :3, :3]) + alignment[:, None, 3, :3]
+    return positions @ alignment[:, :3, :3] + alignment[:, None, 3, :3]
 
 
 def remove_head_motion(positions: np.ndarray, missing: np.ndarray, reference: list[int],
