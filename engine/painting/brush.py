@@ -141,7 +141,7 @@ def _facing(ctx, idx, view_direction, camera_position):
         look = ctx.vertices[idx] - _point(camera_position)
         return np.einsum("ij,ij->i", n, look) < 0
     v = _point(view_direction)
-    return n @ v < 0
+    return n[:, 0] * v[0] + n[:, 1] * v[1] + n[:, 2] * v[2] < 0     # not n @ v: BLAS set-up costs more here
 
 
 def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_position=None,
@@ -157,17 +157,19 @@ def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_pos
     p = _point(point)
     if brush.front_faces_only and view_direction is None and camera_position is None:
         raise UserError("front-faces-only painting needs the view direction or the camera position")
-    idx = np.asarray(ctx.tree.query_ball_point(p, brush.radius), dtype=np.int64)
+    found = ctx.tree.query_ball_point(p, brush.radius, return_sorted=False)
+    idx = np.fromiter(found, dtype=np.int64, count=len(found))
     if brush.part is not None and len(idx):
         idx = idx[ctx.vertex_part[idx] == ctx.part_index(brush.part)]
     if brush.front_faces_only and len(idx):
         idx = idx[_facing(ctx, idx, view_direction, camera_position)]
+    idx = np.sort(idx)
     if brush.connected and len(idx):
-        inside = np.zeros(ctx.n_vertices, dtype=bool)
-        inside[idx] = True
-        idx = ctx.connected_within(ctx.nearest_vertex(p, idx), inside)
-    else:
-        idx = np.sort(idx)
+        seed = int(ctx.tree.query(p)[1])                # usually the nearest vertex passes the filters…
+        pos = np.searchsorted(idx, seed)
+        if pos >= len(idx) or idx[pos] != seed:
+            seed = ctx.nearest_vertex(p, idx)           # …else the nearest one that does
+        idx = ctx.connected_within(seed, idx)
     d = np.linalg.norm(ctx.vertices[idx] - p, axis=1)
     a = brush.falloff_values(d / brush.radius) * (brush.strength * float(np.clip(pressure, 0.0, 1.0)))
     if brush.mirror and len(idx):
