@@ -25,7 +25,8 @@ default head's reference poses are in ``docs/fitting.md``.
 >>> import engine
 >>> from engine.fitting import fit_parameter, reference_pose
 >>> head = engine.load_model()
->>> fit = fit_parameter(head, reference_pose("arkit/jawOpen"), kind="rotation", name="jaw_drop", parent="head_tilt")
+>>> pose = reference_pose("arkit/jawOpen")                     # (N, 3) mm
+>>> fit = fit_parameter(head, pose, kind="rotation", name="jaw_drop", parent="head_tilt")
 >>> round(fit.parameter.degrees_per_unit, 1), round(fit.residual_max_mm, 1)     # degrees, mm
 (22.8, 4.3)
 >>> fit.apply(head)                       # adds the parameter and its region
@@ -67,7 +68,8 @@ class FitResult:
     (the region asked for). Residuals are per-vertex distances
     ``|target − fitted|`` in mm, over ``allowed`` (``residual_*``) and over
     the whole mesh (``mesh_residual_*``, which also counts the pose's motion
-    outside the region).
+    outside the region). ``iterations`` counts the rounds of the smoothness
+    alternation, ``seconds`` the fit's wall-clock time.
     """
 
     parameter: Parameter
@@ -177,7 +179,7 @@ def fit_pose(vertices, displacements, kind: str = "rotation", *, edges=None, reg
     ``edges``: (E, 2) vertex pairs for the smoothness term (none: no term).
     ``region``: vertex indices or an (N,) boolean mask. ``core``: vertices
     moving at least this fraction of the region's largest displacement keep
-    weight 1 (the gauge, see below; 1.0 holds only the farthest-moving one).
+    weight 1 (the gauge, ``docs/fitting.md``; 1.0 holds only the farthest-moving one).
     Weights below ``min_weight`` are dropped from the region.
     ``value_range``: the new parameter's (min, max). ``max_iterations``:
     rounds of the smoothness alternation.
@@ -189,9 +191,10 @@ def fit_pose(vertices, displacements, kind: str = "rotation", *, edges=None, reg
         raise FittingError(f"the pose has {len(D)} displacement vectors, the mesh {len(P)} vertices")
     if kind not in FIT_KINDS:
         raise FittingError(f"unknown fit kind '{kind}' (use {', '.join(FIT_KINDS)})")
-    for what, value, low in (("smoothness", smoothness, 0.0), ("core", core, 1e-9)):
-        if not (isinstance(value, (int, float)) and np.isfinite(value) and low <= value and (what != "core" or value <= 1)):
-            raise FittingError(f"{what} must be a number in {'[0, ∞)' if what == 'smoothness' else '(0, 1]'}, not {value!r}")
+    if not (_is_number(smoothness) and smoothness >= 0):
+        raise FittingError(f"smoothness must be a number ≥ 0, not {smoothness!r}")
+    if not (_is_number(core) and 0 < core <= 1):
+        raise FittingError(f"core must be a number in (0, 1], not {core!r}")
     allowed = _region_indices(region, len(P))
     moving = np.linalg.norm(D[allowed], axis=1) > MOVING_MM
     if not moving.any():
@@ -222,6 +225,8 @@ def fit_pose(vertices, displacements, kind: str = "rotation", *, edges=None, reg
         x, w, rounds = _fit_motion(motion, x0, Dr, B, mu, pin, max_iterations)
         omega, pivot = unpack(x)
         angle = float(np.linalg.norm(omega))
+        if angle < 1e-12:
+            raise FittingError("the fitted rotation does not turn: the pose moves the region like a translation")
         axis = omega / angle
         centroid = (w @ Pr) / w.sum()
         pivot = pivot + ((centroid - pivot) @ axis) * axis      # the axis point nearest the moving part
@@ -229,8 +234,7 @@ def fit_pose(vertices, displacements, kind: str = "rotation", *, edges=None, reg
                               **common)
     else:
         x, w, rounds = _fit_motion(lambda v, rows=slice(None): np.broadcast_to(v, Dr[rows].shape),
-                                   _initial_direction(Dr), Dr, B, mu,
-                                   pin, max_iterations)
+                                   _initial_direction(Dr), Dr, B, mu, pin, max_iterations)
         parameter = Parameter(name, TRANSLATION, direction=x, **common)
     w = np.where(w >= min_weight, np.clip(w, 0.0, 1.0), 0.0)
     keep = w > 0
@@ -260,7 +264,7 @@ def _fit_motion(motion, x0, D, B, mu, pin, max_iterations):
     solve for its own unknowns, so the objective never rises. Returns ``x``,
     the weights and the number of alternation rounds.
     """
-    lm = dict(method="lm", xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=5000)
+    lm = dict(method="lm", xtol=1e-10, ftol=1e-10, gtol=1e-10, max_nfev=1000)
 
     def residual(x):
         R = motion(x)
@@ -273,6 +277,8 @@ def _fit_motion(motion, x0, D, B, mu, pin, max_iterations):
     for it in range(1, max_iterations + 1):
         w = _weight_step(motion(x), D, B, mu, pin)
         use = np.flatnonzero(w > 0)
+        if 3 * len(use) < len(x):               # too few weighted vertices to move the transform
+            break
         x = least_squares(lambda x: (D[use] - w[use, None] * motion(x, use)).ravel(), x, **lm).x
         cost = _cost(D, w[:, None] * motion(x), w, B, mu)
         if cost_before - cost <= 1e-4 * cost:       # the rounds gain < 1 % in all (docs/fitting.md)
@@ -299,10 +305,10 @@ def _initial_rotation(P, D):
         axis = np.cross(move, np.eye(3)[np.argmin(np.abs(move))])
         axis /= np.linalg.norm(axis)
         radius = 1000.0 * max(1.0, float(np.ptp(P, axis=0).max()))
-        pivot = ca - radius * np.cross(axis, move / np.linalg.norm(move))
+        pivot = ca + radius * np.cross(axis, move / np.linalg.norm(move))     # so ca starts off along move
         return axis * (np.linalg.norm(move) / radius), pivot
     A = R.T                                                  # row convention: b ≈ a · A + t
-    pivot = np.linalg.lstsq((np.eye(3) - A).T, cb - ca @ A, rcond=1e-8)[0]   # pivot · (I − A) = t, bar the slide
+    pivot = np.linalg.lstsq((np.eye(3) - A).T, cb - ca @ A, rcond=1e-8)[0]   # pivot·(I − A) = t, bar the slide
     return omega, pivot
 
 
@@ -415,10 +421,10 @@ def _rotation_matrix(omega):
 
 
 def _rotation_vector(R):
-    """Inverse of :func:`_rotation_matrix` for angles below 180°."""
-    s = np.array([R[2, 1] - R[1, 2], R[0, 2] - R[2, 0], R[1, 0] - R[0, 1]]) / 2.0
-    sin, cos = np.linalg.norm(s), (np.trace(R) - 1.0) / 2.0
-    return s * (np.arctan2(sin, cos) / sin) if sin > 1e-15 else np.zeros(3)
+    """The rotation vector (axis × angle, radians) of a rotation matrix, also near 180°."""
+    from scipy.spatial.transform import Rotation
+
+    return Rotation.from_matrix(R).as_rotvec()
 
 
 # -- mesh, region, and input checks ----------------------------------------------
@@ -521,6 +527,10 @@ def _points(values, what) -> np.ndarray:
         raise FittingError(f"{what}: {int(bad.sum())} vertices have non-finite coordinates "
                            f"(first: vertex {int(np.flatnonzero(bad)[0])})")
     return a
+
+
+def _is_number(value) -> bool:
+    return isinstance(value, (int, float, np.number)) and bool(np.isfinite(value))
 
 
 def _rms(a) -> float:

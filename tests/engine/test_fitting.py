@@ -133,6 +133,16 @@ def test_translation_with_noise_is_within_tolerance():
     assert fit.residual_rms_mm < 1.1 * sigma * np.sqrt(3)
 
 
+def test_a_translation_fitted_as_a_rotation_turns_about_a_distant_axis():
+    """§2.2.1: "translation can be in practice approximated by a rotation with large radius"."""
+    fit = fit_pose(V, translation_pose(), "rotation", edges=EDGES, smoothness=0.0)
+    p = fit.parameter
+    d = V.mean(axis=0) - p.pivot
+    assert np.linalg.norm(d - (d @ p.axis) * p.axis) > 1e4              # mm from the axis
+    assert abs(p.axis @ DIRECTION) < 1e-3 * np.linalg.norm(DIRECTION)   # the axis lies across the motion
+    assert fit.residual_max_mm < 0.01
+
+
 def test_field_translation_reproduces_the_pose_exactly_in_the_region():
     pose = rotation_pose()
     fit = fit_pose(V, pose, "field")
