@@ -47,7 +47,8 @@ def read_qtm_tsv(path: str | Path) -> Recording:
         if not key[:1].isalpha() or key.lower() == "frame":
             break
         if key.upper() != key or " " in key:
-            raise MarkerFileError(f"'{key}' is neither a QTM header key nor a data row", file=path, line=i + 1)
+            shown = key if len(key) <= 40 else key[:40] + "…"
+            raise MarkerFileError(f"'{shown}' is neither a QTM header key nor a data row", file=path, line=i + 1)
         if key == "EVENT":
             if len(cells) < 4:
                 raise MarkerFileError("an EVENT line needs a name, a frame number and a time", file=path,
@@ -83,9 +84,9 @@ def read_qtm_tsv(path: str | Path) -> Recording:
     data_lines = [ln.rstrip("\t") for ln in lines[first_data:]]
     while data_lines and not data_lines[-1].strip():
         data_lines.pop()
-    if not data_lines and n_frames:
+    if not data_lines:
         raise MarkerFileError(f"the file ends before its data (NO_OF_FRAMES is {n_frames})", file=path,
-                              line=len(lines))
+                              line=max(len(lines), 1))
     if columns is None:  # no column-header row: 3·M values, or frame and time first
         first = data_lines[0].split("\t")
         if len(first) == 3 * n_markers + 2:

@@ -58,7 +58,7 @@ def detect_format(path: str | Path) -> str:
     """The format of a marker file from its content, else its extension: ``tsv``, ``c3d``, ``trc`` or ``csv``."""
     path = Path(path)
     head = _head_bytes(path)
-    if len(head) >= 512 and head[1] == 0x50:  # C3D: second byte of the header is the key 80
+    if len(head) >= 512 and head[1] == 0x50 and not 32 <= head[0] < 127:  # C3D: block pointer, then key 80
         return "c3d"
     text = head.decode("latin-1").lstrip("\ufeff\xef\xbb\xbf")
     first = text.split("\n", 1)[0].strip()
@@ -141,7 +141,7 @@ def parse_number(text: str, what: str, path: Path, line: int) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise MarkerFileError(f"{what} '{text.strip()}' is not a number", file=path, line=line) from None
+        raise MarkerFileError(f"{what} '{_shorten(text.strip())}' is not a number", file=path, line=line) from None
     return value
 
 
@@ -218,7 +218,7 @@ def _parse_slow(lines, first_line, n_columns, path, delimiter, empty_is_missing,
             try:
                 row.append(float(cell))
             except ValueError:
-                shown = cell.strip() or "an empty cell"
+                shown = _shorten(cell.strip()) or "an empty cell"
                 raise MarkerFileError(f"column {j + 1}: '{shown}' is not a number" if cell.strip()
                                       else f"column {j + 1}: {shown} where a number was expected",
                                       file=path, line=number) from None
@@ -238,3 +238,7 @@ def nan_partial_samples(positions: np.ndarray) -> np.ndarray:
     bad = np.any(~np.isfinite(positions), axis=-1)
     positions[bad] = np.nan
     return positions
+
+
+def _shorten(text: str, n: int = 40) -> str:
+    return text if len(text) <= n else text[:n] + "…"

@@ -301,6 +301,14 @@ def test_format_detection_by_content_then_extension(tmp_path, motion):
     odd.write_text("hello\n")
     with pytest.raises(MarkerFileError, match=r"notes.dat:1: unknown marker file format"):
         read_marker_file(odd)
+    text = tmp_path / "xp.tsv"  # a text file whose second byte is C3D's key 'P' is still text
+    text.write_text("XP" + "a" * 600 + "\n")
+    with pytest.raises(MarkerFileError, match=r"xp.tsv:1: 'XPa+…' is neither a QTM header key nor a data row"):
+        read_marker_file(text)
+    empty = tmp_path / "empty.tsv"
+    empty.write_text("NO_OF_FRAMES\t0\nNO_OF_MARKERS\t1\nFREQUENCY\t60\nMARKER_NAMES\ta\n")
+    with pytest.raises(MarkerFileError, match=r"empty.tsv:4: the file ends before its data"):
+        read_marker_file(empty)
 
 
 # ---------------------------------------------------------------------------
