@@ -125,7 +125,34 @@ def select_frames(phones, n_frames: int, rate_hz: float, selectors=("V", "C"),
             continue
         chosen.setdefault(frame, label)
     frames = np.array(sorted(chosen), dtype=np.int64)
-    return FrameSelection(frames, [chosen[f] for f in frames], "phones " + " ".join(selectors), outside)
+    description = "phones " + " ".join(selectors) + (f" position={position:g}" if position != 0.5 else "")
+    return FrameSelection(frames, [chosen[f] for f in frames], description, outside)
+
+
+def reselect_frames(selection: str, phones, n_frames: int, rate_hz: float) -> np.ndarray:
+    """The frames an :attr:`Articulation.selection` text describes, chosen again in the same recording.
+
+    ``""`` → every frame; ``"phones V C"`` (optionally ``position=0.3``) →
+    :func:`select_frames`; ``"frames 0-99,120"`` → :func:`parse_frame_list`.
+    Frames later left out for missing markers are included. Use it to find
+    the frames a PCA did *not* analyse (held-out frames of the same session).
+
+    >>> reselect_frames("frames 3,10-12", [], 100, 60.0).tolist()
+    [3, 10, 11, 12]
+    """
+    text = str(selection).strip()
+    if not text:
+        return np.arange(n_frames)
+    kind, _, rest = text.partition(" ")
+    if kind == "frames":
+        return parse_frame_list(rest, n_frames).frames
+    if kind == "phones":
+        words = rest.split()
+        position = 0.5
+        if words and words[-1].startswith("position="):
+            position = float(words.pop()[len("position="):])
+        return select_frames(phones, n_frames, rate_hz, words, position).frames
+    raise MocapError(f"cannot tell which frames were analysed from the selection {text!r}")
 
 
 def parse_frame_list(text: str, n_frames: int | None = None) -> FrameSelection:
@@ -153,6 +180,17 @@ def parse_frame_list(text: str, n_frames: int | None = None) -> FrameSelection:
         frames = {f for f in frames if f < n_frames}
     ordered = np.array(sorted(frames), dtype=np.int64)
     return FrameSelection(ordered, [""] * len(ordered), f"frames {text}", outside)
+
+
+def _frame_ranges(frames, limit: int = 30000) -> str:
+    """``"frames 0-4,7,10-20"`` for a frame list (``parse_frame_list`` reads it back); a count if too long."""
+    f = np.unique(np.asarray(frames, dtype=np.int64).reshape(-1))
+    if not len(f):
+        return "frames (none)"
+    breaks = np.flatnonzero(np.diff(f) != 1)
+    starts, ends = f[np.r_[0, breaks + 1]], f[np.r_[breaks, len(f) - 1]]
+    text = "frames " + ",".join(str(a) if a == b else f"{a}-{b}" for a, b in zip(starts, ends))
+    return text if len(text) <= limit else f"{len(f)} listed frames"    # HDF5 attributes stay under 64 kB
 
 
 def _parse_selector(text: str):
@@ -394,7 +432,7 @@ def multistage_pca(source, positions=None, *, stages=DEFAULT_STAGES, frames=None
     if isinstance(frames, FrameSelection):
         selection, frames = frames.description, frames.frames
     else:
-        selection = "" if frames is None else f"{len(frames)} listed frames"
+        selection = "" if frames is None else _frame_ranges(frames)
     n_total = positions.shape[0]
     frames = np.arange(n_total) if frames is None else np.unique(np.asarray(frames, dtype=np.int64).reshape(-1))
     bad = frames[(frames < 0) | (frames >= n_total)]

@@ -218,6 +218,18 @@ def test_explicit_frame_lists():
         parse_frame_list("3,x")
 
 
+def test_the_analysed_frames_can_be_chosen_again_from_the_selection_text(clean):
+    args = (clean.phones, clean.n_frames, clean.rate_hz)
+    for frames in (select_frames(*args, ["V", "a/p_p"]), select_frames(*args, "C", position=0.25),
+                   parse_frame_list("0-50:5,99", clean.n_frames), [7, 3, 40, 41, 42, 43]):
+        art = multistage_pca(clean.markers, clean.positions, frames=frames)
+        np.testing.assert_array_equal(pca_mod.reselect_frames(art.selection, *args), art.frames)
+    art = multistage_pca(clean.markers, clean.positions)
+    assert art.selection == "" and len(pca_mod.reselect_frames(art.selection, *args)) == clean.n_frames
+    with pytest.raises(MocapError, match="cannot tell"):
+        pca_mod.reselect_frames("magic", *args)
+
+
 def test_frames_with_missing_markers_are_excluded_and_counted(clean):
     positions = clean.positions.copy()
     positions[5:15, clean.markers.index("8.3")] = np.nan         # an analysed marker: excluded
