@@ -18,6 +18,8 @@ model's sparse :class:`~engine.model.InfluenceRegion`).
   :func:`clear_weights`, :func:`mirror_weights` / :func:`mirror_region`,
   :func:`smooth_weights`, :func:`grow_weights`, :func:`shrink_weights`.
 * :func:`heat_colors` — weights to viewport colours.
+* :class:`LivePreview` — the posed mesh following the weights dab by dab,
+  without rebuilding the model's deformer.
 
 A stroke at a Python prompt:
 
@@ -36,10 +38,12 @@ A stroke at a Python prompt:
 >>> step.undo(dense.weights); head.set_region("brow_raise", dense.to_region())   # undo, exactly
 """
 
-from .brush import FALLOFFS, MODES, Brush, brush_footprint, compute_dab, compute_gradient, sample_weight
+from .brush import (FALLOFFS, MODES, Brush, brush_footprint, compute_dab, compute_gradient, paintable_mask,
+                    sample_weight)
 from .changes import Change, Stroke
 from .heatmap import WEIGHT_RAMP, heat_colors
 from .mirror import MirrorMap, mirror_map, mirrored_points, mirrored_vectors
+from .preview import LivePreview
 from .topology import PaintContext, mirrored_part_name
 from .weights import (LEFT_TO_RIGHT, RIGHT_TO_LEFT, DenseRegion, clear_weights, grow_weights, group1_names,
                       invert_weights, mirror_region, mirror_targets, mirror_weights, normalise_group1,
@@ -47,8 +51,9 @@ from .weights import (LEFT_TO_RIGHT, RIGHT_TO_LEFT, DenseRegion, clear_weights, 
 
 __all__ = [
     "FALLOFFS", "LEFT_TO_RIGHT", "MODES", "RIGHT_TO_LEFT", "WEIGHT_RAMP", "Brush", "Change", "DenseRegion",
-    "MirrorMap", "PaintContext", "Stroke", "brush_footprint", "clear_weights", "compute_dab", "compute_gradient",
-    "grow_weights", "group1_names", "heat_colors", "invert_weights", "mirror_map", "mirror_region",
-    "mirror_targets", "mirror_weights", "mirrored_part_name", "mirrored_points", "mirrored_vectors",
-    "normalise_group1", "normalise_stack", "sample_weight", "shrink_weights", "smooth_weights",
+    "LivePreview", "MirrorMap", "PaintContext", "Stroke", "brush_footprint", "clear_weights", "compute_dab",
+    "compute_gradient", "grow_weights", "group1_names", "heat_colors", "invert_weights", "mirror_map",
+    "mirror_region", "mirror_targets", "mirror_weights", "mirrored_part_name", "mirrored_points",
+    "mirrored_vectors", "normalise_group1", "normalise_stack", "paintable_mask", "sample_weight",
+    "shrink_weights", "smooth_weights",
 ]

@@ -144,6 +144,33 @@ def _facing(ctx, idx, view_direction, camera_position):
     return n[:, 0] * v[0] + n[:, 1] * v[1] + n[:, 2] * v[2] < 0     # not n @ v: BLAS set-up costs more here
 
 
+def paintable_mask(ctx, part=None, front_faces_only=False, view_direction=None, camera_position=None):
+    """(N,) bool: vertices of ``part`` facing the viewer, or None when nothing is excluded.
+
+    Cached on the context for the last few (part, view) combinations: the
+    camera does not move during a stroke, so every dab after the first
+    reads the mask instead of testing normals again.
+    """
+    if front_faces_only and view_direction is None and camera_position is None:
+        raise UserError("front-faces-only painting needs the view direction or the camera position")
+    if part is None and not front_faces_only:
+        return None
+    view = None
+    if front_faces_only:
+        view = ("eye", *_point(camera_position)) if camera_position is not None else ("dir", *_point(view_direction))
+    key = (part, view)
+    cache = ctx._paintable
+    mask = cache.get(key)
+    if mask is None:
+        mask = ctx.part_mask(part)
+        if front_faces_only:
+            mask &= _facing(ctx, np.arange(ctx.n_vertices), view_direction, camera_position)
+        if len(cache) >= 8:
+            cache.pop(next(iter(cache)))
+        cache[key] = mask
+    return mask
+
+
 def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_position=None,
                     pressure: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
     """The vertices a dab reaches and the strength it has at each: ``(indices, a)``, indices sorted.
@@ -155,14 +182,11 @@ def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_pos
     mirror images (strength the larger of the two where they overlap).
     """
     p = _point(point)
-    if brush.front_faces_only and view_direction is None and camera_position is None:
-        raise UserError("front-faces-only painting needs the view direction or the camera position")
+    ok = paintable_mask(ctx, brush.part, brush.front_faces_only, view_direction, camera_position)
     found = ctx.tree.query_ball_point(p, brush.radius, return_sorted=False)
     idx = np.fromiter(found, dtype=np.int64, count=len(found))
-    if brush.part is not None and len(idx):
-        idx = idx[ctx.vertex_part[idx] == ctx.part_index(brush.part)]
-    if brush.front_faces_only and len(idx):
-        idx = idx[_facing(ctx, idx, view_direction, camera_position)]
+    if ok is not None:
+        idx = idx[ok[idx]]
     idx = np.sort(idx)
     if brush.connected and len(idx):
         seed = int(ctx.tree.query(p)[1])                # usually the nearest vertex passes the filters…
@@ -170,7 +194,8 @@ def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_pos
         if pos >= len(idx) or idx[pos] != seed:
             seed = ctx.nearest_vertex(p, idx)           # …else the nearest one that does
         idx = ctx.connected_within(seed, idx)
-    d = np.linalg.norm(ctx.vertices[idx] - p, axis=1)
+    diff = ctx.vertices[idx] - p
+    d = np.sqrt(np.einsum("ij,ij->i", diff, diff))
     a = brush.falloff_values(d / brush.radius) * (brush.strength * float(np.clip(pressure, 0.0, 1.0)))
     if brush.mirror and len(idx):
         idx, a = _with_mirror(ctx, idx, a)
@@ -244,15 +269,12 @@ def compute_gradient(ctx, weights: np.ndarray, start, end, *, start_value: float
     length2 = float(axis @ axis)
     if length2 == 0:
         raise UserError("a gradient needs two different points")
-    ok = ctx.part_mask(part)
+    ok = paintable_mask(ctx, part, front_faces_only, view_direction, camera_position)
+    ok = np.ones(ctx.n_vertices, dtype=bool) if ok is None else ok.copy()
     if mask is not None:
         ok &= np.asarray(mask, dtype=bool)
     if connected:
-        ok &= ctx.components == ctx.components[ctx.nearest_vertex(s)]
-    if front_faces_only:
-        if view_direction is None and camera_position is None:
-            raise UserError("front-faces-only painting needs the view direction or the camera position")
-        ok &= _facing(ctx, np.arange(ctx.n_vertices), view_direction, camera_position)
+        ok &= ctx.components == ctx.components[ctx.nearest_vertex(s, np.flatnonzero(ok))]
     if mirror and s[0] != ctx.mirror.center:
         # the ramp is drawn on the side of ``start`` and copied onto the other side
         x = ctx.vertices[:, 0] - ctx.mirror.center

@@ -142,6 +142,7 @@ class PaintContext:
         self.n_components, self.components = csgraph.connected_components(self.adjacency, directed=False)
         self.mirror_tolerance = float(mirror_tolerance)
         self._mirror = None
+        self._paintable: dict = {}        # (part, view) → mask, filled by brush.paintable_mask
 
     # -- queries -----------------------------------------------------------------
     def neighbours(self, i: int) -> np.ndarray:

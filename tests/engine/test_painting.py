@@ -21,12 +21,12 @@ import engine
 from engine.errors import UserError
 from engine.model import InfluenceRegion, Model
 from engine.painting import (FALLOFFS, LEFT_TO_RIGHT, RIGHT_TO_LEFT, WEIGHT_RAMP, Brush, Change, DenseRegion,
-                             PaintContext, Stroke, brush_footprint, clear_weights, compute_dab, compute_gradient,
+                             LivePreview, PaintContext, Stroke, brush_footprint, clear_weights, compute_dab, compute_gradient,
                              grow_weights, group1_names, heat_colors, invert_weights, mirror_map, mirror_region,
                              mirror_weights, mirrored_part_name, normalise_group1, normalise_stack, sample_weight,
                              shrink_weights, smooth_weights)
 
-from synthetic import random_model
+from synthetic import random_model, random_values
 
 DOWN = (0.0, 0.0, -1.0)        # a camera above the grid looking down −Z sees its front faces
 
@@ -627,12 +627,35 @@ def test_heat_colors():
 
 
 # ---------------------------------------------------------------------------
+# Live preview
+# ---------------------------------------------------------------------------
+
+@settings(max_examples=30, deadline=None)
+@given(seed=st.integers(0, 10_000))
+def test_live_preview_matches_the_deformer(seed):
+    """Paint random weights into any parameter (rigid or leaf, field or matrix) under a random pose: the
+    preview updated at the changed vertices equals Model.deform after writing the region back."""
+    rng = np.random.default_rng(seed)
+    model = random_model(rng, n_vertices=30, n_parameters=6, depth=3)
+    name = model.parameters.names[int(rng.integers(len(model.parameters.names)))]
+    values = random_values(rng, model)
+    dense = DenseRegion.from_model(model, name)
+    live = LivePreview(model, name, dense, values)
+    assert np.allclose(live.positions, model.deform(values), atol=1e-9)
+    changed = np.flatnonzero(rng.random(model.n_vertices) < 0.4)
+    dense.weights[changed] = np.where(rng.random(len(changed)) < 0.2, 0.0, rng.random(len(changed)))
+    live.update(changed)
+    model.set_region(name, dense.to_region())
+    assert np.allclose(live.positions, model.deform(values), atol=1e-9)
+
+
+# ---------------------------------------------------------------------------
 # Docs and the import rule
 # ---------------------------------------------------------------------------
 
 @pytest.mark.parametrize("name", ["engine.painting", "engine.painting.topology", "engine.painting.mirror",
                                   "engine.painting.brush", "engine.painting.weights", "engine.painting.changes",
-                                  "engine.painting.heatmap"])
+                                  "engine.painting.heatmap", "engine.painting.preview"])
 def test_docstring_examples(name):
     result = doctest.testmod(importlib.import_module(name), optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert result.failed == 0 and result.attempted > 0
