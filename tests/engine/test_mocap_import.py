@@ -594,6 +594,18 @@ def test_phones_from_festival_timing_as_is_or_stretched():
     assert stretched[-1] == (360.0, 800.0, "a:")
 
 
+@pytest.mark.skipif(__import__("shutil").which("festival") is None, reason="Festival is not installed")
+def test_cli_phones_from_real_festival(tmp_path, motion, capsys):
+    path = tmp_path / "take.tsv"
+    write_tsv(path, IDS, motion[2])
+    out = tmp_path / "s.h5"
+    assert main(["mocap", "import", str(path), "--text", "Papu", "--stretch-text", "-o", str(out)]) == 0
+    phones = load_session(out).phones
+    assert [p[2] for p in phones if p[2] != "#"] == ["p", "a", "p", "u"]
+    assert phones[-1][1] == pytest.approx(len(motion[2]) * 1000 / RATE)
+    assert "phones: " in capsys.readouterr().out
+
+
 # ---------------------------------------------------------------------------
 # the whole import and the session file
 # ---------------------------------------------------------------------------
