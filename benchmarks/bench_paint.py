@@ -14,6 +14,8 @@ surface, painting the jaw's influence region; every dab is
     the (N, 3) colour buffer
 
 — what the workbench does per mouse move before handing the colours to VTK.
+The "live preview" rows add ``LivePreview.update`` (the jaw held at 0.5
+while its weights are painted: the posed positions of the changed vertices).
 Brush: add, strength 0.3, smooth falloff, front faces only, surface-connected
 selection, radius 15 mm and 40 mm; extra rows with the mirror on and the
 smooth brush. Goal (issue 7): under 16 ms on the default head and under 50 ms
@@ -48,7 +50,7 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import engine  # noqa: E402
-from engine.painting import Brush, DenseRegion, PaintContext, Stroke, heat_colors  # noqa: E402
+from engine.painting import Brush, DenseRegion, LivePreview, PaintContext, Stroke, heat_colors  # noqa: E402
 from engine.painting.mirror import mirror_map  # noqa: E402
 from engine.painting.heatmap import WEIGHT_RAMP  # noqa: E402
 from engine.subdivide import subdivide  # noqa: E402
@@ -75,15 +77,23 @@ def percentiles(times_ms):
     return float(np.median(t)), float(np.percentile(t, 95)), float(t.max())
 
 
-def time_dabs(ctx, brush, path, base, start):
+def time_dabs(ctx, brush, path, base, start, preview=None):
     weights = start.copy()
     colors = heat_colors(weights, base)
     stroke = Stroke(weights)
+    live = None
+    if preview is not None:
+        model, name = preview
+        dense = DenseRegion.from_model(model, name)
+        dense.weights = weights
+        live = LivePreview(model, name, dense, {name: 0.5})
     times, changed = [], []
     for p in path:
         t0 = time.perf_counter()
         change = stroke.dab(ctx, brush, p, VIEW)
         colors[change.indices] = heat_colors(change.after, base)
+        if live is not None:
+            live.update(change.indices)
         times.append((time.perf_counter() - t0) * 1e3)
         changed.append(len(change))
     t0 = time.perf_counter()
@@ -162,9 +172,11 @@ def main(argv=None):
                                       mirror=True)),
                 ("add, not connected", Brush("add", radius, 0.3, "smooth", front_faces_only=True, connected=False)),
                 ("smooth", Brush("smooth", radius, 0.5, "smooth", front_faces_only=True, connected=True)),
+                ("add + live preview", Brush("add", radius, 0.3, "smooth", front_faces_only=True, connected=True)),
             ]
             for name, brush in variants:
-                times, changed, finish_ms, n_step = time_dabs(ctx, brush, path, base, start)
+                preview = (model, "jaw_open") if "preview" in name else None
+                times, changed, finish_ms, n_step = time_dabs(ctx, brush, path, base, start, preview)
                 med, p95, worst = percentiles(times)
                 row = dict(mesh=label, vertices=model.n_vertices, radius=radius, brush=name, median_ms=med,
                            p95_ms=p95, max_ms=worst, changed_median=float(np.median(changed)),
@@ -177,7 +189,7 @@ def main(argv=None):
                 if "peer_median_ms" in row:
                     extra = (f" | peer {row['peer_median_ms']:.2f} / {row['peer_p95_ms']:.2f} ms"
                              f" | floor {row['floor_median_ms']:.3f} / {row['floor_p95_ms']:.3f} ms")
-                print(f"  r={radius:>4.0f} mm {name:<20} dab median {med:6.2f} ms  p95 {p95:6.2f} ms  "
+                print(f"  r={radius:>4.0f} mm {name:<19} dab median {med:6.2f} ms  p95 {p95:6.2f} ms  "
                       f"max {worst:6.2f} ms  ({row['changed_median']:.0f} vertices changed per dab; "
                       f"stroke.finish {finish_ms:.2f} ms){extra}")
     if args.json:

@@ -187,7 +187,7 @@ def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_pos
     idx = np.fromiter(found, dtype=np.int64, count=len(found))
     if ok is not None:
         idx = idx[ok[idx]]
-    idx = np.sort(idx)
+    idx = _sorted_unique(ctx, idx)
     if brush.connected and len(idx):
         seed = int(ctx.tree.query(p)[1])                # usually the nearest vertex passes the filters…
         pos = np.searchsorted(idx, seed)
@@ -203,16 +203,25 @@ def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_pos
     return idx[nz], a[nz]
 
 
+def _sorted_unique(ctx, idx):
+    """Sorted distinct indices: a scan of an N-byte mask beats sorting once a dab reaches a few thousand vertices."""
+    if len(idx) < 2048:
+        return np.unique(idx)
+    mark = np.zeros(ctx.n_vertices, dtype=bool)
+    mark[idx] = True
+    return np.flatnonzero(mark)
+
+
 def _with_mirror(ctx, idx, a):
+    """The footprint and its mirror image; where they overlap, the stronger of the two strengths."""
     m = ctx.mirror.map[idx]
     ok = m >= 0
-    all_idx = np.concatenate([idx, m[ok]])
-    all_a = np.concatenate([a, a[ok]])
-    order = np.lexsort((-all_a, all_idx))               # per vertex, the stronger of the two first
-    all_idx, all_a = all_idx[order], all_a[order]
-    first = np.ones(len(all_idx), dtype=bool)
-    first[1:] = all_idx[1:] != all_idx[:-1]
-    return all_idx[first], all_a[first]
+    strength = np.zeros(ctx.n_vertices)
+    strength[m[ok]] = a[ok]
+    np.maximum(strength[idx], a, out=a)
+    strength[idx] = a
+    both = _sorted_unique(ctx, np.concatenate([idx, m[ok]]))
+    return both, strength[both]
 
 
 def _blend(ctx, weights, mode, idx, a, target):
