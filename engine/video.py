@@ -54,6 +54,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from .errors import UserError
+from .raster import draw_text
 
 FFMPEG_PACKAGE = "ffmpeg"            # Debian package with both ffmpeg and ffprobe
 #: H.264 settings: a fast preset (the frames are simple, the machine small), 4:2:0 for every player.
@@ -638,7 +639,7 @@ def contact_sheet(source, columns: int = 4, count: int = 12, width: int = 200,
         r, c = divmod(k, columns)
         y, x = gap + r * (th + label_h + gap), gap + c * (tw + gap)
         sheet[y:y + th, x:x + tw] = image
-        _draw_text(sheet, label, x, y + th + 3, text_scale, SHEET_TEXT)
+        draw_text(sheet, label, x, y + th + 3, SHEET_TEXT, scale=text_scale)
     if path is not None:
         if Path(path).suffix.lower() != ".png":
             raise UserError("the contact sheet must be written as .png", file=path)
@@ -665,34 +666,3 @@ def _shrink(image: np.ndarray, factor: int) -> np.ndarray:
     h, w = (image.shape[0] // factor) * factor, (image.shape[1] // factor) * factor
     blocks = image[:h, :w].reshape(h // factor, factor, w // factor, factor, 3).astype(np.float32)
     return np.round(blocks.mean(axis=(1, 3))).astype(np.uint8)
-
-
-# 5 × 7 glyphs for labels: the characters a frame label uses
-_GLYPHS = {
-    "0": ("01110", "10001", "10011", "10101", "11001", "10001", "01110"),
-    "1": ("00100", "01100", "00100", "00100", "00100", "00100", "01110"),
-    "2": ("01110", "10001", "00001", "00010", "00100", "01000", "11111"),
-    "3": ("11110", "00001", "00001", "01110", "00001", "00001", "11110"),
-    "4": ("00010", "00110", "01010", "10010", "11111", "00010", "00010"),
-    "5": ("11111", "10000", "11110", "00001", "00001", "10001", "01110"),
-    "6": ("00110", "01000", "10000", "11110", "10001", "10001", "01110"),
-    "7": ("11111", "00001", "00010", "00100", "01000", "01000", "01000"),
-    "8": ("01110", "10001", "10001", "01110", "10001", "10001", "01110"),
-    "9": ("01110", "10001", "10001", "01111", "00001", "00010", "01100"),
-    ".": ("00000", "00000", "00000", "00000", "00000", "01100", "01100"),
-    "#": ("01010", "01010", "11111", "01010", "11111", "01010", "01010"),
-    "s": ("00000", "00000", "01111", "10000", "01110", "00001", "11110"),
-    "-": ("00000", "00000", "00000", "11111", "00000", "00000", "00000"),
-    " ": ("00000",) * 7,
-}
-
-
-def _draw_text(image: np.ndarray, text: str, x: int, y: int, scale: int, colour) -> None:
-    """Write ``text`` with the 5 × 7 glyphs, top-left at (x, y), clipped to the image."""
-    for ch in text:
-        glyph = _GLYPHS.get(ch, _GLYPHS[" "])
-        mask = np.array([[c == "1" for c in row] for row in glyph]).repeat(scale, 0).repeat(scale, 1)
-        h, w = mask.shape
-        region = image[y:y + h, x:x + w]
-        region[mask[:region.shape[0], :region.shape[1]]] = colour
-        x += 6 * scale

@@ -47,6 +47,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from ..raster import draw_box, draw_dot, draw_line, draw_text
 from .errors import MocapError
 
 ARTICULATION_FORMAT = "artificial-person-articulation"
@@ -770,18 +771,18 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
     extent = max(float(np.ptp(pts, axis=0).max()), 1e-6)
     scale = 0.8 * PANEL / extent
     grey, red, blue = (150, 150, 150), (210, 30, 30), (30, 60, 210)
-    _text_at(image, "GREY MEAN", 8, 4, grey)
-    _text_at(image, f"RED +{amplitude:g} SD", 140, 4, red)
-    _text_at(image, f"BLUE -{amplitude:g} SD", 290, 4, blue)
+    draw_text(image, "GREY MEAN", 8, 4, grey)
+    draw_text(image, f"RED +{amplitude:g} SD", 140, 4, red)
+    draw_text(image, f"BLUE -{amplitude:g} SD", 290, 4, blue)
     for col, (title, ax, ay) in enumerate(views):
-        _text_at(image, title, col * PANEL + PANEL // 2 - 6 * len(title) // 2, HEADER + 4, (0, 0, 0))
+        draw_text(image, title, col * PANEL + PANEL // 2 - 6 * len(title) // 2, HEADER + 4, (0, 0, 0))
     contour = [art.markers.index(m) for m in LIP_CONTOUR if m in art.markers]
     for k in range(n_rows):
         top = 2 * HEADER + k * (PANEL + HEADER)
         label = f"PC{k + 1}  STAGE {art.stages[k]}  {100 * art.explained_variance_ratio[k]:.1f}%"
         if gains[k] != 1:
             label += f"  X{gains[k]:g}"
-        _text_at(image, label, 8, top + 6, (0, 0, 0))
+        draw_text(image, label, 8, top + 6, (0, 0, 0))
         shown = gains[k] * amplitude * art.components[k]
         for col, (_, ax, ay) in enumerate(views):
             left = col * PANEL
@@ -791,19 +792,19 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
                 return np.column_stack([left + PANEL / 2 + (p[:, ax] - centre[0]) * scale,
                                         top + HEADER + PANEL / 2 - (p[:, ay] - centre[1]) * scale])
 
-            _rect(image, left, top + HEADER, PANEL, PANEL - 2, (225, 225, 225))
+            draw_box(image, left, top + HEADER, PANEL, PANEL - 2, (225, 225, 225))
             mean_px = to_px(art.mean)
             plus_px = to_px(art.mean + shown)
             minus_px = to_px(art.mean - shown)
             for shape, colour in ((mean_px, grey), (minus_px, blue), (plus_px, red)):
                 if len(contour) > 1:
                     for a, b in zip(contour[:-1], contour[1:]):
-                        _line(image, shape[a], shape[b], colour)
+                        draw_line(image, shape[a], shape[b], colour)
             for i in range(len(art.markers)):
-                _line(image, mean_px[i], plus_px[i], red)
-                _dot(image, minus_px[i], blue, 2)
-                _dot(image, plus_px[i], red, 2)
-                _dot(image, mean_px[i], (60, 60, 60), 2)
+                draw_line(image, mean_px[i], plus_px[i], red)
+                draw_dot(image, minus_px[i], blue, 2)
+                draw_dot(image, plus_px[i], red, 2)
+                draw_dot(image, mean_px[i], (60, 60, 60), 2)
     if path is not None:
         write_png(path, image)
     return image
@@ -819,64 +820,3 @@ def _gain(largest: float, wanted: float) -> float:
             if gain > 1 and largest * gain >= wanted:
                 return gain
     return 1e6
-
-
-def _rect(image, x, y, w, h, colour) -> None:
-    image[y, x:x + w] = colour
-    image[min(y + h, image.shape[0] - 1), x:x + w] = colour
-    image[y:y + h, x] = colour
-    image[y:y + h, min(x + w - 1, image.shape[1] - 1)] = colour
-
-
-def _dot(image, p, colour, radius: int) -> None:
-    x, y = int(round(p[0])), int(round(p[1]))
-    h, w = image.shape[:2]
-    image[max(y - radius, 0):min(y + radius + 1, h), max(x - radius, 0):min(x + radius + 1, w)] = colour
-
-
-def _line(image, a, b, colour) -> None:
-    n = int(max(abs(b[0] - a[0]), abs(b[1] - a[1]))) + 1
-    t = np.linspace(0.0, 1.0, n + 1)
-    xs = np.round(a[0] + t * (b[0] - a[0])).astype(int)
-    ys = np.round(a[1] + t * (b[1] - a[1])).astype(int)
-    h, w = image.shape[:2]
-    for dx, dy in ((0, 0), (1, 0), (0, 1)):         # two pixels thick
-        x, y = xs + dx, ys + dy
-        keep = (x >= 0) & (x < w) & (y >= 0) & (y < h)
-        image[y[keep], x[keep]] = colour
-
-
-# A 5 × 7 bitmap font for the few characters the picture needs.
-_GLYPHS = {
-    "0": "01110 10001 10011 10101 11001 10001 01110", "1": "00100 01100 00100 00100 00100 00100 01110",
-    "2": "01110 10001 00001 00010 00100 01000 11111", "3": "11110 00001 00001 01110 00001 00001 11110",
-    "4": "00010 00110 01010 10010 11111 00010 00010", "5": "11111 10000 11110 00001 00001 10001 01110",
-    "6": "00110 01000 10000 11110 10001 10001 01110", "7": "11111 00001 00010 00100 01000 01000 01000",
-    "8": "01110 10001 10001 01110 10001 10001 01110", "9": "01110 10001 10001 01111 00001 00010 01100",
-    "P": "11110 10001 10001 11110 10000 10000 10000", "C": "01110 10001 10000 10000 10000 10001 01110",
-    "S": "01111 10000 10000 01110 00001 00001 11110", "T": "11111 00100 00100 00100 00100 00100 00100",
-    "A": "01110 10001 10001 11111 10001 10001 10001", "G": "01110 10001 10000 10111 10001 10001 01111",
-    "E": "11111 10000 10000 11110 10000 10000 11111", "F": "11111 10000 10000 11110 10000 10000 10000",
-    "R": "11110 10001 10001 11110 10100 10010 10001", "O": "01110 10001 10001 10001 10001 10001 01110",
-    "N": "10001 11001 10101 10011 10001 10001 10001", "I": "01110 00100 00100 00100 00100 00100 01110",
-    "D": "11110 10001 10001 10001 10001 10001 11110", ".": "00000 00000 00000 00000 00000 01100 01100",
-    "%": "11000 11001 00010 00100 01000 10011 00011", " ": "00000 00000 00000 00000 00000 00000 00000",
-    "B": "11110 10001 10001 11110 10001 10001 11110", "L": "10000 10000 10000 10000 10000 10000 11111",
-    "U": "10001 10001 10001 10001 10001 10001 01110", "M": "10001 11011 10101 10101 10001 10001 10001",
-    "Y": "10001 10001 01010 00100 00100 00100 00100", "X": "00000 10001 01010 00100 01010 10001 00000",
-    "+": "00000 00100 00100 11111 00100 00100 00000", "-": "00000 00000 00000 11111 00000 00000 00000",
-}
-
-
-def _text_at(image, text: str, x: int, y: int, colour, size: int = 2) -> None:
-    """Draw ``text`` (characters of :data:`_GLYPHS`; others are skipped) with its top left at (x, y)."""
-    h, w = image.shape[:2]
-    for ch in text.upper():
-        glyph = _GLYPHS.get(ch)
-        if glyph is not None:
-            for r, row in enumerate(glyph.split()):
-                for c, bit in enumerate(row):
-                    if bit == "1":
-                        y0, x0 = y + r * size, x + c * size
-                        image[max(y0, 0):min(y0 + size, h), max(x0, 0):min(x0 + size, w)] = colour
-        x += 6 * size
