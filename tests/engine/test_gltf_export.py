@@ -17,9 +17,10 @@ import pytest
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, UserError, load_model
 from engine.cells import cells_to_triangles
 from engine.gltf_export import (
-    METRES_PER_MM, MODEL_VERTEX, GltfFileError, MorphTarget, _matrix, _quaternion, _rotation_from_x, export_gltf,
+    METRES_PER_MM, MODEL_VERTEX, GltfFileError, MorphTarget, _quaternion, _rotation_from_x, export_gltf,
     glb_bytes, gltf_document, parameter_targets, pose_targets, read_gltf, skeleton_parameters, target_value,
 )
+from engine.gltf_read import _quaternion_matrix as _matrix
 from engine.paths import default_model_path, reference_poses_path
 from engine.render import _PartLayout
 
