@@ -185,6 +185,8 @@ def _refine(m, mapping, exact, gi, gj, max_rounds) -> int:
     n, rounds = len(mapping), 0
     for _ in range(3):
         matched = np.flatnonzero((mapping >= 0) & ~exact)
+        # only pairs whose matched neighbourhood does not fully agree can have a better alternative
+        matched = matched[m.consistency(matched, mapping[matched]) < m.matched_neighbours(matched)]
         if len(matched) == 0:
             break
         ti, tj = m.topological_pairs(matched, free_only=False)
@@ -333,25 +335,34 @@ class _Matcher:
         return bi[mutual], bj[mutual], order[head][mutual]
 
     def grow(self, gi, gj, max_rounds) -> int:
-        """Accept pairs round by round: well-supported first, then weakly supported, then position seeds."""
+        """Accept pairs round by round: well-supported first, then weakly supported, then position seeds.
+
+        ``gi``/``gj`` are the geometric candidate pairs, sorted by ``gi``. The
+        frontier (free vertices next to matched ones) is kept up to date
+        from each round's new pairs, so a round costs what the frontier
+        holds, not the mesh size.
+        """
         mapping, n = self.mapping, self.n
+        g_ptr = np.searchsorted(gi, np.arange(n + 1))
+        free = mapping < 0
+        front = np.zeros(n, dtype=bool)
+        owner, nb = self._gather(np.flatnonzero(free))
+        front[np.flatnonzero(free)[owner[mapping[nb] >= 0]]] = True
         level, rounds = 0, 0
         while rounds < max_rounds:
             rounds += 1
-            free = mapping < 0
             if not free.any():
                 break
             if level < 2:
-                # the frontier: free vertices next to matched ones
-                owner, nb = self._gather(np.flatnonzero(free))
-                frontier = np.unique(np.flatnonzero(free)[owner[mapping[nb] >= 0]])
+                frontier = np.flatnonzero(front & free)
                 ti, tj = self.topological_pairs(frontier)
-                both = free[gi] & free[gj]
-                on = np.zeros(n, dtype=bool)
-                on[frontier] = True
-                both &= on[gi] & on[gj]
-                pi = np.concatenate([ti, gi[both]])
-                pj = np.concatenate([tj, gj[both]])
+                counts = g_ptr[frontier + 1] - g_ptr[frontier]
+                total = int(counts.sum())
+                offsets = np.repeat(g_ptr[frontier] - np.cumsum(counts) + counts, counts) + np.arange(total)
+                fi, fj = gi[offsets], gj[offsets]
+                both = free[fj] & front[fj]
+                pi = np.concatenate([ti, fi[both]])
+                pj = np.concatenate([tj, fj[both]])
                 key = np.unique(pi * n + pj)
                 pi, pj = key // n, key % n
                 if len(pi) == 0:
@@ -362,7 +373,6 @@ class _Matcher:
                 ac = c[pos]
                 agreed = (ac >= 0.5 * self.matched_neighbours(ai)) & (ac >= 0.5 * self.matched_neighbours(aj))
                 accept = agreed & (ac >= (2 if level == 0 else 1))
-                ac = ac
             else:
                 both = free[gi] & free[gj]
                 pi, pj = gi[both], gj[both]
@@ -398,4 +408,7 @@ class _Matcher:
                 continue
             level = 0
             mapping[ai], mapping[aj] = aj, ai
+            free[ai] = free[aj] = False
+            _, nb = self._gather(np.concatenate([ai, aj]))
+            front[nb[free[nb]]] = True
         return rounds
