@@ -1,4 +1,4 @@
-"""The ``mocap`` verbs: ``mocap import`` (and the later analysis steps), §3.1.
+"""The ``mocap`` verbs: ``mocap import``, ``mocap pca``, ``mocap apply`` (§3.1).
 
 Each step is one ``add_<step>(steps, add_model_option, positive_number)``
 function that adds its sub-parser and sets ``run``; :data:`STEPS` lists them.
@@ -6,6 +6,8 @@ function that adds its sub-parser and sets ``run``; :data:`STEPS` lists them.
 >>> from engine.cli import main
 >>> main(["mocap", "import", "take1.tsv", "--map", "face.map", "--labels", "take1.TextGrid",
 ...       "-o", "take1.h5"])                                              # doctest: +SKIP
+>>> main(["mocap", "pca", "take1.h5", "--select", "V", "C", "--plot", "pcs.png", "-o", "art.h5"])  # doctest: +SKIP
+>>> main(["mocap", "apply", "art.h5", "--held-out", "take1.h5", "-o", "head-pca.xml"])  # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -66,7 +68,57 @@ def add_import(steps, add_model_option, positive_number) -> None:
     p.set_defaults(run=run_import)
 
 
-STEPS = [add_import]
+def add_pca(steps, add_model_option, positive_number) -> None:
+    p = steps.add_parser("pca", help="multistage PCA of a session → articulation file (§3.1.2)",
+                         description="Stage 1 on the jaw marker(s), its contribution regressed out, stage 2 on "
+                                     "the lips, …; writes the articulation file of DESIGN.md and prints the "
+                                     "explained variance per component and stage. See docs/mocap-pca.md.")
+    p.add_argument("session", metavar="SESSION.h5", help="session file from 'mocap import'")
+    count = p.add_mutually_exclusive_group()
+    count.add_argument("--components", type=_positive_int, default=None, metavar="N",
+                       help="N components: 1 from the jaw (2.1), N-1 from the lips (8.x) (default 5, as the paper)")
+    count.add_argument("--stage", action="append", default=None, metavar="MARKERS:N",
+                       help="one stage, e.g. '2.1:1' then '8.*:4' (repeat, in order; globs allowed)")
+    frames = p.add_mutually_exclusive_group()
+    frames.add_argument("--select", nargs="+", default=None, metavar="SEL",
+                        help="frames at the middle of phones: V (vowels), C (consonants), 'm,p,b', contexts "
+                             "like a/p_p (needs phone labels in the session)")
+    frames.add_argument("--frames", default=None, metavar="LIST", help="explicit frames, e.g. '0-99,120,200-300:5'")
+    p.add_argument("--analysed", type=_marker_list, default=None, metavar="ID,ID,...",
+                   help="markers the components describe (default: those the stages name)")
+    p.add_argument("--plot", default=None, metavar="PNG", help="also draw the components as marker displacements")
+    p.add_argument("-o", "--output", required=True, metavar="ARTICULATION.h5", help="articulation file to write")
+    p.set_defaults(run=run_pca)
+
+
+def add_apply(steps, add_model_option, positive_number) -> None:
+    p = steps.add_parser("apply", help="articulation components onto a model as translation parameters (§3.1.2)",
+                         description="One field translation parameter per component, its displacement "
+                                     "interpolated from the markers over the lips and jaw (cheeks outside). "
+                                     "See docs/mocap-pca.md.")
+    p.add_argument("articulation", metavar="ARTICULATION.h5", help="file from 'mocap pca'")
+    add_model_option(p)
+    p.add_argument("--names", default=None, metavar="articulatory|A,B,...",
+                   help="parameter names: 'articulatory' (jaw-like, widen, …), or a comma list "
+                        "(default pca1 … pcaN)")
+    p.add_argument("--prefix", default=None, metavar="P", help="prefix for the default names (default 'pca')")
+    p.add_argument("--parent", default="auto", metavar="NAME",
+                   help="parent parameter (default: the rigid parameter carrying the upper lip)")
+    p.add_argument("--range", dest="value_range", type=_value_range, default=(-3.0, 3.0), metavar="MIN,MAX",
+                   help="range of each parameter in standard deviations (default -3,3)")
+    p.add_argument("--inner", type=_non_negative, default=8.0, metavar="MM",
+                   help="surface distance from the markers where weights start to fall (default 8)")
+    p.add_argument("--outer", type=positive_number, default=20.0, metavar="MM",
+                   help="surface distance where weights reach 0 (default 20)")
+    p.add_argument("--held-out", default=None, metavar="SESSION.h5",
+                   help="reconstruct this session's frames through the face and report the error at the markers "
+                        "(the analysed session: the frames the PCA did not use)")
+    p.add_argument("--register", action="store_true", help="align --held-out to the articulation's markers first")
+    p.add_argument("-o", "--output", required=True, metavar="MODEL.xml", help="model to write (with its .h5)")
+    p.set_defaults(run=run_apply)
+
+
+STEPS = [add_import, add_pca, add_apply]
 
 
 def run_import(args) -> int:
@@ -98,7 +150,101 @@ def run_import(args) -> int:
     return 0
 
 
+def run_pca(args) -> int:
+    from .mocap.pca import (default_stages, multistage_pca, parse_frame_list, parse_stage, plot_components,
+                            save_articulation_file, select_frames)
+    from .mocap.session import load_session
+
+    out = _suffix(args.output, (".h5", ".hdf5"), "an articulation file")
+    plot = _suffix(args.plot, (".png",), "the plot") if args.plot else None
+    session = load_session(args.session)
+    stages = [parse_stage(s) for s in args.stage] if args.stage else default_stages(args.components or 5)
+    frames = None
+    if args.select:
+        if not session.phones:
+            raise UserError("the session has no phone labels to select frames by: import it with --labels or "
+                            "--text, or give --frames", file=args.session)
+        frames = select_frames(session.phones, session.n_frames, session.rate_hz, args.select)
+    elif args.frames:
+        frames = parse_frame_list(args.frames, session.n_frames)
+    art = multistage_pca(session, stages=stages, frames=frames, analysed=args.analysed,
+                         source_name=str(args.session))
+    save_articulation_file(art, out)
+    if plot is not None:
+        plot_components(art, plot)
+    print(art.report())
+    print(f"wrote {out}" + (f" and {plot}" if plot else ""))
+    return 0
+
+
+def run_apply(args) -> int:
+    import numpy as np
+
+    from .cli import _load
+    from .model_files import save_model
+    from .mocap.apply import apply_articulation, reconstruct_held_out
+    from .mocap.pca import load_articulation_file, reselect_frames
+    from .mocap.session import load_session
+
+    out = _suffix(args.output, (".xml",), "a model")
+    if args.inner >= args.outer:
+        raise UserError(f"--inner ({args.inner:g} mm) must be less than --outer ({args.outer:g} mm)")
+    art = load_articulation_file(args.articulation)
+    model = _load(args.model)
+    names = args.names
+    if names is not None and names != "articulatory":
+        names = [n.strip() for n in names.split(",") if n.strip()]
+    applied = apply_articulation(model, art, names=names, prefix=args.prefix,
+                                 parent=None if args.parent == "none" else args.parent,
+                                 value_range=args.value_range, inner_mm=args.inner, outer_mm=args.outer)
+    print(applied.report())
+    if args.held_out:
+        session = load_session(args.held_out)
+        frames = np.arange(session.n_frames)
+        same_session = bool(art.source) and Path(args.held_out).resolve() == Path(art.source).resolve()
+        if same_session:
+            used = reselect_frames(art.selection, session.phones, session.n_frames, session.rate_hz)
+            frames = np.setdiff1d(frames, used)
+        if frames.size == 0:
+            raise UserError("no held-out frames: the PCA analysed every frame of this session", file=args.held_out)
+        error = reconstruct_held_out(model, applied, art, session.markers, session.positions[frames],
+                                     register=args.register)
+        print(error.report())
+    save_model(model, out)
+    print(f"wrote {out}")
+    return 0
+
+
+def _suffix(path: str, allowed: tuple[str, ...], what: str) -> Path:
+    out = Path(path)
+    if out.suffix.lower() not in allowed:
+        raise UserError(f"unknown extension '{out.suffix or out.name}' for {what} (use {' or '.join(allowed)})",
+                        file=out)
+    return out
+
+
 # -- argument types ------------------------------------------------------------
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"'{text}' must be at least 1")
+    return value
+
+
+def _value_range(text: str) -> tuple[float, float]:
+    parts = text.split(",")
+    try:
+        lo, hi = (float(p) for p in parts)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not MIN,MAX (e.g. -3,3)") from None
+    if not lo < hi:
+        raise argparse.ArgumentTypeError(f"'{text}': MIN must be less than MAX")
+    return lo, hi
+
 
 def _non_negative(text: str) -> float:
     try:
