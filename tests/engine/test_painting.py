@@ -661,6 +661,15 @@ def test_docstring_examples(name):
     assert result.failed == 0 and result.attempted > 0
 
 
+def test_docs_examples_run():
+    """The prompt session in docs/painting.md runs as written."""
+    from pathlib import Path
+    doc = Path(__file__).resolve().parents[2] / "docs" / "painting.md"
+    result = doctest.testfile(str(doc), module_relative=False,
+                              optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    assert result.failed == 0 and result.attempted > 10
+
+
 def test_painting_imports_no_gui():
     code = ("import sys, engine.painting; bad = [m for m in ('PySide6', 'vtk', 'pyvista') if m in sys.modules];"
             "print(bad); sys.exit(1 if bad else 0)")
