@@ -9,15 +9,23 @@ Two passes:
    symmetric mesh is matched completely here; the shipped head is.
 2. **Topology-aware fallback** for the vertices left over (a mesh that is
    only nearly symmetric: sculpted, scanned, or with one side edited).
-   Candidates are the ``candidates`` nearest left-over vertices to the
-   mirrored position within ``search_radius``. Each candidate pair (i, j) is
-   scored by *neighbourhood consistency* — how many of i's neighbours are
-   already mirrored onto neighbours of j — minus its position error in edge
-   lengths. Pairs that are each other's best choice are accepted round by
-   round, first only well-supported or unambiguous ones, so the matching
-   grows outward from the exact part (and from the mid-plane) like a wave and
-   later rounds see more matched neighbours. Vertices that find no partner
-   stay unmatched (−1) and are reported.
+   The mirrored positions are first corrected by a smooth offset field
+   (ICP-like: offsets to the nearest vertex averaged over the polygon ring,
+   exact pairs pinned at zero), so a smoothly warped side still points at
+   its partners. Candidates for vertex i are the ``candidates`` nearest
+   left-over vertices to that prediction within ``search_radius``, and the
+   neighbours of the partners of i's matched neighbours. A pair (i, j) is
+   scored by *neighbourhood consistency* — how many of i's polygon-ring
+   neighbours are mirrored onto ring neighbours of j — minus its position
+   error in local edge lengths. Pairs that are each other's best choice are
+   accepted round by round from the matched front outward: first those
+   backed by at least two matched neighbours, then (one per piece of surface
+   at a time) those backed by one, then an unambiguous position seed in a
+   piece with no match yet (an eyeball). A pair whose finished
+   neighbourhood clearly prefers another partner is undone and matched
+   again, and a second pass predicts positions from the pairs of the first.
+   Vertices that find no partner stay unmatched (−1) and are reported.
+   ``docs/painting.md`` §4 has the statistics on perturbed heads.
 
 The map is an involution on the matched vertices (``m[m[i]] == i``);
 vertices on the plane map to themselves.
