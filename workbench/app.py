@@ -5,10 +5,12 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QApplication, QMessageBox
 
 import engine
 
+from . import testing_hooks
 from .document import ModelDocument
 from .icons import APP_ICON, icon
 from .main_window import TITLE, MainWindow
@@ -40,6 +42,8 @@ def open_window(model_path: str | Path | None = None) -> MainWindow:
 def main(model_path: str | None = None) -> int:
     """Show the workbench on ``model_path`` (default head if ``None``) until it is closed.
 
+    If a workbench that did not shut down cleanly left unsaved changes
+    behind, offers to recover them once the window shows.
     Returns the exit status: 0, or 2 when the model cannot be loaded, after
     saying why in a dialog and in one ``error:`` line on stderr.
     """
@@ -50,7 +54,13 @@ def main(model_path: str | None = None) -> int:
         print(f"error: {exc}", file=sys.stderr)
         QMessageBox.critical(None, f"{TITLE}: cannot open model", str(exc))
         return EXIT_USER_ERROR
+    hooks = testing_hooks.active()
+    if hooks:
+        testing_hooks.prepare(window)
     window.show()
+    window.files.offer_recovery()
+    if hooks:
+        QTimer.singleShot(0, lambda: testing_hooks.run(window))
     status = app.exec()
     window.viewport.close_plotter()  # idempotent; the window may have been closed already
     window.deleteLater()

@@ -1,45 +1,56 @@
-"""The main window: viewport in the middle, parameter dock, menus, toolbar, status bar.
+"""The main window: viewport in the middle, parameter and tool-options docks, menus, toolbar, status bar.
 
-The window only assembles the pieces and handles the dialogs (open, save,
-errors). The pieces talk through the shared :class:`ModelDocument` and
-:class:`ViewState`, never directly to each other.
+The window only assembles the pieces, keeps the title and the layout, and
+guards against losing work on close. File flows live in
+:class:`~workbench.file_controller.FileController`, autosave in
+:mod:`workbench.recovery`; the pieces talk through the shared
+:class:`ModelDocument` and :class:`ViewState`, never directly to each other.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
-
 from PySide6.QtCore import QSettings, Qt
 from PySide6.QtGui import QAction, QCloseEvent
-from PySide6.QtWidgets import QDockWidget, QFileDialog, QMainWindow, QMessageBox, QToolBar, QWidget
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolBar, QWidget
 
 import engine
 
 from . import actions as workbench_actions
+from . import settings
 from .document import ModelDocument
+from .file_controller import MODEL_FILTER, TITLE, FileController  # noqa: F401 (re-exported)
 from .icons import APP_ICON, icon
 from .parameter_panel import ParameterPanel
 from .parts_menu import PartsMenu
+from .recent_files import RecentFilesMenu
+from .recovery import Autosaver, RecoverySession
 from .status_bar import ModelStatusBar
+from .tool_options import ToolOptionsDock
 from .view_state import ViewState
 from .viewport import Viewport
 
-TITLE = "Artificial Person"
-MODEL_FILTER = "Model descriptions (*.xml);;All files (*)"
+MESSAGE_MS = 4000
 
 
 class MainWindow(QMainWindow):
-    """The workbench window over one :class:`ModelDocument`."""
+    """The workbench window over one :class:`ModelDocument`.
 
-    def __init__(self, document: ModelDocument, parent: QWidget | None = None):
+    ``autosave_seconds`` overrides the ``autosave/interval_seconds`` setting.
+    """
+
+    def __init__(self, document: ModelDocument, parent: QWidget | None = None, *,
+                 autosave_seconds: float | None = None):
         super().__init__(parent)
         self.document = document
         self.view_state = ViewState(self)
+        self.files = FileController(self)
+        self._closed = False
         # Connected first, so every part is visible again before the widgets rebuild.
         # Bound methods, not lambdas: a lambda would hold the window alive from
         # the document's connection list, a reference cycle Python cannot see.
         document.model_replaced.connect(self._on_model_replaced)
         document.path_changed.connect(self._update_title)
+        document.modified_changed.connect(self.setWindowModified)
 
         self.setWindowIcon(icon(APP_ICON))
         self.viewport = Viewport(document, self.view_state, self)
@@ -52,6 +63,8 @@ class MainWindow(QMainWindow):
         self.parameter_dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
                                         | QDockWidget.DockWidgetFeature.DockWidgetFloatable)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.parameter_dock)
+        self.tool_options = ToolOptionsDock(self)
+        self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.tool_options)
 
         self.toolbar = QToolBar("Main", self)
         self.toolbar.setObjectName("toolbar:main")
@@ -59,72 +72,110 @@ class MainWindow(QMainWindow):
         self.addToolBar(self.toolbar)
         self.actions_by_id: dict[str, QAction] = workbench_actions.create_actions(self)
         self.menus = workbench_actions.populate(self.menuBar(), self.toolbar, self.actions_by_id)
+        self.recent_menu = RecentFilesMenu(self)
+        self.recent_menu.file_chosen.connect(self.files.open_recent)
+        self.menus["&File"].insertMenu(self.actions_by_id["file.save"], self.recent_menu)
         self.parts_menu = PartsMenu(document, self.view_state, self)
         view_menu = self.menus["&View"]
         view_menu.addSeparator()
         view_menu.addMenu(self.parts_menu)
+        view_menu.addSeparator()
+        tool_options_toggle = self.tool_options.toggleViewAction()
+        tool_options_toggle.setIcon(icon("tool-options"))
+        view_menu.addAction(tool_options_toggle)
         self.view_state.wireframe_changed.connect(self.actions_by_id["view.wireframe"].setChecked)
+        self._bind_undo_actions()
 
         self.setStatusBar(ModelStatusBar(document, self))
         self._update_title()
+        self.setWindowModified(document.is_modified)
         self.resize(1280, 800)
         self.resizeDocks([self.parameter_dock], [430], Qt.Orientation.Horizontal)
+        self.resizeDocks([self.parameter_dock, self.tool_options], [560, 160], Qt.Orientation.Vertical)
+        self.restore_layout()
 
-    # -- dialogs -----------------------------------------------------------
-    def open_model_dialog(self) -> bool:
-        """Ask for a model description and open it; ``False`` if cancelled or unreadable."""
-        path, _ = QFileDialog.getOpenFileName(self, "Open model", self._start_dir(), MODEL_FILTER)
-        return bool(path) and self.open_model(path)
+        seconds = autosave_seconds if autosave_seconds is not None else settings.autosave_interval_seconds()
+        self.autosaver = Autosaver(document, RecoverySession(), seconds, self)
+        self.autosaver.failed.connect(self._on_autosave_failed)
 
-    def open_model(self, path: str | Path) -> bool:
-        """Open the model at ``path``; on failure show why and keep the current model."""
-        try:
-            self.document.open(path)
-        except engine.UserError as exc:
-            QMessageBox.critical(self, f"{TITLE}: cannot open model", str(exc))
-            return False
-        self._remember_dir(path)
-        return True
+    # -- edit ----------------------------------------------------------------
+    def undo(self) -> None:
+        stack = self.document.undo_stack
+        if stack.canUndo():
+            text = stack.undoText()
+            stack.undo()
+            self.statusBar().showMessage(f"Undone: {text}", MESSAGE_MS)
 
-    def save_model_dialog(self) -> bool:
-        """Ask where to save the model (.xml + .h5) and write it; ``False`` if cancelled or failed."""
-        start = str(self.document.path) if self.document.path else self._start_dir()
-        path, _ = QFileDialog.getSaveFileName(self, "Save model as", start, MODEL_FILTER)
-        return bool(path) and self.save_model(path)
+    def redo(self) -> None:
+        stack = self.document.undo_stack
+        if stack.canRedo():
+            text = stack.redoText()
+            stack.redo()
+            self.statusBar().showMessage(f"Redone: {text}", MESSAGE_MS)
 
-    def save_model(self, path: str | Path) -> bool:
-        try:
-            written = self.document.save(path)
-        except (engine.UserError, OSError) as exc:
-            QMessageBox.critical(self, f"{TITLE}: cannot save model", str(exc))
-            return False
-        self._remember_dir(written)
-        self.statusBar().showMessage(f"Saved {written}", 4000)
-        return True
+    # -- layout --------------------------------------------------------------
+    def save_layout(self) -> None:
+        """Remember the window's size, place, docks and toolbar (QSettings ``window/…``)."""
+        store = QSettings()
+        store.setValue(settings.WINDOW_GEOMETRY, self.saveGeometry())
+        store.setValue(settings.WINDOW_STATE, self.saveState())
+
+    def restore_layout(self) -> bool:
+        store = QSettings()
+        geometry, state = store.value(settings.WINDOW_GEOMETRY), store.value(settings.WINDOW_STATE)
+        restored = False
+        if geometry is not None:
+            restored = self.restoreGeometry(geometry)
+        if state is not None:
+            restored = self.restoreState(state) and restored
+        return restored
 
     # -- Qt overrides --------------------------------------------------------
     def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802 (Qt's name)
+        if self._closed:
+            event.accept()
+            return
+        if not self.files.maybe_save("closing"):
+            event.ignore()
+            return
+        self._closed = True
+        self.save_layout()
+        self.autosaver.stop()
+        self.autosaver.session.close()           # a clean shutdown leaves no recovery copy
+        self.document.undo_stack.clear()         # the commands go with the window
         self.viewport.close_plotter()
         super().closeEvent(event)
 
     # -- helpers -----------------------------------------------------------
+    def _bind_undo_actions(self) -> None:
+        stack = self.document.undo_stack
+        stack.canUndoChanged.connect(self.actions_by_id["edit.undo"].setEnabled)
+        stack.canRedoChanged.connect(self.actions_by_id["edit.redo"].setEnabled)
+        stack.undoTextChanged.connect(self._update_undo_texts)
+        stack.redoTextChanged.connect(self._update_undo_texts)
+        stack.indexChanged.connect(self._update_undo_texts)
+        self._update_undo_texts()
+
+    def _update_undo_texts(self, *_args) -> None:
+        stack = self.document.undo_stack
+        for action_id, verb, can, text in (("edit.undo", "Undo", stack.canUndo(), stack.undoText()),
+                                           ("edit.redo", "Redo", stack.canRedo(), stack.redoText())):
+            action = self.actions_by_id[action_id]
+            action.setEnabled(can)
+            action.setText(f"&{verb} {text}" if can and text else f"&{verb}")
+            tip = f"{verb} “{text}”" if can and text else f"Nothing to {verb.lower()}"
+            action.setToolTip(tip)
+            action.setStatusTip(tip)
+
     def _on_model_replaced(self, _model: engine.Model) -> None:
         self.view_state.show_all_parts()
         self._update_title()
 
     def _update_title(self, *_args) -> None:
-        self.setWindowTitle(f"{TITLE} — {self.document.model.name}")
+        # "[*]" is where Qt puts the modified marker ("*") while isWindowModified().
+        self.setWindowTitle(f"{self.files.display_name()}[*] — {TITLE}")
         path = self.document.path
         self.setWindowFilePath(str(path) if path else "")
 
-    def _start_dir(self) -> str:
-        remembered = QSettings().value("workbench/last_dir", "", type=str)
-        if remembered and Path(remembered).is_dir():
-            return remembered
-        if self.document.path is not None:
-            return str(self.document.path.parent)
-        return str(Path.cwd())
-
-    @staticmethod
-    def _remember_dir(path: str | Path) -> None:
-        QSettings().setValue("workbench/last_dir", str(Path(path).resolve().parent))
+    def _on_autosave_failed(self, message: str) -> None:
+        self.statusBar().showMessage(f"Autosave failed: {message}", MESSAGE_MS)

@@ -49,7 +49,9 @@ def broken_model_path(tmp_path) -> Path:
 
 @pytest.fixture(scope="session", autouse=True)
 def _isolated_settings(qapp, tmp_path_factory):
-    """Keep QSettings (last directory, …) out of the user's configuration."""
+    """Keep QSettings (last directory, recent files, layout) and recovery copies out of the user's files."""
+    import os
+
     from PySide6.QtCore import QSettings
 
     qapp.setOrganizationName("Artificial Person Tests")
@@ -57,6 +59,18 @@ def _isolated_settings(qapp, tmp_path_factory):
     QSettings.setDefaultFormat(QSettings.Format.IniFormat)
     QSettings.setPath(QSettings.Format.IniFormat, QSettings.Scope.UserScope,
                       str(tmp_path_factory.mktemp("settings")))
+    # QStandardPaths reads XDG_DATA_HOME on every call: recovery sessions land here.
+    os.environ["XDG_DATA_HOME"] = str(tmp_path_factory.mktemp("data-home"))
+
+
+@pytest.fixture(autouse=True)
+def _fresh_settings():
+    """Each test starts from empty settings (recent files, window layout, autosave interval)."""
+    from PySide6.QtCore import QSettings
+
+    QSettings().clear()
+    yield
+    QSettings().clear()
 
 
 @pytest.fixture(autouse=True)
@@ -86,7 +100,8 @@ def make_window(qtbot):
     def make(path, size=(1200, 760)) -> MainWindow:
         document = ModelDocument(engine.load_model(path), path)
         window = MainWindow(document)
-        qtbot.addWidget(window)
+        # pytest-qt closes its widgets before fixtures tear down: nothing unsaved to ask about then.
+        qtbot.addWidget(window, before_close_func=_forget_changes)
         window.resize(*size)
         window.show()
         qtbot.waitExposed(window)
@@ -101,6 +116,7 @@ def make_window(qtbot):
 
     for widget in QApplication.topLevelWidgets():
         if widget.__class__.__name__ == "MainWindow":
+            _forget_changes(widget)
             widget.close()  # closeEvent closes the plotter
             widget.deleteLater()
     QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
@@ -109,6 +125,32 @@ def make_window(qtbot):
         assert plotter.render_window is None, "a VTK render window outlived its window"
         assert not shiboken6.isValid(plotter), "a QtInteractor widget outlived its window"
     plotters.clear()
+
+
+def _forget_changes(window) -> None:
+    window.document.undo_stack.setClean()
+
+
+@pytest.fixture(autouse=True)
+def unexpected_dialogs(monkeypatch):
+    """A message box no test asked for would block the suite: record it, answer Cancel, fail the test.
+
+    Tests that expect a dialog monkeypatch the QMessageBox function themselves.
+    """
+    from PySide6.QtWidgets import QMessageBox
+
+    shown: list[tuple[str, str, str]] = []
+
+    def recorder(kind):
+        def show(parent, title, text, *args, **kwargs):
+            shown.append((kind, title, text))
+            return QMessageBox.StandardButton.Cancel
+        return staticmethod(show)
+
+    for kind in ("warning", "question", "critical", "information"):
+        monkeypatch.setattr(QMessageBox, kind, recorder(kind))
+    yield shown
+    assert not shown, f"unexpected dialogs: {shown}"
 
 
 @pytest.fixture

@@ -42,7 +42,7 @@ def test_main_shows_the_window_and_returns_0_when_it_is_closed(synthetic_model_p
     QTimer.singleShot(200, close_the_window)
     QTimer.singleShot(20000, qapp.quit)  # never hang the suite if the window did not appear
     assert workbench.main(str(synthetic_model_path)) == 0
-    assert seen == ["Artificial Person — synthetic-head"]
+    assert seen == ["synthetic-head.xml[*] — Artificial Person"]
 
 
 def test_python_dash_m_passes_the_model_on(monkeypatch):

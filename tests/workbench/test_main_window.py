@@ -27,7 +27,7 @@ def captured_errors(monkeypatch):
 
 def test_window_opens_on_the_model_and_shows_the_mesh(window):
     model = window.document.model
-    assert window.windowTitle() == "Artificial Person — synthetic-head"
+    assert window.windowTitle() == "synthetic-head.xml[*] — Artificial Person"
     assert window.viewport.part_names == ["skin", "eye_left", "eye_right"]
     np.testing.assert_array_equal(window.viewport.displayed_points(), model.vertices)
     for part in model.parts:
@@ -169,7 +169,7 @@ def test_opening_a_malformed_model_shows_an_error_and_keeps_the_current_model(
     assert "\n" not in text and "Traceback" not in text
     assert window.document.model is model
     assert window.document.value("jaw_open") == 0.4
-    assert window.windowTitle() == "Artificial Person — synthetic-head"
+    assert window.windowTitle() == "synthetic-head.xml[*] — Artificial Person"
     assert list(window.parameter_panel.rows) == SYNTHETIC_PARAMETERS
     np.testing.assert_array_equal(window.viewport.displayed_points(), before)
 
@@ -182,10 +182,10 @@ def test_opening_another_model_replaces_everything(window, tmp_path, captured_er
     window.view_state.set_part_visible("eye_left", False)
     window.document.set_value("jaw_open", 0.5)
 
-    assert window.open_model(path)
+    assert window.files.open_model(path)
 
     assert not captured_errors
-    assert window.windowTitle() == "Artificial Person — second-head"
+    assert window.windowTitle() == "second.xml[*] — Artificial Person"
     assert list(window.parameter_panel.rows) == ["head_turn", "jaw_open"]
     assert window.document.value("jaw_open") == 0.0
     assert window.view_state.is_part_visible("eye_left")           # a new model starts with all parts shown
@@ -246,7 +246,7 @@ def test_standard_shortcuts(window):
 def test_save_as_writes_a_loadable_model(window, tmp_path, monkeypatch, captured_errors):
     target = tmp_path / "saved" / "copy.xml"
     monkeypatch.setattr(QFileDialog, "getSaveFileName", staticmethod(lambda *a, **k: (str(target), "")))
-    assert window.save_model_dialog()
+    assert window.files.save_as_dialog()
     assert not captured_errors
     assert window.document.path == target
     again = engine.load_model(target)
@@ -258,6 +258,6 @@ def test_cancelled_dialogs_change_nothing(window, monkeypatch, captured_errors):
     model = window.document.model
     monkeypatch.setattr(QFileDialog, "getOpenFileName", staticmethod(lambda *a, **k: ("", "")))
     monkeypatch.setattr(QFileDialog, "getSaveFileName", staticmethod(lambda *a, **k: ("", "")))
-    assert not window.open_model_dialog()
-    assert not window.save_model_dialog()
+    assert not window.files.open_dialog()
+    assert not window.files.save_as_dialog()
     assert window.document.model is model and not captured_errors

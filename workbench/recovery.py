@@ -1,0 +1,210 @@
+"""Autosave and crash recovery: unsaved changes survive a crash, a kill or a power cut.
+
+While the workbench runs it owns one *recovery session* in the recovery
+folder (``<AppLocalDataLocation>/recovery``, on Linux
+``~/.local/share/Artificial Person/Artificial Person Workbench/recovery``):
+
+* ``<id>.lock``: a :class:`QLockFile` held as long as the process lives;
+* ``<id>.xml`` + ``<id>.h5``: the model, written by :func:`engine.save_model`
+  (atomically) every ``autosave/interval_seconds`` while it is modified;
+* ``<id>.json``: what the copy is (format ``artificial-person-recovery``,
+  version 1): the file it belongs to and when it was written. Written last,
+  so a session with a ``.json`` always has a complete model.
+
+When the model is saved (or undone back to its saved state) the copy is
+deleted; a clean shutdown deletes the whole session. A session whose lock
+nobody holds any more (the process died) is *orphaned*: at the next start
+the workbench offers to recover it, if it is newer than the file it belongs
+to; otherwise it is stale and removed.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import time
+import uuid
+from dataclasses import dataclass
+from pathlib import Path
+
+from PySide6.QtCore import QLockFile, QObject, QStandardPaths, QTimer, Signal
+
+import engine
+from engine.files import atomic_write_text
+
+from .document import ModelDocument
+
+RECOVERY_FORMAT = "artificial-person-recovery"
+RECOVERY_VERSION = 1
+
+
+def recovery_dir() -> Path:
+    """The folder recovery sessions live in (not created here)."""
+    base = QStandardPaths.writableLocation(QStandardPaths.StandardLocation.AppLocalDataLocation)
+    return Path(base) / "recovery"
+
+
+@dataclass(frozen=True)
+class RecoveryEntry:
+    """An orphaned autosave: the model left behind by a workbench that did not shut down cleanly."""
+
+    folder: Path
+    session: str
+    original: Path | None      # the file the model belongs to; None for a model never saved
+    saved_at: float            # seconds since the epoch
+    model_name: str
+
+    @property
+    def model_path(self) -> Path:
+        return self.folder / f"{self.session}.xml"
+
+    def is_newer_than_original(self) -> bool:
+        """True unless the original file was saved after this copy was made."""
+        if self.original is None or not self.original.exists():
+            return True
+        return self.saved_at > self.original.stat().st_mtime
+
+    def load(self) -> engine.Model:
+        return engine.load_model(self.model_path)
+
+    def remove(self) -> None:
+        _remove_session_files(self.folder, self.session)
+
+
+def orphaned_entries(folder: str | Path | None = None) -> list[RecoveryEntry]:
+    """Recovery copies no running workbench owns, newest first.
+
+    Sessions still locked by a live process are left alone; unreadable
+    session descriptions are skipped (and removed with their files).
+    """
+    folder = Path(folder) if folder is not None else recovery_dir()
+    if not folder.is_dir():
+        return []
+    entries = []
+    for info in folder.glob("*.json"):
+        session = info.stem
+        lock = QLockFile(str(folder / f"{session}.lock"))
+        lock.setStaleLockTime(0)        # stale only when its process is gone, never by age
+        if not lock.tryLock(0):
+            continue                    # a running workbench owns it
+        lock.unlock()
+        entry = _read_entry(info)
+        if entry is None:
+            _remove_session_files(folder, session)
+        else:
+            entries.append(entry)
+    return sorted(entries, key=lambda e: e.saved_at, reverse=True)
+
+
+def _read_entry(info: Path) -> RecoveryEntry | None:
+    try:
+        data = json.loads(info.read_text(encoding="utf-8"))
+        if data.get("format") != RECOVERY_FORMAT or int(data.get("version", 0)) != RECOVERY_VERSION:
+            return None
+        original = data.get("original")
+        entry = RecoveryEntry(info.parent, info.stem, Path(original) if original else None,
+                              float(data["saved_at"]), str(data.get("model_name", "")))
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    return entry if entry.model_path.exists() else None
+
+
+def _remove_session_files(folder: Path, session: str) -> None:
+    # The description first: without it nobody will try to read a half-removed model.
+    for suffix in (".json", ".xml", ".h5"):
+        try:
+            os.unlink(folder / f"{session}{suffix}")
+        except FileNotFoundError:
+            pass
+
+
+class RecoverySession:
+    """This process's slot in the recovery folder, locked while the process lives."""
+
+    def __init__(self, folder: str | Path | None = None):
+        self.folder = Path(folder) if folder is not None else recovery_dir()
+        self.folder.mkdir(parents=True, exist_ok=True)
+        self.id = f"{time.strftime('%Y%m%d-%H%M%S')}-{os.getpid()}-{uuid.uuid4().hex[:8]}"
+        self._lock = QLockFile(str(self.folder / f"{self.id}.lock"))
+        self._lock.setStaleLockTime(0)
+        self._lock.tryLock(0)           # a fresh unique name: nobody else can hold it
+
+    @property
+    def model_path(self) -> Path:
+        return self.folder / f"{self.id}.xml"
+
+    @property
+    def info_path(self) -> Path:
+        return self.folder / f"{self.id}.json"
+
+    def write(self, document: ModelDocument) -> None:
+        """Save the document's model as this session's recovery copy (model first, then its description)."""
+        document.save_copy(self.model_path)
+        info = {"format": RECOVERY_FORMAT, "version": RECOVERY_VERSION,
+                "original": str(document.path) if document.path is not None else None,
+                "saved_at": time.time(), "model_name": document.model.name, "pid": os.getpid()}
+        atomic_write_text(self.info_path, json.dumps(info, indent=2) + "\n")
+
+    def has_copy(self) -> bool:
+        return self.info_path.exists()
+
+    def clear(self) -> None:
+        """Forget the recovery copy (the model was saved, or went back to its saved state)."""
+        _remove_session_files(self.folder, self.id)
+
+    def close(self) -> None:
+        """Clean shutdown: remove the copy and release the lock (which deletes the lock file)."""
+        self.clear()
+        if self._lock.isLocked():
+            self._lock.unlock()
+
+
+class Autosaver(QObject):
+    """Every ``interval_seconds``, writes the document to its recovery session if it changed.
+
+    Signals
+    -------
+    autosaved(str)
+        The recovery copy was written to this path.
+    failed(str)
+        Writing it failed; the message says why.
+    """
+
+    autosaved = Signal(str)
+    failed = Signal(str)
+
+    def __init__(self, document: ModelDocument, session: RecoverySession, interval_seconds: float,
+                 parent: QObject | None = None):
+        super().__init__(parent)
+        self._document = document
+        self.session = session
+        self._saved_generation: int | None = None
+        self.timer = QTimer(self)
+        self.timer.setInterval(max(1, round(interval_seconds * 1000)))
+        self.timer.timeout.connect(self.autosave_now)
+        document.modified_changed.connect(self._on_modified_changed)
+        self.timer.start()
+
+    def autosave_now(self) -> bool:
+        """Write the recovery copy now if the model is modified and changed since the last one."""
+        document = self._document
+        if not document.is_modified:
+            return False
+        if document.generation == self._saved_generation and self.session.has_copy():
+            return False
+        try:
+            self.session.write(document)
+        except (engine.UserError, OSError) as exc:
+            self.failed.emit(str(exc))
+            return False
+        self._saved_generation = document.generation
+        self.autosaved.emit(str(self.session.model_path))
+        return True
+
+    def stop(self) -> None:
+        self.timer.stop()
+
+    def _on_modified_changed(self, modified: bool) -> None:
+        if not modified:
+            self.session.clear()
+            self._saved_generation = None

@@ -1,0 +1,54 @@
+"""The "Tool options" dock: one page per editing tool, the active tool's page shown.
+
+Tools (weight painting, the tree editor's property sheet, …) add their page
+with :meth:`ToolOptionsDock.add_page` and show it with :meth:`show_page`.
+With no tool active the dock says so.
+"""
+
+from __future__ import annotations
+
+from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QDockWidget, QLabel, QStackedWidget, QWidget
+
+NO_TOOL = "none"
+
+
+class ToolOptionsDock(QDockWidget):
+    """A dock holding a :class:`QStackedWidget` of tool pages, keyed by tool id."""
+
+    def __init__(self, parent: QWidget | None = None):
+        super().__init__("Tool options", parent)
+        self.setObjectName("dock:tool-options")
+        self.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
+                         | QDockWidget.DockWidgetFeature.DockWidgetFloatable
+                         | QDockWidget.DockWidgetFeature.DockWidgetClosable)
+        self.stack = QStackedWidget()
+        self._pages: dict[str, QWidget] = {}
+        placeholder = QLabel("No tool is active.\nTools for painting weights and editing the\n"
+                             "parameter tree show their options here.")
+        placeholder.setAlignment(Qt.AlignmentFlag.AlignCenter)
+        placeholder.setWordWrap(True)
+        placeholder.setEnabled(False)        # drawn greyed out: it is a hint, not content
+        self.add_page(NO_TOOL, placeholder)
+        self.setWidget(self.stack)
+
+    @property
+    def current_tool(self) -> str:
+        widget = self.stack.currentWidget()
+        return next(tool for tool, page in self._pages.items() if page is widget)
+
+    def add_page(self, tool: str, page: QWidget) -> None:
+        """Register ``page`` as the options of ``tool`` (replacing an earlier page of that tool)."""
+        old = self._pages.pop(tool, None)
+        if old is not None:
+            self.stack.removeWidget(old)
+            old.deleteLater()
+        self._pages[tool] = page
+        self.stack.addWidget(page)
+
+    def page(self, tool: str) -> QWidget:
+        return self._pages[tool]
+
+    def show_page(self, tool: str = NO_TOOL) -> None:
+        """Show ``tool``'s options (its page must have been added); the placeholder by default."""
+        self.stack.setCurrentWidget(self._pages[tool])
