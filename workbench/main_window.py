@@ -96,6 +96,7 @@ class MainWindow(QMainWindow):
 
         seconds = autosave_seconds if autosave_seconds is not None else settings.autosave_interval_seconds()
         self.autosaver = Autosaver(document, RecoverySession(), seconds, self)
+        self.autosaver.autosaved.connect(self._on_autosaved)
         self.autosaver.failed.connect(self._on_autosave_failed)
 
     # -- edit ----------------------------------------------------------------
@@ -176,6 +177,9 @@ class MainWindow(QMainWindow):
         self.setWindowTitle(f"{self.files.display_name()}[*] — {TITLE}")
         path = self.document.path
         self.setWindowFilePath(str(path) if path else "")
+
+    def _on_autosaved(self, _path: str) -> None:
+        self.statusBar().showMessage("Autosaved: a crash would not lose the unsaved changes", MESSAGE_MS)
 
     def _on_autosave_failed(self, message: str) -> None:
         self.statusBar().showMessage(f"Autosave failed: {message}", MESSAGE_MS)

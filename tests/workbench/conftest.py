@@ -102,7 +102,8 @@ def make_window(qtbot):
         window = MainWindow(document)
         # pytest-qt closes its widgets before fixtures tear down: nothing unsaved to ask about then.
         qtbot.addWidget(window, before_close_func=_forget_changes)
-        window.resize(*size)
+        if size is not None:                 # None: keep the size the window restored from QSettings
+            window.resize(*size)
         window.show()
         qtbot.waitExposed(window)
         window.viewport.set_view("front")  # frame again now that the widget has its real size

@@ -1,4 +1,4 @@
-"""The documentation screenshot of the minimal workbench: docs/images/workbench-minimal.png.
+"""The documentation screenshot of the main window: docs/images/workbench-main.png.
 
 It writes into a temporary folder, so test runs leave the tree clean; to
 refresh the picture in the docs, point it at docs/images:
@@ -18,7 +18,7 @@ from PySide6.QtGui import QImage
 
 import engine
 
-SCREENSHOT_NAME = "workbench-minimal.png"
+SCREENSHOT_NAME = "workbench-main.png"
 
 
 def test_screenshot_of_the_main_window(make_window, synthetic_model_path, qtbot, tmp_path):
@@ -30,6 +30,16 @@ def test_screenshot_of_the_main_window(make_window, synthetic_model_path, qtbot,
         if name in panel.rows:
             row = panel.row(name)
             row.slider.setValue(row.position_of(row.parameter.maximum * fraction))
+    # An unsaved edit, so the picture shows the Edit menu's state: Undo enabled, the title marked.
+    from workbench.undo_commands import WeightsChangedCommand
+
+    document = window.document
+    name = "jaw_open"
+    region = document.model.regions[name]
+    document.push(WeightsChangedCommand(document, name, region.indices, region.weights))
+    assert window.actions_by_id["edit.undo"].isEnabled() and window.isWindowModified()
+    assert window.autosaver.autosave_now()
+    assert window.statusBar().currentMessage().startswith("Autosaved")
     qtbot.wait(50)  # let the last repaint land before grabbing
 
     SCREENSHOT.parent.mkdir(parents=True, exist_ok=True)
