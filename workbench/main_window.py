@@ -18,7 +18,7 @@ import engine
 from . import actions as workbench_actions
 from . import settings
 from .document import ModelDocument
-from .file_controller import MODEL_FILTER, TITLE, FileController  # noqa: F401 (re-exported)
+from .file_controller import TITLE, FileController
 from .icons import APP_ICON, icon
 from .parameter_panel import ParameterPanel
 from .parts_menu import PartsMenu

@@ -128,6 +128,26 @@ def make_window(qtbot):
     plotters.clear()
 
 
+@pytest.fixture(autouse=True)
+def _collect_deleted_windows(qapp) -> None:
+    """Finish deleting earlier tests' windows and collect their Python wrappers before this test.
+
+    pyvistaqt's QtInteractor refers to itself (``interactor``), so it outlives
+    its deleted widget until the garbage collector runs, still holding
+    wrappers of the widget's GL context and surface. Shiboken keeps those
+    stale wrappers registered by address; a new Qt object allocated at the
+    same address would come back as the old wrapper (a QMenu reported as a
+    QOffscreenSurface), or crash. One window per process, as the app has,
+    never meets this; a test suite making dozens does.
+    """
+    import gc
+
+    from PySide6.QtCore import QCoreApplication, QEvent
+
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+    gc.collect()
+
+
 def _forget_changes(window) -> None:
     window.document.undo_stack.setClean()
 

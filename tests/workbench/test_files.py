@@ -114,7 +114,6 @@ def test_save_never_overwrites_the_shipped_head(window, monkeypatch):
     window.document._set_path(shipped)          # as if the workbench had been started on the default head
     _edit(window)
     asked = []
-    _set_dialog(monkeypatch, "getSaveFileName", ("", ""))
     monkeypatch.setattr(QFileDialog, "getSaveFileName",
                         staticmethod(lambda *a, **k: asked.append(a) or ("", "")))
     assert not window.files.save()               # Save became Save as…, and the user cancelled
