@@ -38,9 +38,7 @@ from __future__ import annotations
 
 import fnmatch
 import json
-import os
 import re
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -48,7 +46,9 @@ import h5py
 import numpy as np
 
 from ..raster import draw_box, draw_dot, draw_line, draw_text
+from ..files import atomic_path
 from .errors import MocapError
+from .hdf5_files import open_versioned, text_attribute
 
 ARTICULATION_FORMAT = "artificial-person-articulation"
 ARTICULATION_VERSION = 1
@@ -601,75 +601,39 @@ def save_articulation_file(art: Articulation, path: str | Path) -> Path:
     ``selection``, ``rate_hz``, ``source``.
     """
     path = Path(path)
-    folder = path.parent if str(path.parent) else Path(".")
-    if not folder.is_dir():
-        raise ArticulationFileError("cannot write: the folder does not exist", file=path)
     _check_arrays(art, path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
-    os.close(fd)
-    try:
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
-        text = h5py.string_dtype()
-        with h5py.File(tmp, "w", track_order=True) as f:
-            f.attrs["format"] = ARTICULATION_FORMAT
-            f.attrs["version"] = ARTICULATION_VERSION
-            f.attrs["units"] = "mm"
-            f.attrs["component_scale"] = "value 1 = one standard deviation of the component's score"
-            f.attrs["score_std_mm"] = np.asarray(art.score_std, dtype=float)
-            f.attrs["stage_markers"] = json.dumps(art.stage_markers)
-            f.attrs["n_frames"] = int(art.n_frames)
-            f.attrs["excluded_missing"] = int(art.excluded_missing)
-            f.attrs["selection"] = str(art.selection)
-            f.attrs["rate_hz"] = float(art.rate_hz)
-            f.attrs["source"] = str(art.source)
-            f.create_dataset("markers", data=np.array(art.markers, dtype=object), dtype=text)
-            f.create_dataset("mean", data=np.asarray(art.mean, dtype=float))
-            f.create_dataset("components", data=np.asarray(art.components, dtype=float))
-            f.create_dataset("explained_variance_ratio", data=np.asarray(art.explained_variance_ratio, dtype=float))
-            f.create_dataset("stages", data=np.asarray(art.stages, dtype=np.int64))
-        with open(tmp, "rb") as fh:
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
+    text = h5py.string_dtype()
+    with atomic_path(path, ArticulationFileError) as tmp, h5py.File(tmp, "w", track_order=True) as f:
+        f.attrs["format"] = ARTICULATION_FORMAT
+        f.attrs["version"] = ARTICULATION_VERSION
+        f.attrs["units"] = "mm"
+        f.attrs["component_scale"] = "value 1 = one standard deviation of the component's score"
+        f.attrs["score_std_mm"] = np.asarray(art.score_std, dtype=float)
+        f.attrs["stage_markers"] = json.dumps(art.stage_markers)
+        f.attrs["n_frames"] = int(art.n_frames)
+        f.attrs["excluded_missing"] = int(art.excluded_missing)
+        f.attrs["selection"] = str(art.selection)
+        f.attrs["rate_hz"] = float(art.rate_hz)
+        f.attrs["source"] = str(art.source)
+        f.create_dataset("markers", data=np.array(art.markers, dtype=object), dtype=text)
+        f.create_dataset("mean", data=np.asarray(art.mean, dtype=float))
+        f.create_dataset("components", data=np.asarray(art.components, dtype=float))
+        f.create_dataset("explained_variance_ratio", data=np.asarray(art.explained_variance_ratio, dtype=float))
+        f.create_dataset("stages", data=np.asarray(art.stages, dtype=np.int64))
     return path
 
 
 def load_articulation_file(path: str | Path) -> Articulation:
     """Read and check an articulation file; :class:`ArticulationFileError` naming the file otherwise."""
     path = Path(path)
-    if not path.exists():
-        raise ArticulationFileError("no such file", file=path)
-    try:
-        f = h5py.File(path, "r")
-    except OSError:
-        raise ArticulationFileError("not a readable HDF5 file (is it an articulation file written by "
-                                    "'mocap pca'?)", file=path) from None
-    with f:
-        fmt = _text(f.attrs.get("format"))
-        if fmt != ARTICULATION_FORMAT:
-            raise ArticulationFileError(f"not an articulation file (format attribute is {fmt!r}, expected "
-                                        f"'{ARTICULATION_FORMAT}')", file=path)
-        try:
-            version = int(f.attrs.get("version"))
-        except (TypeError, ValueError):
-            raise ArticulationFileError("the file has no valid 'version' attribute", file=path) from None
-        if version != ARTICULATION_VERSION:
-            raise ArticulationFileError(f"articulation file version {version} is not one this program reads "
-                                        f"(it reads version {ARTICULATION_VERSION})", file=path)
-
+    with open_versioned(path, ARTICULATION_FORMAT, ARTICULATION_VERSION, ArticulationFileError,
+                        "an articulation file", "mocap pca") as f:
         def dataset(name):
             if name not in f or not isinstance(f[name], h5py.Dataset):
                 raise ArticulationFileError(f"missing dataset '/{name}'", file=path)
             return np.asarray(f[name][()])
 
-        markers = [_text(m) for m in np.atleast_1d(dataset("markers")).tolist()]
+        markers = [text_attribute(m) for m in np.atleast_1d(dataset("markers")).tolist()]
         numbers = {}
         for name in ("mean", "components", "explained_variance_ratio", "stages"):
             try:
@@ -679,7 +643,7 @@ def load_articulation_file(path: str | Path) -> Articulation:
         n_comp = numbers["components"].shape[0] if numbers["components"].ndim else 0
         try:
             score_std = np.asarray(f.attrs.get("score_std_mm", np.full(n_comp, np.nan)), dtype=float).reshape(-1)
-            stage_markers = json.loads(_text(f.attrs.get("stage_markers")) or "[]")
+            stage_markers = json.loads(text_attribute(f.attrs.get("stage_markers")) or "[]")
         except (TypeError, ValueError):
             raise ArticulationFileError("the attributes 'score_std_mm' or 'stage_markers' are damaged",
                                         file=path) from None
@@ -688,8 +652,8 @@ def load_articulation_file(path: str | Path) -> Articulation:
             explained_variance_ratio=numbers["explained_variance_ratio"], stages=numbers["stages"],
             stage_markers=stage_markers, score_std=score_std,
             n_frames=int(f.attrs.get("n_frames", 0)), excluded_missing=int(f.attrs.get("excluded_missing", 0)),
-            selection=_text(f.attrs.get("selection")) or "", rate_hz=float(f.attrs.get("rate_hz", np.nan)),
-            source=_text(f.attrs.get("source")) or "")
+            selection=text_attribute(f.attrs.get("selection")) or "", rate_hz=float(f.attrs.get("rate_hz", np.nan)),
+            source=text_attribute(f.attrs.get("source")) or "")
     _check_arrays(art, path)
     art.stages = art.stages.astype(np.int64)
     return art
@@ -728,12 +692,6 @@ def _check_arrays(art: Articulation, path) -> None:
         fail("'stages' must be whole numbers ≥ 1 in non-decreasing order")
     if np.asarray(art.score_std).shape != (c,):
         fail(f"the attribute 'score_std_mm' must hold {c} numbers")
-
-
-def _text(value) -> str | None:
-    if isinstance(value, bytes):
-        return value.decode("utf-8", errors="replace")
-    return None if value is None else str(value)
 
 
 # ---------------------------------------------------------------------------

@@ -35,15 +35,15 @@ array([ 0.        , 16.66666667, 33.33333333])
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import h5py
 import numpy as np
 
+from ..files import atomic_path
 from .errors import MocapError, SessionFileError
+from .hdf5_files import open_versioned, text_attribute
 
 SESSION_FORMAT = "artificial-person-mocap-session"
 SESSION_VERSION = 1
@@ -132,24 +132,8 @@ class Session:
 
 def save_session(session: Session, path: str | Path) -> None:
     """Write ``session`` to an HDF5 file atomically (temporary file beside ``path``, then rename)."""
-    path = Path(path)
-    folder = path.parent if str(path.parent) else Path(".")
-    if not folder.is_dir():
-        raise SessionFileError("cannot write: the folder does not exist", file=path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
-    os.close(fd)
-    try:
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
+    with atomic_path(path, SessionFileError) as tmp:
         _write(session, tmp)
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
 
 
 def _write(s: Session, tmp: str) -> None:
@@ -178,25 +162,8 @@ def _write(s: Session, tmp: str) -> None:
 def load_session(path: str | Path) -> Session:
     """Read a session file, checking its format, version and every array's shape."""
     path = Path(path)
-    if not path.exists():
-        raise SessionFileError("no such file", file=path)
-    try:
-        f = h5py.File(path, "r")
-    except OSError:
-        raise SessionFileError("not a readable HDF5 file (is it a session written by 'mocap import'?)",
-                               file=path) from None
-    with f:
-        fmt = _text(f.attrs.get("format"))
-        if fmt != SESSION_FORMAT:
-            raise SessionFileError(f"not a motion-capture session (format attribute is {fmt!r}, "
-                                   f"expected '{SESSION_FORMAT}')", file=path)
-        try:
-            version = int(f.attrs.get("version"))
-        except (TypeError, ValueError):
-            raise SessionFileError("the session has no valid 'version' attribute", file=path) from None
-        if version != SESSION_VERSION:
-            raise SessionFileError(f"session format version {version} is not one this program reads "
-                                   f"(it reads version {SESSION_VERSION})", file=path)
+    with open_versioned(path, SESSION_FORMAT, SESSION_VERSION, SessionFileError, "a motion-capture session",
+                        "mocap import") as f:
         reader = _Reader(f, path)
         markers = reader.strings("markers")
         positions = reader.array("positions", float, 3)
@@ -207,7 +174,7 @@ def load_session(path: str | Path) -> Session:
         except (KeyError, TypeError, ValueError):
             raise SessionFileError("the session has no valid 'rate_hz' attribute", file=path) from None
         try:
-            report = json.loads(_text(reader.scalar("report")) or "{}")
+            report = json.loads(text_attribute(reader.scalar("report")) or "{}")
         except json.JSONDecodeError as exc:
             raise SessionFileError(f"the '/report' dataset is not valid JSON ({exc.msg})", file=path) from None
         phones = []
@@ -226,7 +193,7 @@ def load_session(path: str | Path) -> Session:
                 rate_hz=rate,
                 missing=reader.array("missing", bool, 2, shape),
                 alignment=reader.array("alignment", float, 3, (n_frames, 4, 4)),
-                phones=phones, source=_text(f.attrs.get("source")) or "", report=report,
+                phones=phones, source=text_attribute(f.attrs.get("source")) or "", report=report,
                 filled=reader.array("filled", bool, 2, shape) if "filled" in f else None,
                 reference=reader.strings("reference") if "reference" in f else [],
             )
@@ -267,15 +234,7 @@ class _Reader:
         if arr.ndim != 1:
             raise SessionFileError(f"dataset '/{name}' has shape {arr.shape}, expected a list of names",
                                    file=self.path)
-        return [_text(v) for v in arr.tolist()]
+        return [text_attribute(v) for v in arr.tolist()]
 
     def scalar(self, name: str):
         return self._dataset(name)[()]
-
-
-def _text(value) -> str | None:
-    if isinstance(value, bytes):
-        return value.decode("utf-8", errors="replace")
-    if value is None:
-        return None
-    return str(value)
