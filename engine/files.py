@@ -31,7 +31,8 @@ def atomic_path(path: str | Path, error: type[UserError] = UserError):
     >>> with atomic_path("/tmp/out.h5") as tmp:                      # doctest: +SKIP
     ...     with h5py.File(tmp, "w") as f: ...
 
-    If the block raises, the temporary file is removed and ``path`` is untouched.
+    If the block raises, the temporary file is removed and ``path`` is untouched;
+    an ``OSError`` (disk full, permissions) becomes ``error`` naming ``path``.
     """
     path = Path(path)
     folder = path.parent if str(path.parent) else Path(".")
@@ -48,34 +49,18 @@ def atomic_path(path: str | Path, error: type[UserError] = UserError):
         with open(tmp, "rb") as fh:
             os.fsync(fh.fileno())
         os.replace(tmp, path)
+    except OSError as exc:
+        _unlink_quietly(tmp)
+        raise error(f"cannot write: {exc.strerror or exc}", file=path) from None
     except BaseException:
         _unlink_quietly(tmp)
         raise
 
 
 def atomic_write_bytes(path: str | Path, data: bytes) -> None:
-    """Write to a temporary file beside ``path``, then rename it over ``path``."""
-    path = Path(path)
-    folder = path.parent if str(path.parent) else Path(".")
-    if not folder.is_dir():
-        raise UserError("cannot write: the folder does not exist", file=path)
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=folder)
-    except OSError as exc:
-        raise UserError(f"cannot write: {exc.strerror or exc}", file=path) from None
-    try:
-        os.chmod(tmp, 0o666 & ~_umask())  # mkstemp makes 0600; give the file the usual permissions
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except OSError as exc:
-        _unlink_quietly(tmp)
-        raise UserError(f"cannot write: {exc.strerror or exc}", file=path) from None
-    except BaseException:
-        _unlink_quietly(tmp)
-        raise
+    """Write ``data`` to a temporary file beside ``path``, then rename it over ``path``."""
+    with atomic_path(path) as tmp, open(tmp, "wb") as fh:
+        fh.write(data)
 
 
 def _umask() -> int:
