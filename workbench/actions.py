@@ -120,3 +120,25 @@ def populate(menubar: QMenuBar, toolbar: QToolBar, actions: dict[str, QAction],
                 toolbar.addSeparator()
             toolbar.addAction(actions[spec.id])
     return menus
+
+
+def add_actions(window: "MainWindow", specs: tuple[ActionSpec, ...]) -> dict[str, QAction]:
+    """Add a tool's actions to a built window: menus (new ones go before none), toolbar, ``actions_by_id``.
+
+    A tool's :func:`install` calls this with its own specs; menus it names
+    that do not exist yet are appended to the menu bar.
+    """
+    actions = create_actions(window, specs)
+    for spec in specs:
+        menu = window.menus.get(spec.menu)
+        if menu is None:
+            menu = window.menus[spec.menu] = window.menuBar().addMenu(spec.menu)
+        elif spec.separator_before:
+            menu.addSeparator()
+        menu.addAction(actions[spec.id])
+        if spec.toolbar:
+            if spec.separator_before and window.toolbar.actions():
+                window.toolbar.addSeparator()
+            window.toolbar.addAction(actions[spec.id])
+    window.actions_by_id.update(actions)
+    return actions

@@ -51,3 +51,19 @@ def part_color(model: engine.Model, part: str) -> str:
     if color is not None and _HEX.fullmatch(color):
         return color
     return default_part_color(part)
+
+
+def hex_to_rgb(color: str) -> tuple[int, int, int]:
+    """``"#e0ac94"`` → ``(224, 172, 148)``."""
+    return int(color[1:3], 16), int(color[3:5], 16), int(color[5:7], 16)
+
+
+def base_vertex_colors(model: engine.Model):
+    """(N, 3) uint8: each vertex's ordinary colour (the model's painted colours, else its part's)."""
+    import numpy as np
+
+    if model.vertex_colors is not None:
+        return np.ascontiguousarray(model.vertex_colors, dtype=np.uint8)
+    table = np.array([hex_to_rgb(part_color(model, part)) for part in model.parts] or [[0, 0, 0]],
+                     dtype=np.uint8)
+    return table[model.vertex_part]

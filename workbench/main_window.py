@@ -16,12 +16,13 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolBar, QWidget
 import engine
 
 from . import actions as workbench_actions
-from . import settings
+from . import features, settings
 from .document import ModelDocument
 from .file_controller import TITLE, FileController
 from .icons import APP_ICON, icon
 from .parameter_panel import ParameterPanel
 from .parts_menu import PartsMenu
+from .playhead import Playhead
 from .recent_files import RecentFilesMenu
 from .recovery import Autosaver, RecoverySession
 from .status_bar import ModelStatusBar
@@ -43,6 +44,7 @@ class MainWindow(QMainWindow):
         super().__init__(parent)
         self.document = document
         self.view_state = ViewState(self)
+        self.playhead = Playhead(self)
         self.files = FileController(self)
         self._closed = False
         # Connected first, so every part is visible again before the widgets rebuild.
@@ -87,6 +89,7 @@ class MainWindow(QMainWindow):
         self._bind_undo_actions()
 
         self.setStatusBar(ModelStatusBar(document, self))
+        features.install_all(self)      # the tools: their docks exist before the layout is restored
         self._update_title()
         self.setWindowModified(document.is_modified)
         self.resize(1280, 800)
@@ -170,6 +173,7 @@ class MainWindow(QMainWindow):
 
     def _on_model_replaced(self, _model: engine.Model) -> None:
         self.view_state.show_all_parts()
+        self.view_state.select_parameter(None)
         self._update_title()
 
     def _update_title(self, *_args) -> None:

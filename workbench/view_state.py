@@ -1,4 +1,4 @@
-"""How the model is displayed (not what it is): wireframe, hidden parts.
+"""How the model is displayed (not what it is): wireframe, hidden parts, the selected parameter.
 
 Kept apart from :class:`~workbench.document.ModelDocument` because none of it
 belongs in a model file; menus write it, the viewport listens.
@@ -17,15 +17,45 @@ class ViewState(QObject):
     wireframe_changed(bool)
     part_visibility_changed(str, bool)
         A part was shown (``True``) or hidden (``False``).
+    selected_parameter_changed(object)
+        The parameter selected in the tree (its name), or ``None``. Tools
+        act on it (painting paints its weights).
+    heat_map_changed(bool)
+        The selected parameter's influence region is drawn as a heat map
+        on the mesh (``True``) or the mesh shows its own colours.
     """
 
     wireframe_changed = Signal(bool)
     part_visibility_changed = Signal(str, bool)
+    selected_parameter_changed = Signal(object)
+    heat_map_changed = Signal(bool)
 
     def __init__(self, parent: QObject | None = None):
         super().__init__(parent)
         self._wireframe = False
         self._hidden: set[str] = set()
+        self._selected: str | None = None
+        self._heat_map = True
+
+    @property
+    def selected_parameter(self) -> str | None:
+        return self._selected
+
+    def select_parameter(self, name: str | None) -> None:
+        if name != self._selected:
+            self._selected = name
+            self.selected_parameter_changed.emit(name)
+
+    @property
+    def heat_map(self) -> bool:
+        """Whether the selected parameter's weights are shown as colours (on by default)."""
+        return self._heat_map
+
+    def set_heat_map(self, on: bool) -> None:
+        on = bool(on)
+        if on != self._heat_map:
+            self._heat_map = on
+            self.heat_map_changed.emit(on)
 
     @property
     def wireframe(self) -> bool:

@@ -4,22 +4,32 @@ Each part of the model is one actor fed by its own :class:`pyvista.PolyData`
 through a ``vtkPolyDataNormals`` filter. The actors are built once per model;
 a pose change only writes the new vertex positions into those meshes, so the
 normals (smooth shading) follow the deformation and nothing is rebuilt.
+
+Every vertex carries a colour (array ``vertex_colors``): its ordinary colour,
+or, while a parameter is selected and the heat map is on, the parameter's
+weight on the blue → red ramp of :func:`engine.painting.heat_colors`. Tools
+may show colours of their own with :meth:`Viewport.show_colors` and change a
+few vertices fast with :meth:`Viewport.update_colors` (a brush dab).
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 import pyvista as pv
 from pyvistaqt import QtInteractor
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkRenderingCore import vtkCellPicker
 
 import engine
 from engine.cells import cell_sizes, cell_starts
 
-from .colors import part_color
+from engine.painting import heat_colors
+
+from .colors import base_vertex_colors
 from .document import ModelDocument
 from .view_state import ViewState
 
@@ -33,6 +43,15 @@ VIEWS: dict[str, tuple[float, float, float]] = {
 VERTEX_COLORS = "vertex_colors"  # name of the per-vertex sRGB array on each part mesh
 BACKGROUND_BOTTOM = "#5d6670"
 BACKGROUND_TOP = "#c9ced4"
+
+
+class SurfacePick(NamedTuple):
+    """Where a ray through a pixel meets the drawn surface."""
+
+    point: np.ndarray   # (3,) mm, on the surface as drawn (the current pose)
+    vertex: int         # model index of the vertex of the hit polygon nearest the point
+    part: str
+    normal: np.ndarray  # (3,) unit normal of the hit polygon, towards the camera side
 
 
 @dataclass
@@ -54,6 +73,8 @@ class Viewport(QWidget):
         self._view_state = view_state
         self._parts: dict[str, _PartView] = {}
         self._view = "front"
+        self._base_colors = np.zeros((0, 3), dtype=np.uint8)
+        self._overlay: np.ndarray | None = None      # colours a tool asked for, else None
         # auto_update=False: we render after each change ourselves; pyvistaqt's
         # default would also re-render five times a second for nothing.
         self.plotter = QtInteractor(self, auto_update=False)
@@ -73,6 +94,13 @@ class Viewport(QWidget):
         document.regions_changed.connect(self._on_values_changed)
         view_state.wireframe_changed.connect(self._on_wireframe_changed)
         view_state.part_visibility_changed.connect(self._on_part_visibility_changed)
+        view_state.selected_parameter_changed.connect(self._refresh_colors)
+        view_state.heat_map_changed.connect(self._refresh_colors)
+        document.regions_changed.connect(self._on_regions_changed)
+        document.parameters_changed.connect(self._on_parameters_edited)
+        self._picker = vtkCellPicker()
+        self._picker.SetTolerance(0.0005)
+        self._picker.PickFromListOn()
         self._build(document.model)
         self.set_view("front")
 
@@ -101,6 +129,97 @@ class Viewport(QWidget):
             source.Update()
             out[view.vertex_indices] = pv.wrap(source.GetOutputDataObject(0)).points
         return out
+
+    def displayed_colors(self) -> np.ndarray:
+        """(N, 3) uint8 vertex colours as the render pipeline holds them, in model order."""
+        out = np.zeros((self._document.model.n_vertices, 3), dtype=np.uint8)
+        for view in self._parts.values():
+            source = view.actor.GetMapper().GetInputAlgorithm()
+            source.Update()
+            out[view.vertex_indices] = pv.wrap(source.GetOutputDataObject(0)).point_data[VERTEX_COLORS]
+        return out
+
+    def heat_map_colors(self, name: str) -> np.ndarray:
+        """(N, 3) uint8: parameter ``name``'s weights as heat colours over the ordinary colours."""
+        model = self._document.model
+        weights = model.regions[name].dense(model.n_vertices)
+        return heat_colors(weights, base=self._base_colors)
+
+    def show_colors(self, colors: np.ndarray | None) -> None:
+        """Draw every vertex in ``colors`` ((N, 3) uint8), or go back to the ordinary/heat-map colours (``None``).
+
+        While colours are shown this way, selection and region changes do not repaint.
+        """
+        if colors is not None:
+            colors = np.asarray(colors, dtype=np.uint8)
+            if colors.shape != self._base_colors.shape:
+                raise ValueError(f"colours must be {self._base_colors.shape}, not {colors.shape}")
+            self._overlay = colors.copy()
+        else:
+            self._overlay = None
+        self._refresh_colors()
+
+    def update_colors(self, indices, colors) -> None:
+        """Recolour only the vertices ``indices`` (model order) with ``colors`` ((k, 3) uint8), fast.
+
+        For a brush dab: the rest of the mesh keeps what it shows.
+        """
+        indices = np.asarray(indices, dtype=np.int64)
+        colors = np.asarray(colors, dtype=np.uint8).reshape(-1, 3)
+        if self._overlay is not None:
+            self._overlay[indices] = colors
+        full = np.zeros((self._document.model.n_vertices, 3), dtype=np.uint8)
+        full[indices] = colors
+        touched = np.zeros(self._document.model.n_vertices, dtype=bool)
+        touched[indices] = True
+        for view in self._parts.values():
+            local = np.flatnonzero(touched[view.vertex_indices])
+            if len(local):
+                array = view.mesh.point_data[VERTEX_COLORS]
+                array[local] = full[view.vertex_indices[local]]
+                view.mesh.GetPointData().GetArray(VERTEX_COLORS).Modified()
+        self._schedule_render()
+
+    def pick(self, x: float, y: float) -> SurfacePick | None:
+        """The visible surface under widget pixel (``x``, ``y``) (Qt coordinates, y down), or ``None``."""
+        renderer = self.plotter.renderer
+        picker = self._picker
+        picker.InitializePickList()
+        visible = [part for part, view in self._parts.items() if view.actor.GetVisibility()]
+        for part in visible:
+            picker.AddPickList(self._parts[part].actor)
+        if not visible:
+            return None
+        ratio = self.plotter.devicePixelRatioF() if hasattr(self.plotter, "devicePixelRatioF") else 1.0
+        height = renderer.GetRenderWindow().GetSize()[1]
+        if not picker.Pick(x * ratio, height - 1 - y * ratio, 0.0, renderer):
+            return None
+        actor = picker.GetActor()
+        part = next((name for name in visible if self._parts[name].actor is actor), None)
+        if part is None:
+            return None
+        view = self._parts[part]
+        point = np.array(picker.GetPickPosition())
+        cell = view.mesh.get_cell(picker.GetCellId())
+        ids = np.asarray(cell.point_ids)
+        drawn = view.mesh.points[ids]
+        nearest = ids[int(np.argmin(np.linalg.norm(drawn - point, axis=1)))]
+        normal = np.array(picker.GetPickNormal())
+        return SurfacePick(point, int(view.vertex_indices[nearest]), part, normal)
+
+    def world_to_widget(self, point) -> tuple[float, float]:
+        """Widget pixel (x, y; Qt coordinates) where the world point ``point`` (mm) is drawn."""
+        renderer = self.plotter.renderer
+        renderer.SetWorldPoint(*np.asarray(point, dtype=float), 1.0)
+        renderer.WorldToDisplay()
+        dx, dy, _ = renderer.GetDisplayPoint()
+        ratio = self.plotter.devicePixelRatioF() if hasattr(self.plotter, "devicePixelRatioF") else 1.0
+        height = renderer.GetRenderWindow().GetSize()[1]
+        return dx / ratio, (height - 1 - dy) / ratio
+
+    def render_now(self) -> None:
+        """Render immediately (benchmarks and screenshots; interactive code lets Qt batch renders)."""
+        self.plotter.render()
 
     def set_view(self, name: str) -> None:
         """Frame the whole model from a preset direction: ``front``, ``side`` or ``three-quarter``."""
@@ -139,17 +258,16 @@ class Viewport(QWidget):
             self.plotter.remove_actor(view.actor, render=False)
         self._parts.clear()
         points = self._document.vertices()
+        self._overlay = None
+        # Painted colours (eyebrows, iris, pupil) win over the part colour, as in
+        # engine.render; the normals filter passes them through.
+        self._base_colors = base_vertex_colors(model)
+        colors = self._current_colors()
         for part, (indices, cells) in _split_by_part(model).items():
             if len(cells) == 0:
                 continue
             mesh = pv.PolyData(np.ascontiguousarray(points[indices]), cells)
-            if model.vertex_colors is not None:
-                # Painted colours (eyebrows, iris, pupil) win over the part colour, as
-                # in engine.render; the normals filter passes them through.
-                mesh.point_data[VERTEX_COLORS] = model.vertex_colors[indices]
-                colors = dict(scalars=VERTEX_COLORS, rgb=True, show_scalar_bar=False)
-            else:
-                colors = dict(color=part_color(model, part))
+            mesh.point_data[VERTEX_COLORS] = colors[indices]
             normals = vtkPolyDataNormals()
             normals.SetInputData(mesh)
             normals.SplittingOff()       # one normal per vertex: smooth, and points stay 1:1
@@ -157,7 +275,7 @@ class Viewport(QWidget):
             normals.ComputePointNormalsOn()
             normals.ComputeCellNormalsOff()
             actor = self.plotter.add_mesh(
-                normals, **colors, smooth_shading=False,
+                normals, scalars=VERTEX_COLORS, rgb=True, show_scalar_bar=False, smooth_shading=False,
                 style="wireframe" if self._view_state.wireframe else "surface",
                 specular=0.25 if part != "skin" else 0.12, specular_power=20.0,
                 name=f"part:{part}", reset_camera=False, render=False)
@@ -174,6 +292,29 @@ class Viewport(QWidget):
         points = self._document.vertices()
         for view in self._parts.values():
             view.mesh.points[:] = points[view.vertex_indices]
+        self._schedule_render()
+
+    def _on_regions_changed(self, names: list) -> None:
+        if self._view_state.selected_parameter in names:
+            self._refresh_colors()
+
+    def _on_parameters_edited(self, _names: list) -> None:
+        self._refresh_colors()     # a rename or removal may change what the heat map shows
+
+    def _current_colors(self) -> np.ndarray:
+        if self._overlay is not None:
+            return self._overlay
+        name = self._view_state.selected_parameter
+        model = self._document.model
+        if self._view_state.heat_map and name is not None and name in model.regions:
+            return self.heat_map_colors(name)
+        return self._base_colors
+
+    def _refresh_colors(self, *_args) -> None:
+        colors = self._current_colors()
+        for view in self._parts.values():
+            view.mesh.point_data[VERTEX_COLORS][:] = colors[view.vertex_indices]
+            view.mesh.GetPointData().GetArray(VERTEX_COLORS).Modified()
         self._schedule_render()
 
     def _on_wireframe_changed(self, on: bool) -> None:

@@ -1,0 +1,31 @@
+"""The workbench's tools, each installed into the main window by one function.
+
+A tool (the parameter-tree editor, weight painting, the library editor, the
+timeline, the script panel, the motion-capture wizard, …) lives in its own
+module and exposes ``install(window) -> None``: it adds its docks, its
+tool-options page (:meth:`~workbench.tool_options.ToolOptionsDock.add_page`)
+and its actions (:func:`workbench.actions.add_actions`). The main window
+calls every installer listed here, in order, once its own pieces are up.
+
+Adding a tool is adding one line to :data:`INSTALLERS`.
+"""
+
+from __future__ import annotations
+
+from importlib import import_module
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from .main_window import MainWindow
+
+INSTALLERS: list[str] = [
+    # "module:function", relative to the workbench package
+]
+
+
+def install_all(window: "MainWindow") -> None:
+    """Run every installer in :data:`INSTALLERS` on ``window``."""
+    for entry in INSTALLERS:
+        module_name, _, function = entry.partition(":")
+        module = import_module(f".{module_name}", __package__)
+        getattr(module, function or "install")(window)
