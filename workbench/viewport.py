@@ -22,6 +22,7 @@ import pyvista as pv
 from pyvistaqt import QtInteractor
 from PySide6.QtWidgets import QVBoxLayout, QWidget
 from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+from vtkmodules.vtkCommonCore import reference as vtk_reference
 from vtkmodules.vtkRenderingCore import vtkCellPicker
 
 import engine
@@ -75,6 +76,7 @@ class Viewport(QWidget):
         self._view = "front"
         self._base_colors = np.zeros((0, 3), dtype=np.uint8)
         self._overlay: np.ndarray | None = None      # colours a tool asked for, else None
+        self._local_of: dict[str, np.ndarray] | None = None   # per part: model index → mesh point (-1)
         # auto_update=False: we render after each change ourselves; pyvistaqt's
         # default would also re-render five times a second for nothing.
         self.plotter = QtInteractor(self, auto_update=False)
@@ -164,24 +166,90 @@ class Viewport(QWidget):
 
         For a brush dab: the rest of the mesh keeps what it shows.
         """
-        indices = np.asarray(indices, dtype=np.int64)
+        indices = np.asarray(indices, dtype=np.int64).reshape(-1)
         colors = np.asarray(colors, dtype=np.uint8).reshape(-1, 3)
         if self._overlay is not None:
             self._overlay[indices] = colors
-        full = np.zeros((self._document.model.n_vertices, 3), dtype=np.uint8)
-        full[indices] = colors
-        touched = np.zeros(self._document.model.n_vertices, dtype=bool)
-        touched[indices] = True
-        for view in self._parts.values():
-            local = np.flatnonzero(touched[view.vertex_indices])
-            if len(local):
-                array = view.mesh.point_data[VERTEX_COLORS]
-                array[local] = full[view.vertex_indices[local]]
-                view.mesh.GetPointData().GetArray(VERTEX_COLORS).Modified()
+        for view, local, rows in self._locate(indices):
+            view.mesh.point_data[VERTEX_COLORS][local] = colors[rows]
+            view.mesh.GetPointData().GetArray(VERTEX_COLORS).Modified()
         self._schedule_render()
+
+    def base_colors(self) -> np.ndarray:
+        """(N, 3) uint8: every vertex's ordinary colour (part colour or painted), what weight 0 shows.
+
+        Read-only; a painting tool colours changed vertices with
+        ``heat_colors(weights[idx], base=viewport.base_colors()[idx])``.
+        """
+        view = self._base_colors.view()
+        view.flags.writeable = False
+        return view
+
+    def update_points(self, indices, positions) -> None:
+        """Move only the vertices ``indices`` (model order) to ``positions`` ((k, 3) mm), fast.
+
+        For live preview while painting: a dab moves a few vertices of the
+        posed mesh. The next pose or model change redraws every vertex from
+        the document again.
+        """
+        indices = np.asarray(indices, dtype=np.int64).reshape(-1)
+        positions = np.asarray(positions, dtype=float).reshape(-1, 3)
+        for view, local, rows in self._locate(indices):
+            points = view.mesh.GetPoints()
+            array = pv.convert_array(points.GetData())
+            array[local] = positions[rows]
+            points.Modified()
+            view.mesh.Modified()
+        self._schedule_render()
+
+    def pick_cell(self, x: float, y: float):
+        """Like :meth:`pick`, plus the hit polygon: ``(pick, vertices, weights)`` or ``None``.
+
+        ``vertices`` are the polygon's model vertex indices and ``weights``
+        the hit point's interpolation weights on them (summing to 1), so the
+        same point on another copy of the mesh — the rest mesh, when the
+        drawn one is posed — is ``weights @ other[vertices]``.
+        """
+        found = self._pick(x, y)
+        if found is None:
+            return None
+        hit, view, cell_id = found
+        cell = view.mesh.GetCell(cell_id)
+        n = cell.GetNumberOfPoints()
+        closest, sub_id, pcoords, dist2 = [0.0, 0.0, 0.0], vtk_reference(0), [0.0, 0.0, 0.0], vtk_reference(0.0)
+        weights = [0.0] * n
+        cell.EvaluatePosition(list(hit.point), closest, sub_id, pcoords, dist2, weights)
+        ids = np.array([cell.GetPointId(k) for k in range(n)], dtype=np.int64)
+        weights = np.clip(np.asarray(weights, dtype=float), 0.0, None)
+        total = weights.sum()
+        weights = weights / total if total > 0 else np.full(n, 1.0 / n)
+        return hit, view.vertex_indices[ids], weights
+
+    def _local_lookup(self) -> dict[str, np.ndarray]:
+        if self._local_of is None:
+            n = self._document.model.n_vertices
+            self._local_of = {}
+            for part, view in self._parts.items():
+                lookup = np.full(n, -1, dtype=np.int64)
+                lookup[view.vertex_indices] = np.arange(len(view.vertex_indices))
+                self._local_of[part] = lookup
+        return self._local_of
+
+    def _locate(self, indices: np.ndarray):
+        """Per part holding some of ``indices``: (view, mesh point indices, rows of ``indices``)."""
+        lookup = self._local_lookup()
+        for part, view in self._parts.items():
+            local = lookup[part][indices]
+            rows = np.flatnonzero(local >= 0)
+            if len(rows):
+                yield view, local[rows], rows
 
     def pick(self, x: float, y: float) -> SurfacePick | None:
         """The visible surface under widget pixel (``x``, ``y``) (Qt coordinates, y down), or ``None``."""
+        found = self._pick(x, y)
+        return None if found is None else found[0]
+
+    def _pick(self, x: float, y: float):
         renderer = self.plotter.renderer
         picker = self._picker
         picker.InitializePickList()
@@ -200,12 +268,13 @@ class Viewport(QWidget):
             return None
         view = self._parts[part]
         point = np.array(picker.GetPickPosition())
-        cell = view.mesh.get_cell(picker.GetCellId())
+        cell_id = picker.GetCellId()
+        cell = view.mesh.get_cell(cell_id)
         ids = np.asarray(cell.point_ids)
         drawn = view.mesh.points[ids]
         nearest = ids[int(np.argmin(np.linalg.norm(drawn - point, axis=1)))]
         normal = np.array(picker.GetPickNormal())
-        return SurfacePick(point, int(view.vertex_indices[nearest]), part, normal)
+        return SurfacePick(point, int(view.vertex_indices[nearest]), part, normal), view, cell_id
 
     def world_to_widget(self, point) -> tuple[float, float]:
         """Widget pixel (x, y; Qt coordinates) where the world point ``point`` (mm) is drawn."""
@@ -257,6 +326,7 @@ class Viewport(QWidget):
         for view in self._parts.values():
             self.plotter.remove_actor(view.actor, render=False)
         self._parts.clear()
+        self._local_of = None
         points = self._document.vertices()
         self._overlay = None
         # Painted colours (eyebrows, iris, pupil) win over the part colour, as in

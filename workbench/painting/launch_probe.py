@@ -1,0 +1,42 @@
+"""Launch timing for ``benchmarks/bench_launch.py``: note when the head is first drawn.
+
+With ``AP_LAUNCH_MARKER=PATH`` in the environment, the workbench writes the
+wall-clock time (``time.time()``) of the viewport's first finished paint to
+``PATH``; with ``AP_LAUNCH_QUIT=1`` as well it then closes the window. A normal
+start sets neither and this does nothing.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from pathlib import Path
+
+from PySide6.QtCore import QEvent, QObject, QTimer
+
+MARKER = "AP_LAUNCH_MARKER"
+QUIT = "AP_LAUNCH_QUIT"
+
+
+class _FirstPaint(QObject):
+    def __init__(self, window, path: Path):
+        super().__init__(window)
+        self._window, self._path = window, path
+        window.viewport.plotter.installEventFilter(self)
+
+    def eventFilter(self, watched, event) -> bool:  # noqa: N802 (Qt's name)
+        if event.type() == QEvent.Type.Paint and self._window.isVisible():
+            watched.removeEventFilter(self)
+            QTimer.singleShot(0, self._mark)     # after this paint has been drawn
+        return False
+
+    def _mark(self) -> None:
+        self._path.write_text(f"{time.time():.6f}\n")
+        if os.environ.get(QUIT):
+            QTimer.singleShot(0, self._window.close)
+
+
+def install(window) -> None:
+    path = os.environ.get(MARKER)
+    if path:
+        window._launch_probe = _FirstPaint(window, Path(path))
