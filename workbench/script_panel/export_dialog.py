@@ -1,0 +1,197 @@
+"""“Export speech…”: choose the files, folder, base name, frame size and rate; write them off the GUI thread.
+
+:class:`ExportSpeechDialog` only gathers an :class:`~.export_files.ExportPlan`
+(remembered in QSettings ``script_panel/export/…``). :class:`SpeechExporter`
+runs :func:`~.export_files.export_speech` on a worker thread with a
+QProgressDialog whose Cancel removes everything written so far, then names
+what was written in the status bar.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QObject, QSettings, Qt, Signal
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
+                               QFormLayout, QHBoxLayout, QLineEdit, QMessageBox, QProgressDialog, QPushButton,
+                               QSpinBox, QVBoxLayout, QWidget)
+
+from engine.errors import UserError
+
+from .export_files import KINDS, ExportCancelled, ExportPlan, export_speech
+from .jobs import Job
+
+PREFIX = "script_panel/export/"
+DEFAULT_KINDS = ("mp4", "wav", "tracks", "landmarks")
+VIEWS = (("Front", "front"), ("Three-quarter", "three-quarter"), ("Side", "side"))
+MESSAGE_MS = 8000
+
+
+class ExportSpeechDialog(QDialog):
+    """The choices of one export; :meth:`plan` reads them."""
+
+    def __init__(self, parent: QWidget | None = None, base: str = "speech"):
+        super().__init__(parent)
+        self.setWindowTitle("Export speech")
+        self.setObjectName("script_panel.export_dialog")
+        store = QSettings()
+        chosen = set(str(store.value(PREFIX + "kinds", ",".join(DEFAULT_KINDS))).split(","))
+        self.kind_boxes: dict[str, QCheckBox] = {}
+        files = QVBoxLayout()
+        for kind, (suffix, what) in KINDS.items():
+            box = QCheckBox(f"{what}  (…{suffix})")
+            box.setChecked(kind in chosen)
+            self.kind_boxes[kind] = box
+            files.addWidget(box)
+        self.folder_edit = QLineEdit(str(store.value(PREFIX + "folder", str(Path.home()))))
+        browse = QPushButton("Browse…")
+        browse.clicked.connect(self._browse)
+        folder_row = QHBoxLayout()
+        folder_row.addWidget(self.folder_edit, 1)
+        folder_row.addWidget(browse)
+        self.base_edit = QLineEdit(base)
+        self.width_box = _spin(16, 3840, int(store.value(PREFIX + "width", 640)))
+        self.height_box = _spin(16, 2160, int(store.value(PREFIX + "height", 480)))
+        size_row = QHBoxLayout()
+        size_row.addWidget(self.width_box)
+        size_row.addWidget(self.height_box)
+        size_row.addStretch(1)
+        self.fps_box = QDoubleSpinBox()
+        self.fps_box.setRange(1, 240)
+        self.fps_box.setDecimals(2)
+        self.fps_box.setValue(float(store.value(PREFIX + "fps", 30.0)))
+        self.fps_box.setSuffix(" fps")
+        self.view_box = QComboBox()
+        for label, value in VIEWS:
+            self.view_box.addItem(label, value)
+        self.view_box.setCurrentIndex(max(0, self.view_box.findData(str(store.value(PREFIX + "view", "front")))))
+
+        form = QFormLayout()
+        form.addRow("Files:", files)
+        form.addRow("&Folder:", folder_row)
+        form.addRow("&Base name:", self.base_edit)
+        form.addRow("Frame &size (px):", size_row)
+        form.addRow("Frame &rate:", self.fps_box)
+        form.addRow("&Camera:", self.view_box)
+        buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
+        buttons.button(QDialogButtonBox.StandardButton.Ok).setText("Export")
+        buttons.accepted.connect(self.accept)
+        buttons.rejected.connect(self.reject)
+        layout = QVBoxLayout(self)
+        layout.addLayout(form)
+        layout.addWidget(buttons)
+
+    def plan(self) -> ExportPlan:
+        return ExportPlan(Path(self.folder_edit.text().strip() or "."), self.base_edit.text().strip(),
+                          {kind for kind, box in self.kind_boxes.items() if box.isChecked()},
+                          fps=self.fps_box.value(), size=(self.width_box.value(), self.height_box.value()),
+                          view=self.view_box.currentData())
+
+    def remember(self) -> None:
+        plan = self.plan()
+        store = QSettings()
+        store.setValue(PREFIX + "kinds", ",".join(k for k in KINDS if k in plan.kinds))
+        store.setValue(PREFIX + "folder", str(plan.folder))
+        store.setValue(PREFIX + "width", plan.size[0])
+        store.setValue(PREFIX + "height", plan.size[1])
+        store.setValue(PREFIX + "fps", plan.fps)
+        store.setValue(PREFIX + "view", plan.view)
+
+    def _browse(self) -> None:
+        folder = QFileDialog.getExistingDirectory(self, "Export into folder", self.folder_edit.text())
+        if folder:
+            self.folder_edit.setText(folder)
+
+
+def _spin(low: int, high: int, value: int) -> QSpinBox:
+    box = QSpinBox()
+    box.setRange(low, high)
+    box.setSingleStep(2)                  # H.264 4:2:0 wants even sizes
+    box.setValue(value)
+    return box
+
+
+class SpeechExporter(QObject):
+    """Runs one export at a time for ``window``; ``exported(list of paths)`` when files were written."""
+
+    exported = Signal(list)
+    ended = Signal(str)                    # "written" | "cancelled" | "failed"
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self.job: Job | None = None
+        self.plan: ExportPlan | None = None
+        self.progress_dialog: QProgressDialog | None = None
+
+    @property
+    def busy(self) -> bool:
+        return self.job is not None
+
+    def export(self, plan: ExportPlan, speech, model) -> bool:
+        """Start writing ``plan``; False (with a dialog) when the plan cannot be written."""
+        if self.busy:
+            return False
+        try:
+            plan.check()
+        except UserError as error:
+            QMessageBox.warning(self.window, "Export speech", str(error))
+            return False
+        existing = [p.name for p in plan.paths().values() if p.exists()]
+        if existing:
+            answer = QMessageBox.question(self.window, "Export speech",
+                                          f"Replace {', '.join(existing)} in {plan.folder}?")
+            if answer != QMessageBox.StandardButton.Yes:
+                return False
+        job = self.job = Job(lambda job: export_speech(plan, speech, model, job.report, lambda: job.cancelled))
+        dialog = self.progress_dialog = QProgressDialog("Writing " + ", ".join(p.name for p in plan.paths().values()),
+                                                        "Cancel", 0, 0, self.window)
+        dialog.setObjectName("script_panel.export_progress")
+        dialog.setWindowTitle("Export speech")
+        dialog.setWindowModality(Qt.WindowModality.WindowModal)
+        dialog.setMinimumDuration(0)
+        dialog.setAutoClose(False)
+        dialog.setAutoReset(False)
+        dialog.canceled.connect(self.cancel)
+        job.progress.connect(self._on_progress)
+        self.plan = plan
+        job.ended.connect(self._on_ended)
+        dialog.show()
+        job.start()
+        return True
+
+    def cancel(self) -> None:
+        if self.job is not None:
+            self.job.cancel()
+            if self.progress_dialog is not None:
+                self.progress_dialog.setLabelText("Cancelling…")
+
+    def _on_progress(self, done: int, total: int) -> None:
+        if self.progress_dialog is not None and not self.progress_dialog.wasCanceled():
+            self.progress_dialog.setMaximum(max(1, total))
+            self.progress_dialog.setValue(min(done, total))
+
+    def _on_ended(self) -> None:
+        job, plan = self.sender(), self.plan
+        if job is not self.job:
+            return
+        self.job = None
+        if self.progress_dialog is not None:
+            self.progress_dialog.canceled.disconnect(self.cancel)
+            self.progress_dialog.close()
+            self.progress_dialog.deleteLater()
+            self.progress_dialog = None
+        status = self.window.statusBar()
+        if job.error is None:                      # written, even if Cancel came too late to stop it
+            names = ", ".join(Path(p).name for p in job.result)
+            status.showMessage(f"Exported {names} to {plan.folder}", MESSAGE_MS)
+            self.exported.emit(list(job.result))
+            self.ended.emit("written")
+        elif isinstance(job.error, ExportCancelled):
+            status.showMessage("Export cancelled: nothing was written", MESSAGE_MS)
+            self.ended.emit("cancelled")
+        else:
+            error = job.error
+            message = str(error) if isinstance(error, UserError) else f"{type(error).__name__}: {error}"
+            self.ended.emit("failed")
+            QMessageBox.warning(self.window, "Export speech", f"Nothing was written: {message}")
