@@ -24,6 +24,7 @@ INSTALLERS: list[str] = [
     "painting:install",
     "library_editor:install",
     "script_panel:install",
+    "mocap:install",
 ]
 
 

@@ -1,0 +1,179 @@
+"""The workbench's motion-capture tool (§3.1): import, marker view, frame selection, multistage PCA wizard.
+
+``install(window)`` adds the **Motion capture** menu, the *Marker
+coordinates* dock (:mod:`.plot_dock`), the *Multistage PCA* dock
+(:mod:`.pca_dock`) and the markers drawn over the face
+(:mod:`.marker_overlay`), animated by the window's shared playhead. Everything
+the tool computes is an engine call (:mod:`engine.mocap`); the tool keeps
+its state in one :class:`~.state.MocapState` (``window.mocap.state``).
+``docs/workbench-mocap.md`` is the user's guide.
+
+>>> window.mocap.open_session("take1.h5")            # doctest: +SKIP
+>>> window.mocap.plot_dock.select_by_phones(["V", "C"])  # doctest: +SKIP
+>>> window.mocap.pca_dock.run_pca()                  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+from PySide6.QtCore import QObject, Qt
+from PySide6.QtWidgets import QFileDialog
+
+from engine.mocap.session import load_session, save_session
+
+from ..actions import ActionSpec, add_actions
+from .import_dialog import ImportDialog
+from .marker_overlay import HIGHLIGHT_COLOR, MarkerOverlay, default_colors, error_colors, marker_to_model_transform
+from .pca_dock import PcaDock
+from .plot_dock import MarkerPlotDock
+from .state import MocapState
+from .worker import run_in_background, show_error
+
+MENU = "&Motion capture"
+SESSION_FILES = "Capture sessions (*.h5);;All files (*)"
+
+
+class MocapTool(QObject):
+    """Connects the mocap state to the window: menu actions, docks, the markers in the viewport."""
+
+    def __init__(self, window):
+        super().__init__(window)
+        self.window = window
+        self.state = MocapState(self)
+        self.overlay = MarkerOverlay(window.viewport)
+        self.import_dialog: ImportDialog | None = None
+        self.preview = None                 # (markers, points) of a PCA component being shown, or None
+        self.errors: dict[str, float] | None = None
+        self.job = None
+        self.plot_dock = MarkerPlotDock(self.state, window.playhead, window)
+        self.pca_dock = PcaDock(self.state, window.document, window)
+        window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.plot_dock)
+        window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.pca_dock)
+        self.plot_dock.hide()
+        self.pca_dock.hide()
+
+        self.state.session_changed.connect(self._on_session)
+        window.playhead.time_changed.connect(self._redraw)
+        self.plot_dock.marker_combo.currentTextChanged.connect(self._redraw)
+        self.pca_dock.preview_changed.connect(self._on_preview)
+        self.pca_dock.errors_changed.connect(self._on_errors)
+        window.document.model_replaced.connect(lambda _m: self._place_markers())
+
+    # -- sessions --------------------------------------------------------------------
+    def import_dialog_for(self, path: str | Path | None = None) -> ImportDialog:
+        """Open the import dialog (non-modal), on ``path`` if given."""
+        if self.import_dialog is None:
+            self.import_dialog = ImportDialog(self.window)
+            self.import_dialog.session_imported.connect(self.state.set_session)
+        self.import_dialog.show()
+        self.import_dialog.raise_()
+        if path is not None:
+            self.import_dialog.set_path(path)
+        return self.import_dialog
+
+    def open_session(self, path: str | Path) -> None:
+        """Load a session file (HDF5) in the background; a bad file → dialog, nothing changes."""
+        path = Path(path)
+        self.job = run_in_background(self.window, f"Opening {path.name}…", lambda: load_session(path),
+                                     lambda session: self.state.set_session(session, path))
+
+    def save_session(self, path: str | Path) -> bool:
+        if self.state.session is None:
+            return False
+        try:
+            save_session(self.state.session, path)
+        except Exception as exc:  # noqa: BLE001
+            show_error(self.window, "Save session", exc)
+            return False
+        self.state.session_path = Path(path)
+        return True
+
+    def _open_dialog(self) -> None:
+        path, _ = QFileDialog.getOpenFileName(self.window, "Open capture session", "", SESSION_FILES)
+        if path:
+            self.open_session(path)
+
+    def _save_dialog(self) -> None:
+        if self.state.session is None:
+            return
+        default = str(self.state.session_path or Path(self.state.session.source).with_suffix(".h5"))
+        path, _ = QFileDialog.getSaveFileName(self.window, "Save capture session", default, SESSION_FILES)
+        if path:
+            self.save_session(path)
+
+    def _on_session(self, session) -> None:
+        self.preview = None
+        self.errors = None
+        if session is None:
+            self.overlay.hide()
+            return
+        self.window.playhead.set_range((session.n_frames - 1) / session.rate_hz, session.rate_hz)
+        self.plot_dock.show()
+        self.pca_dock.show()
+        self._place_markers()
+        self.window.statusBar().showMessage(f"Capture session: {session.source}, {session.n_frames} frames, "
+                                            f"{session.n_markers} markers", 4000)
+
+    # -- the markers in the viewport -----------------------------------------------------------
+    def _place_markers(self) -> None:
+        session = self.state.session
+        if session is None:
+            return
+        scale, rotation, translation, _pairs = marker_to_model_transform(self.window.document.model,
+                                                                         session.markers, session.positions)
+        self.overlay.set_transform(scale, rotation, translation)
+        self._redraw()
+
+    def current_frame(self) -> int:
+        session = self.state.session
+        return int(np.clip(round(self.window.playhead.time * session.rate_hz), 0, session.n_frames - 1))
+
+    def _redraw(self, *_args) -> None:
+        session = self.state.session
+        if session is None:
+            return
+        if self.preview is not None:
+            markers, points = self.preview
+        else:
+            markers, points = session.markers, session.positions[self.current_frame()]
+        if self.errors is not None:
+            colors = error_colors([self.errors.get(m, np.nan) for m in markers])
+        else:
+            colors = default_colors(markers, session.reference)
+        shown = self.plot_dock.marker
+        if shown in markers and self.errors is None:
+            colors[markers.index(shown)] = HIGHLIGHT_COLOR
+        self.overlay.show(points, colors)
+
+    def _on_preview(self, preview) -> None:
+        self.preview = preview
+        self._redraw()
+
+    def _on_errors(self, errors) -> None:
+        self.errors = errors
+        if errors is not None and self.pca_dock.applied is not None:
+            applied = self.pca_dock.applied
+            self.overlay.set_transform(applied.scale, applied.rotation, applied.translation)
+        self._redraw()
+
+
+def install(window) -> None:
+    """Add the Motion capture menu and docks to ``window`` (``window.mocap`` is the tool)."""
+    tool = window.mocap = MocapTool(window)
+    add_actions(window, (
+        ActionSpec("mocap.import", "&Import marker file…", MENU, triggered=lambda w: w.mocap.import_dialog_for(),
+                   icon="mocap-import", shortcut="Ctrl+Shift+M",
+                   tip="Read a QTM TSV, C3D, TRC or CSV marker file into a capture session"),
+        ActionSpec("mocap.open", "&Open session…", MENU, triggered=lambda w: w.mocap._open_dialog(),
+                   tip="Open a capture session file (.h5) made by an import"),
+        ActionSpec("mocap.save", "&Save session as…", MENU, triggered=lambda w: w.mocap._save_dialog(),
+                   tip="Write the capture session, with its phone labels, to an HDF5 file"),
+        ActionSpec("mocap.plot", "Marker &coordinates", MENU, separator_before=True,
+                   triggered=lambda w: w.mocap.plot_dock.show(),
+                   tip="Plot a marker coordinate over time and select frames"),
+        ActionSpec("mocap.pca", "Multistage &PCA…", MENU, triggered=lambda w: w.mocap.pca_dock.show(),
+                   icon="mocap-pca", tip="Derive articulatory parameters from the selected frames (§3.1.2)"),
+    ))
+    return tool

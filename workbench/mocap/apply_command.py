@@ -1,0 +1,49 @@
+""""Apply to model" as one undo step: the PCA's translation parameters and their regions added together.
+
+:func:`engine.mocap.apply.apply_articulation` runs on a copy of the model in
+the background; the parameters and influence regions it made are then added
+to the open model by :class:`AddArticulationCommand`, through
+:meth:`~workbench.document.ModelDocument.apply_add_parameter` like any added
+parameter. Undo removes them last-first, which restores the tree exactly
+(new leaves, appended at the end of the order).
+
+>>> document.push(AddArticulationCommand(document, [(parameter, region), ...]))   # doctest: +SKIP
+>>> document.undo_stack.undoText()                                                # doctest: +SKIP
+'Add 5 PCA parameters (pca1 … pca5)'
+"""
+
+from __future__ import annotations
+
+from engine.errors import UserError
+
+from ..undo_commands import ModelEditCommand
+
+
+class AddArticulationCommand(ModelEditCommand):
+    """Add several parameters with their regions as one undoable edit (all or none)."""
+
+    def __init__(self, document, parameters_and_regions, text: str | None = None):
+        items = [(p.copy(), r.copy()) for p, r in parameters_and_regions]
+        names = [p.name for p, _ in items]
+        label = f"{names[0]} … {names[-1]}" if len(names) > 2 else ", ".join(names)
+        super().__init__(document, text or f"Add {len(items)} PCA parameters ({label})")
+        self._items = items
+
+    @property
+    def names(self) -> list[str]:
+        return [p.name for p, _ in self._items]
+
+    def apply(self) -> None:
+        added = []
+        try:
+            for parameter, region in self._items:
+                self.document.apply_add_parameter(parameter.copy(), region.copy())
+                added.append(parameter.name)
+        except UserError:
+            for name in reversed(added):
+                self.document.apply_remove_parameter(name)
+            raise
+
+    def revert(self) -> None:
+        for parameter, _ in reversed(self._items):
+            self.document.apply_remove_parameter(parameter.name)

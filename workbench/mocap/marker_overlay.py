@@ -1,0 +1,130 @@
+"""The captured markers drawn over the face in the viewport: small spheres in the model's coordinates.
+
+Marker coordinates are not model coordinates. Every marker the model has a
+place for — its landmark of the same MPEG-4 id, or a head-fixed point the
+engine places on the skin (:func:`engine.mocap.synthetic.marker_vertices`,
+the correspondence ``mocap apply`` uses) — pairs the session's median
+marker position with that vertex at rest; a similarity transform (scale,
+rotation, translation, the engine's Umeyama fit) takes the markers there.
+After "Apply to model" the PCA's own alignment
+(:meth:`engine.mocap.apply.AppliedArticulation.to_model`) replaces it.
+
+The actor is ours (one point cloud rendered as spheres, per-point colours);
+pyvista is imported here only when the first markers are shown.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from engine.errors import UserError
+
+MARKER_COLOR = (255, 214, 0)        # lips and jaw: the markers the PCA analyses
+REFERENCE_COLOR = (90, 150, 255)    # head-fixed reference markers
+OTHER_COLOR = (80, 220, 120)
+HIGHLIGHT_COLOR = (255, 40, 200)    # the marker shown in the coordinate plot
+POINT_SIZE = 13.0
+
+
+def marker_to_model_transform(model, markers, positions) -> tuple[float, np.ndarray, np.ndarray, list[str]]:
+    """``(scale, rotation, translation, paired markers)`` with model = scale · R @ marker + t.
+
+    ``positions`` (F, M, 3) mm, NaN where missing; the median over frames of
+    each marker pairs with its vertex on the model at rest. With fewer than
+    three pairs the markers are only moved so their centre sits on the
+    face's landmarks' centre.
+    """
+    from engine.mocap.apply import _umeyama
+    from engine.mocap.synthetic import marker_vertices
+
+    places = {}
+    for m in markers:
+        try:
+            places.update(marker_vertices(model, [m]))
+        except UserError:
+            continue
+    median = np.nanmedian(np.where(np.isfinite(positions), positions, np.nan), axis=0) if len(positions) else None
+    pairs = [m for m in markers if m in places and median is not None and np.isfinite(median[markers.index(m)]).all()]
+    if len(pairs) >= 3:
+        source = np.array([median[markers.index(m)] for m in pairs])
+        target = model.vertices[[places[m] for m in pairs]]
+        scale, rotation, translation = _umeyama(source, target)
+        return scale, rotation, translation, pairs
+    centre = (model.vertices[list(model.landmarks.values())].mean(axis=0) if model.landmarks
+              else model.vertices.mean(axis=0))
+    offset = centre - (np.nanmean(median, axis=0) if median is not None else 0.0)
+    return 1.0, np.eye(3), np.nan_to_num(offset), pairs
+
+
+def default_colors(markers, reference=()) -> np.ndarray:
+    """(M, 3) uint8: yellow lips and jaw (2.x, 8.x), blue reference markers, green others."""
+    out = np.empty((len(markers), 3), dtype=np.uint8)
+    for i, m in enumerate(markers):
+        if m in reference:
+            out[i] = REFERENCE_COLOR
+        elif m.startswith(("2.", "8.")):
+            out[i] = MARKER_COLOR
+        else:
+            out[i] = OTHER_COLOR
+    return out
+
+
+def error_colors(errors_mm, good_mm: float = 0.5, bad_mm: float = 2.0) -> np.ndarray:
+    """(M, 3) uint8 from green (≤ ``good_mm``) through yellow to red (≥ ``bad_mm``); grey for NaN."""
+    e = np.asarray(errors_mm, dtype=float)
+    t = np.clip((e - good_mm) / (bad_mm - good_mm), 0.0, 1.0)
+    red = np.where(t < 0.5, 2 * t, 1.0)
+    green = np.where(t < 0.5, 1.0, 2 * (1 - t))
+    out = np.stack([red, green, np.zeros_like(t)], axis=1) * 230 + 25
+    out[~np.isfinite(e)] = 150
+    return out.astype(np.uint8)
+
+
+class MarkerOverlay:
+    """Spheres at marker positions in the viewport's plotter, moved and recoloured in place."""
+
+    def __init__(self, viewport):
+        self._viewport = viewport
+        self._mesh = None
+        self._actor = None
+        self.transform = (1.0, np.eye(3), np.zeros(3))
+        self.shown_points = np.zeros((0, 3))      # model coordinates of the spheres drawn now
+        self.shown_colors = np.zeros((0, 3), dtype=np.uint8)
+
+    def set_transform(self, scale: float, rotation, translation) -> None:
+        self.transform = (float(scale), np.asarray(rotation, float), np.asarray(translation, float))
+
+    def to_model(self, points) -> np.ndarray:
+        scale, rotation, translation = self.transform
+        return scale * np.asarray(points, dtype=float) @ rotation.T + translation
+
+    def show(self, points, colors) -> None:
+        """Draw markers at ``points`` (M, 3, marker space; NaN rows are hidden) with ``colors`` (M, 3) uint8."""
+        import pyvista as pv
+
+        points = self.to_model(points)
+        present = np.isfinite(points).all(axis=1)
+        self.shown_points = points[present]
+        self.shown_colors = np.asarray(colors, dtype=np.uint8)[present]
+        cloud = pv.PolyData(self.shown_points if len(self.shown_points) else np.zeros((0, 3)))
+        cloud.point_data["marker_colors"] = self.shown_colors if len(self.shown_colors) else np.zeros((0, 3), np.uint8)
+        plotter = self._viewport.plotter
+        if self._mesh is None:
+            self._mesh = cloud
+            self._actor = plotter.add_mesh(self._mesh, scalars="marker_colors", rgb=True, point_size=POINT_SIZE,
+                                           render_points_as_spheres=True, render=False, reset_camera=False,
+                                           name="mocap-markers", pickable=False)
+        else:
+            self._mesh.copy_from(cloud)
+        self._actor.SetVisibility(bool(len(self.shown_points)))
+        self._viewport.render_now()
+
+    def hide(self) -> None:
+        if self._actor is not None:
+            self._actor.SetVisibility(False)
+            self.shown_points = np.zeros((0, 3))
+            self._viewport.render_now()
+
+    @property
+    def visible(self) -> bool:
+        return self._actor is not None and bool(self._actor.GetVisibility())
