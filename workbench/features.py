@@ -22,8 +22,8 @@ INSTALLERS: list[str] = [
     # "module:function", relative to the workbench package
     "timeline_dock:install",        # first: creates window.player, which other tools play through
     "painting:install",
-    "expression_gallery:install",
     "library_editor:install",
+    "expression_gallery:install",
     "script_panel:install",
     "mocap:install",
 ]
