@@ -172,12 +172,14 @@ def test_open_action_asks_for_a_file(window, tmp_path, monkeypatch):
 def _colour_count(image, rect, colour: str, tolerance: int = 40) -> int:
     from PySide6.QtGui import QColor, QImage
 
+    from workbench.timeline_dock.track_view import LABEL_WIDTH
+
     image = image.convertToFormat(QImage.Format.Format_RGB888)
     pixels = np.frombuffer(image.constBits(), np.uint8).reshape(image.height(), image.bytesPerLine())
     pixels = pixels[:, :image.width() * 3].reshape(image.height(), image.width(), 3).astype(int)
     ratio = image.devicePixelRatio()
     top, bottom = int(rect.top() * ratio), int(rect.bottom() * ratio)
-    region = pixels[top:bottom, int(140 * ratio):]
+    region = pixels[top:bottom, int(LABEL_WIDTH * ratio):]
     target = QColor(colour)
     distance = np.abs(region - np.array([target.red(), target.green(), target.blue()])).sum(axis=2)
     return int((distance < tolerance).sum())

@@ -21,7 +21,7 @@ from PySide6.QtCore import QPointF, QRectF, QSize, Qt
 from PySide6.QtGui import QColor, QFontMetrics, QMouseEvent, QPainter, QPaintEvent, QPen, QPolygonF
 from PySide6.QtWidgets import QSizePolicy, QWidget
 
-LABEL_WIDTH = 140
+LABEL_WIDTH = 170
 RULER_HEIGHT = 24
 TRACK_HEIGHT = 34
 PHONE_HEIGHT = 24
@@ -30,6 +30,23 @@ NICE_STEPS = (0.01, 0.02, 0.05, 0.1, 0.2, 0.25, 0.5, 1, 2, 5, 10, 15, 30, 60, 12
 MIN_LABEL_SPACING = 70
 
 TRACK_COLORS = ("#3b82f6", "#ef4444", "#10b981", "#f59e0b", "#8b5cf6", "#ec4899", "#14b8a6", "#84cc16")
+
+
+def track_span(values: np.ndarray, parameter) -> tuple[float, float]:
+    """The value range a track is drawn over: what it covers and its default, a little wider.
+
+    Small motions fill their row (a nod of 0.09 on a ±1 parameter is still a visible curve);
+    a flat track gets the parameter's range.
+    """
+    low = min(float(np.min(values)), parameter.default)
+    high = max(float(np.max(values)), parameter.default)
+    if high - low < 1e-12:
+        low, high = parameter.minimum, parameter.maximum
+        if high - low < 1e-12:
+            low, high = low - 1.0, high + 1.0
+        return low, high
+    pad = 0.08 * (high - low)
+    return low - pad, high + pad
 
 
 def ruler_step(duration: float, pixels: float) -> float:
@@ -174,6 +191,7 @@ class TrackView(QWidget):
         _left, width = self._span()
         step = ruler_step(duration, width)
         minor = step / 5
+        metrics = QFontMetrics(self.font())
         count = int(duration / minor + 1e-9)
         for k in range(count + 1):
             t = k * minor
@@ -182,13 +200,16 @@ class TrackView(QWidget):
             painter.setPen(palette.text().color() if major else palette.mid().color())
             painter.drawLine(QPointF(x, RULER_HEIGHT - (10 if major else 5)), QPointF(x, RULER_HEIGHT - 1))
             if major:
-                label = f"{t:g} s" if step >= 1 else f"{t:.2f}".rstrip("0").rstrip(".")
-                painter.drawText(QPointF(x + 3, RULER_HEIGHT - 11), label)
+                label = f"{t:.2f}".rstrip("0").rstrip(".") + (" s" if k == 0 else "")
+                if x + 3 + metrics.horizontalAdvance(label) <= self.width():
+                    painter.drawText(QPointF(x + 3, RULER_HEIGHT - 11), label)
 
     def _paint_tracks(self, painter: QPainter) -> None:
         palette = self.palette()
         tree = self.player.document.model.parameters
         selected = self.view_state.selected_parameter if self.view_state is not None else None
+        small = self.font()
+        small.setPointSizeF(max(6.0, small.pointSizeF() * 0.75))
         for index, name in enumerate(self.tracks):
             rect = self.track_rect(index)
             if name == selected:
@@ -199,17 +220,25 @@ class TrackView(QWidget):
             painter.drawLine(rect.bottomLeft(), rect.bottomRight())
             painter.setPen(palette.text().color())
             painter.drawText(rect.adjusted(6, 0, LABEL_WIDTH - rect.width() - 4, 0), Qt.AlignmentFlag.AlignVCenter,
-                             QFontMetrics(self.font()).elidedText(name, Qt.TextElideMode.ElideRight, LABEL_WIDTH - 12))
+                             QFontMetrics(self.font()).elidedText(name, Qt.TextElideMode.ElideRight, LABEL_WIDTH - 52))
             if name not in tree.names or not len(self.times):
                 continue
             parameter = tree[name]
-            low, high = parameter.minimum, parameter.maximum
-            span = high - low if high > low else 1.0
+            values = self.tracks[name]
+            low, high = track_span(values, parameter)
+            span = high - low
             top, bottom = rect.top() + 4, rect.bottom() - 4
 
             def y_of(value, top=top, bottom=bottom, low=low, span=span):
                 return bottom - (value - low) / span * (bottom - top)
 
+            painter.setFont(small)
+            painter.setPen(palette.placeholderText().color())
+            painter.drawText(QRectF(LABEL_WIDTH - 44, rect.top() + 1, 40, 12), Qt.AlignmentFlag.AlignRight,
+                             f"{max(float(values.max()), parameter.default):.3g}")
+            painter.drawText(QRectF(LABEL_WIDTH - 44, rect.bottom() - 13, 40, 12), Qt.AlignmentFlag.AlignRight,
+                             f"{min(float(values.min()), parameter.default):.3g}")
+            painter.setFont(self.font())
             pen = QPen(palette.mid().color(), 1, Qt.PenStyle.DashLine)
             painter.setPen(pen)
             y_default = y_of(parameter.default)
