@@ -21,6 +21,7 @@ if TYPE_CHECKING:
 INSTALLERS: list[str] = [
     # "module:function", relative to the workbench package
     "timeline_dock:install",        # first: creates window.player, which other tools play through
+    "tree_editor:install",
     "painting:install",
     "library_editor:install",
     "expression_gallery:install",

@@ -105,6 +105,48 @@ def renamed_parameters(tree: engine.ParameterTree, old: str, new: str) -> list[e
     return out
 
 
+def subtree(tree: engine.ParameterTree, name: str) -> list[str]:
+    """``name`` and every parameter below it, in the tree's order.
+
+    >>> tree = engine.ParameterTree([engine.Parameter("head", "rotation"),
+    ...                              engine.Parameter("jaw", "rotation", parent="head"),
+    ...                              engine.Parameter("lip", "translation", parent="jaw"),
+    ...                              engine.Parameter("brow", "translation")])
+    >>> subtree(tree, "jaw"), subtree(tree, "head")
+    (['jaw', 'lip'], ['head', 'jaw', 'lip'])
+    """
+    tree[name]  # unknown names raise with a suggestion
+    inside = {name}
+    for candidate in tree.topological():       # parents before children: one pass is enough
+        if tree[candidate].parent in inside:
+            inside.add(candidate)
+    return [p.name for p in tree if p.name in inside]
+
+
+def without_subtree(model: engine.Model, name: str) -> tuple[TreeSnapshot, list[str]]:
+    """The tree with ``name`` and everything below it gone, and the names removed.
+
+    Pass both to :func:`restore_tree` (the names as ``drop_regions``).
+    """
+    removed = subtree(model.parameters, name)
+    gone = set(removed)
+    return TreeSnapshot(tuple(p.copy() for p in model.parameters if p.name not in gone), {}), removed
+
+
+def unique_name(tree: engine.ParameterTree, base: str = "parameter") -> str:
+    """``base`` if the tree has no parameter of that name, else ``base_2``, ``base_3``, …
+
+    >>> unique_name(engine.ParameterTree([engine.Parameter("parameter", "rotation")]))
+    'parameter_2'
+    """
+    if base not in tree:
+        return base
+    n = 2
+    while f"{base}_{n}" in tree:
+        n += 1
+    return f"{base}_{n}"
+
+
 def weights_at(region: engine.InfluenceRegion, indices) -> np.ndarray:
     """The region's weight at each vertex in ``indices``; NaN where the vertex is not in the region.
 

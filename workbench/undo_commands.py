@@ -24,9 +24,9 @@ import numpy as np
 from PySide6.QtGui import QUndoCommand
 
 import engine
-from engine.errors import UserError
+from engine.errors import ParameterError, UserError
 
-from .model_edits import TreeSnapshot
+from .model_edits import TreeSnapshot, subtree, without_subtree
 
 if TYPE_CHECKING:
     from .document import ModelDocument
@@ -112,6 +112,29 @@ class RemoveParameterCommand(ModelEditCommand):
         self.document.apply_restore_tree(self._before)
 
 
+class RemoveSubtreeCommand(ModelEditCommand):
+    """Remove a parameter together with everything below it, and their regions.
+
+    Undo puts the whole subtree back in its place in the order, with its
+    regions, bit for bit.
+    """
+
+    def __init__(self, document: "ModelDocument", name: str):
+        names = subtree(document.model.parameters, name)
+        below = f" and {len(names) - 1} below it" if len(names) > 1 else ""
+        super().__init__(document, f"Remove parameter {name}{below}")
+        self._name = name
+        self.removed = names
+        self._before = TreeSnapshot.of(document.model, names)
+
+    def apply(self) -> None:
+        snapshot, removed = without_subtree(self.model, self._name)
+        self.document.apply_restore_tree(snapshot, drop_regions=removed)
+
+    def revert(self) -> None:
+        self.document.apply_restore_tree(self._before)
+
+
 class ReplaceParameterCommand(ModelEditCommand):
     """Give a parameter new properties (type, axis, pivot, range, default, parent, …); same name."""
 
@@ -137,6 +160,10 @@ class ReparentParameterCommand(ReplaceParameterCommand):
     def __init__(self, document: "ModelDocument", name: str, parent: str | None):
         if parent is not None:
             document.model.parameters[parent]  # unknown names raise with a suggestion
+            if parent in subtree(document.model.parameters, name):
+                what = "the parameter itself" if parent == name else f"one of {name}'s descendants"
+                raise ParameterError(f"cannot move {name} under {parent}: {parent} is {what} "
+                                     "(the parent chain loops)")
         moved = document.model.parameters[name].copy(parent=parent)
         where = f"under {parent}" if parent is not None else "to the top"
         super().__init__(document, moved, text=f"Move {name} {where}")

@@ -1,0 +1,64 @@
+"""The parameter tree editor (§2.2, Fig. 3): add, remove, rename and move parameters, edit their properties.
+
+``install(window)`` adds
+
+* the **Parameter tree** dock (``dock:parameter-tree``): every parameter with
+  its group (1 · rigid for parameters with children, 2 · leaf otherwise) and
+  type; rename in place, drag a row onto another to move it under it;
+* the **property sheet** on the ``tree-editor`` page of the Tool options dock
+  (type, axis, pivot typed or picked on the mesh, direction, range, default);
+* the **gizmo** in the viewport: the selected parameter's pivot and axis;
+* the **Parameters** menu: Add parameter, Remove parameter, Rename (F2).
+
+Every edit is one undo step. ``window.tree_editor`` is the
+:class:`~workbench.tree_editor.editor.TreeEditor` holding the pieces.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import Qt
+
+from ..actions import ActionSpec, add_actions
+from .dock import ParameterTreeDock
+from .editor import TreeEditor
+from .gizmo import ParameterGizmo
+from .property_sheet import TOOL_ID, PropertySheet
+
+if TYPE_CHECKING:
+    from ..main_window import MainWindow
+
+__all__ = ["install", "TreeEditor", "TOOL_ID"]
+
+MENU = "&Parameters"
+ACTIONS = (
+    ActionSpec("parameters.add", "&Add parameter", MENU, triggered=lambda w: w.tree_editor.add_parameter(),
+               shortcut="Ctrl+Shift+A", icon="parameter-add", toolbar=True, separator_before=True,
+               tip="Add a parameter under the selected one (or at the top when none is selected)"),
+    ActionSpec("parameters.remove", "&Remove parameter…", MENU,
+               triggered=lambda w: w.tree_editor.remove_parameter(), icon="parameter-remove", toolbar=True,
+               tip="Remove the selected parameter, everything below it and their influence regions"),
+    ActionSpec("parameters.rename", "Re&name", MENU, triggered=lambda w: w.tree_editor.start_rename(),
+               shortcut="F2", icon="parameter-rename", tip="Rename the selected parameter"),
+)
+
+
+def install(window: "MainWindow") -> None:
+    """Add the tree editor's dock, property page, gizmo and actions to ``window``."""
+    editor = TreeEditor(window)
+    window.tree_editor = editor
+    editor.dock = ParameterTreeDock(window.document, window.view_state, editor.rename, editor.reparent, window)
+    editor.dock.view.delete_requested.connect(lambda: editor.remove_parameter())
+    window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, editor.dock)
+    editor.sheet = PropertySheet(editor)
+    window.tool_options.add_page(TOOL_ID, editor.sheet)
+    editor.dock.picked_by_user.connect(lambda name: window.tool_options.show_page(TOOL_ID))
+    editor.gizmo = ParameterGizmo(window.viewport, window.document, window.view_state, editor)
+    editor.actions = add_actions(window, ACTIONS)
+    window.menus["&View"].addAction(editor.dock.toggleViewAction())
+    # Bound methods, not lambdas, on the document: it may outlive the window.
+    window.view_state.selected_parameter_changed.connect(editor.update_actions)
+    window.document.parameters_changed.connect(editor.update_actions)
+    window.document.model_replaced.connect(editor.update_actions)
+    editor.update_actions()
