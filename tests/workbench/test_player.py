@@ -192,3 +192,30 @@ def test_speed_is_clamped_and_scrubbing_while_playing_goes_on_from_there(window,
     assert player.is_playing and player._anchor_time == pytest.approx(0.2)
     player.pause()
     assert player.state == "paused"
+
+
+def test_on_a_machine_without_output_the_real_audio_path_is_silent(tmp_path):
+    """No monkeypatching: PortAudio itself finds no output device here (CI, servers)."""
+    from workbench.audio_output import AudioOutput, load_clip, output_available
+
+    if output_available():
+        pytest.skip("this machine has an audio output")
+    wav = tmp_path / "a.wav"
+    wav.write_bytes(wav_bytes(np.zeros(4000), 8000))
+    clip = load_clip(wav)
+    assert clip.duration == pytest.approx(0.5) and clip.source == str(wav)
+    output = AudioOutput()
+    assert output.start(clip, 0.1) is False
+    assert output.position() is None and not output.is_playing
+    output.stop()
+
+
+def test_another_model_stops_and_keeps_only_what_it_can_drive(window, synthetic_model_path):
+    player = window.player
+    player.load(timeline_of(JAW_SCRIPT, window.document.model))
+    player.play()
+    model = engine.load_model(synthetic_model_path)
+    window.document.replace_model(model, synthetic_model_path)
+    assert player.state == "stopped" and window.playhead.time == 0.0
+    window.playhead.set_time(0.15)
+    assert window.document.value("jaw_open") == pytest.approx(0.8)
