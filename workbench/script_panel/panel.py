@@ -212,13 +212,16 @@ class ScriptPanel(QWidget):
         if job.error is not None:
             self._report_error(job.error)
             return
-        result: SayResult = job.result
+        self.adopt(job.result)
+        self._play(job.result)
+
+    def adopt(self, result: SayResult) -> None:
+        """Make ``result`` the last utterance (what Export writes) without playing it."""
         self._forget_previous_wav(result)
         self.result = result
         self.export_button.setEnabled(True)
         phones = result.speech.utterance.phones
         self.info.setText(f"{result.duration:.2f} s, {len(phones)} phones, voice {result.speech.utterance.voice}")
-        self._play(result)
         self.said.emit(result)
 
     def _play(self, result: SayResult) -> None:
