@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from PySide6.QtCore import QPoint, Qt
-from PySide6.QtWidgets import QMessageBox
+from PySide6.QtWidgets import QDockWidget, QMessageBox
 
 import engine
 from engine.mocap.pca import load_articulation_file, multistage_pca, select_frames
@@ -268,7 +268,11 @@ def test_screenshots(head_window, qtbot, take, tmp_path):
     dialog.start_import()
     wait_jobs(qtbot)
     mocap = window.mocap
-    window.resizeDocks([mocap.plot_dock], [260], Qt.Orientation.Vertical)
+    for dock in window.findChildren(QDockWidget):      # other tools' docks: room for the face
+        if dock.objectName() not in ("dock:mocap-plot", "dock:mocap-pca", "dock:parameters"):
+            dock.hide()
+    window.resizeDocks([mocap.plot_dock], [250], Qt.Orientation.Vertical)
+    window.resizeDocks([window.parameter_dock], [820], Qt.Orientation.Horizontal)
     mocap.plot_dock.select_by_phones(["V"])
     window.playhead.set_frame(150)
     window.viewport.render_now()

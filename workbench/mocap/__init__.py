@@ -51,6 +51,7 @@ class MocapTool(QObject):
         self.pca_dock = PcaDock(self.state, window.document, window)
         window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.plot_dock)
         window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.pca_dock)
+        window.tabifyDockWidget(window.tool_options, self.pca_dock)     # shares the tool-options place
         self.plot_dock.hide()
         self.pca_dock.hide()
 
@@ -112,6 +113,7 @@ class MocapTool(QObject):
         self.window.playhead.set_range((session.n_frames - 1) / session.rate_hz, session.rate_hz)
         self.plot_dock.show()
         self.pca_dock.show()
+        self.pca_dock.raise_()
         self._place_markers()
         self.window.statusBar().showMessage(f"Capture session: {session.source}, {session.n_frames} frames, "
                                             f"{session.n_markers} markers", 4000)
@@ -153,9 +155,6 @@ class MocapTool(QObject):
 
     def _on_errors(self, errors) -> None:
         self.errors = errors
-        if errors is not None and self.pca_dock.applied is not None:
-            applied = self.pca_dock.applied
-            self.overlay.set_transform(applied.scale, applied.rotation, applied.translation)
         self._redraw()
 
 

@@ -6,8 +6,6 @@ engine places on the skin (:func:`engine.mocap.synthetic.marker_vertices`,
 the correspondence ``mocap apply`` uses) — pairs the session's median
 marker position with that vertex at rest; a similarity transform (scale,
 rotation, translation, the engine's Umeyama fit) takes the markers there.
-After "Apply to model" the PCA's own alignment
-(:meth:`engine.mocap.apply.AppliedArticulation.to_model`) replaces it.
 
 The actor is ours (one point cloud rendered as spheres, per-point colours);
 pyvista is imported here only when the first markers are shown.

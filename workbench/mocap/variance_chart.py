@@ -43,7 +43,7 @@ class VarianceChart(QWidget):
             painter.setPen(QColor(120, 120, 120))
             painter.drawText(self.rect(), Qt.AlignmentFlag.AlignCenter, "Run the PCA to see the explained variance")
             return
-        left, right, top, bottom = 40, 170, 12, 26
+        left, right, top, bottom = 40, 215, 12, 26
         plot = QRectF(left, top, max(1, self.width() - left - right), max(1, self.height() - top - bottom))
         painter.setPen(QColor(170, 170, 170))
         for pct in (0, 25, 50, 75, 100):
