@@ -1,11 +1,14 @@
-"""Build the compiled deformation kernel; all other metadata lives in pyproject.toml.
+"""Build the compiled kernels; all other metadata lives in pyproject.toml.
 
 ``pip install -e .`` (``./bootstrap`` does it) compiles ``engine/_deform_kernel.c``
-into the extension module ``engine._deform_kernel``. It needs a C compiler and
-the Python headers (Debian: ``build-essential python3-dev``, in ``bootstrap``'s
-package list). When compiling fails the install still succeeds
-(``optional=True``) and ``engine.deform`` uses its numpy path; the test
-``test_deform_kernel.py::test_kernel_is_built_and_current`` then reports it.
+into the extension module ``engine._deform_kernel`` (the deformation) and
+``engine/_text_table.c`` into ``engine._text_table`` (reading large number
+tables: motion-capture exports) and ``engine/_rigid_fit.c`` into
+``engine._rigid_fit`` (Kabsch rotations of every frame: head-motion removal). They need a C compiler and the Python headers
+(Debian: ``build-essential python3-dev``, in ``bootstrap``'s package list).
+When compiling fails the install still succeeds (``optional=True``) and the
+engine uses its numpy paths; ``test_deform_kernel.py::test_kernel_is_built_and_current``
+and ``test_mocap_kernels.py::test_kernels_are_built_and_current`` then report it.
 """
 
 import hashlib
@@ -14,7 +17,13 @@ from pathlib import Path
 from setuptools import Extension, setup
 
 SOURCE = "engine/_deform_kernel.c"
-digest = hashlib.sha256((Path(__file__).parent / SOURCE).read_bytes()).hexdigest()
+TABLE_SOURCE = "engine/_text_table.c"
+RIGID_SOURCE = "engine/_rigid_fit.c"
+
+
+def digest(source: str) -> str:
+    return hashlib.sha256((Path(__file__).parent / source).read_bytes()).hexdigest()
+
 
 setup(
     ext_modules=[
@@ -27,8 +36,22 @@ setup(
             # invariant 2's bit-for-bit comparison relies on.
             extra_compile_args=["-O3", "-ffp-contract=off"],
             # lets the tests tell a stale build (C source edited, not re-installed) from a current one
-            define_macros=[("SOURCE_SHA256", f'"{digest}"')],
+            define_macros=[("SOURCE_SHA256", f'"{digest(SOURCE)}"')],
             optional=True,
-        )
+        ),
+        Extension(
+            "engine._text_table",
+            sources=[TABLE_SOURCE],
+            extra_compile_args=["-O3"],
+            define_macros=[("SOURCE_SHA256", f'"{digest(TABLE_SOURCE)}"')],
+            optional=True,
+        ),
+        Extension(
+            "engine._rigid_fit",
+            sources=[RIGID_SOURCE],
+            extra_compile_args=["-O2"],
+            define_macros=[("SOURCE_SHA256", f'"{digest(RIGID_SOURCE)}"')],
+            optional=True,
+        ),
     ],
 )

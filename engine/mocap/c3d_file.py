@@ -35,7 +35,6 @@ def read_c3d(path: str | Path) -> Recording:
                 reader = c3d.Reader(fh)
                 labels = _labels(reader)
                 rate = float(reader.point_rate)
-                scale = float(reader.point_scale)
                 n_points = int(reader.point_used)
                 n_frames = int(reader.frame_count)
                 units_param = reader.get("POINT:UNITS")

@@ -23,6 +23,11 @@ import numpy as np
 
 from .errors import MocapError
 
+try:  # the compiled batched Kabsch (engine/_rigid_fit.c); numpy's batched SVD otherwise
+    from .. import _rigid_fit
+except ImportError:  # pragma: no cover - exercised where the extension is not built
+    _rigid_fit = None
+
 MIN_REFERENCE = 3
 _COLLINEAR = 1e-9  # second singular value of the cross-covariance relative to the first
 
@@ -37,28 +42,24 @@ def kabsch(points: np.ndarray, target: np.ndarray, present: np.ndarray) -> np.nd
     are whatever the points are in (mm).
     """
     points = np.asarray(points, dtype=float)
-    n_frames, k = points.shape[:2]
+    n_frames = points.shape[0]
     target = np.broadcast_to(np.asarray(target, dtype=float), points.shape)
-    w = (np.asarray(present, bool) & np.all(np.isfinite(points), axis=2) & np.all(np.isfinite(target), axis=2))
-    wf = w.astype(float)
-    count = wf.sum(axis=1)
-    safe = np.maximum(count, 1.0)[:, None]
-    p = np.where(w[..., None], points, 0.0)
-    q = np.where(w[..., None], target, 0.0)
-    p_mean = (wf[..., None] * p).sum(axis=1) / safe
-    q_mean = (wf[..., None] * q).sum(axis=1) / safe
-    pc = (p - p_mean[:, None]) * wf[..., None]
-    qc = (q - q_mean[:, None]) * wf[..., None]
-    H = pc.transpose(0, 2, 1) @ qc
-    U, S, Vt = np.linalg.svd(H)
-    d = np.sign(np.linalg.det(U @ Vt))
-    d[d == 0] = 1.0
-    D = np.zeros((n_frames, 3, 3))
-    D[:, 0, 0] = 1.0
-    D[:, 1, 1] = 1.0
-    D[:, 2, 2] = d
-    R = U @ D @ Vt  # row-vector rotation: p @ R
-    t = q_mean - (p_mean[:, None, :] @ R)[:, 0]
+    w = (np.asarray(present, bool) & np.isfinite(points).all(axis=2) & np.isfinite(target).all(axis=2))
+    count = w.sum(axis=1)
+    safe = np.maximum(count, 1)[:, None]
+    unusable = ~w
+    p = points.copy()
+    p[unusable] = 0.0
+    q = np.array(target)
+    q[unusable] = 0.0
+    p_mean = p.sum(axis=1) / safe
+    q_mean = q.sum(axis=1) / safe
+    # Σ_k (p_k − p̄)ᵀ(q_k − q̄) = Σ_k (p_k − p̄)ᵀ q_k, as Σ_k (p_k − p̄) = 0 over the usable markers
+    pc = p - p_mean[:, None]
+    pc[unusable] = 0.0
+    H = np.ascontiguousarray(pc.transpose(0, 2, 1) @ q)
+    R, S = _rotations(H)  # row-vector rotation: p @ R
+    t = q_mean - np.einsum("fi,fij->fj", p_mean, R)
     A = np.zeros((n_frames, 4, 4))
     A[:, :3, :3] = R
     A[:, 3, :3] = t
@@ -69,8 +70,32 @@ def kabsch(points: np.ndarray, target: np.ndarray, present: np.ndarray) -> np.nd
     return A
 
 
+def _rotations(H: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Kabsch rotations R = U diag(1, 1, d) Vᵀ (d = sign det UVᵀ) and singular values of (F, 3, 3) H.
+
+    The compiled ``engine._rigid_fit`` (one-sided Jacobi SVD) when it is built,
+    numpy's batched SVD otherwise; both agree to rounding.
+    """
+    if _rigid_fit is not None:
+        R = np.empty_like(H)
+        S = np.empty(H.shape[:2])
+        _rigid_fit.rotations(H, R, S)
+        return R, S
+    U, S, Vt = np.linalg.svd(H)
+    d = np.sign(np.linalg.det(U @ Vt))
+    d[d == 0] = 1.0
+    U[:, :, 2] *= d[:, None]
+    return U @ Vt, S
+
+
 def apply_alignment(positions: np.ndarray, alignment: np.ndarray) -> np.ndarray:
     """Move (F, M, 3) positions by per-frame (F, 4, 4) row-vector transforms."""
+    positions = np.ascontiguousarray(positions, dtype=float)
+    alignment = np.ascontiguousarray(alignment, dtype=float)
+    if _rigid_fit is not None and positions.ndim == 3 and alignment.shape == (len(positions), 4, 4):
+        out = np.empty_like(positions)
+        _rigid_fit.move(positions, alignment, out)
+        return out
     return positions @ alignment[:, :3, :3] + alignment[:, None, 3, :3]
 
 

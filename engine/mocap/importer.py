@@ -76,7 +76,9 @@ def build_session(recording: Recording, *, mapping: dict | None = None, max_gap_
     markers = [names[k] for k in keep]
     if not markers:
         raise MocapError("no markers left to import (the mapping drops them all)")
-    raw = np.asarray(recording.positions, dtype=float)[:, keep]
+    raw = np.asarray(recording.positions, dtype=float)
+    if len(keep) < raw.shape[1]:
+        raw = raw[:, keep]
     if raw.shape[0] == 0:
         raise MocapError(f"{recording.source}: the file has no frames")
     gap_frames = max_gap_frames(max_gap_ms, recording.rate_hz)

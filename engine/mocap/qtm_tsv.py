@@ -107,7 +107,7 @@ def read_qtm_tsv(path: str | Path) -> Recording:
             raise MarkerFileError(f"the file ends after {len(table)} frames but NO_OF_FRAMES is {n_frames} "
                                   "(truncated?)", file=path, line=last)
         raise MarkerFileError(f"{len(table)} frames of data but NO_OF_FRAMES is {n_frames}", file=path, line=last)
-    positions = zero_triplets_to_nan(table[:, columns].reshape(n_frames, n_markers, 3).copy())
+    positions = zero_triplets_to_nan(table[:, columns].reshape(n_frames, n_markers, 3))  # indexing copied
     start_ms = 0.0
     if n_frames and time_column is not None and np.isfinite(table[0, time_column]):
         start_ms = 1000.0 * float(table[0, time_column])

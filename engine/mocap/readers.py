@@ -23,6 +23,11 @@ import numpy as np
 
 from .errors import MarkerFileError
 
+try:  # the compiled table reader (engine/_text_table.c); numpy's loadtxt otherwise
+    from .. import _text_table
+except ImportError:  # pragma: no cover - exercised where the extension is not built
+    _text_table = None
+
 FORMATS = ("tsv", "c3d", "trc", "csv")
 FORMAT_NAMES = {"tsv": "Qualisys QTM TSV", "c3d": "C3D", "trc": "TRC", "csv": "CSV"}
 UNIT_SCALE = {"mm": 1.0, "cm": 10.0, "m": 1000.0}
@@ -168,7 +173,17 @@ def parse_rows(lines: list[str], first_line: int, n_columns: int, path: Path, de
 
 
 def _parse_fast(lines, n_columns, delimiter, empty_is_missing):
-    """numpy's C parser for the common case of a well-formed table; None when anything is unusual."""
+    """A C parser for the common case of a well-formed table; None when anything is unusual.
+
+    The compiled ``engine._text_table`` when it is built (one pass, the same
+    doubles as ``float``), else numpy's ``loadtxt``.
+    """
+    if _text_table is not None and len(delimiter or " ") == 1:
+        text = "\n".join(lines).encode("utf-8")
+        out = np.empty((len(lines), n_columns))
+        rows = _text_table.parse_table(text, out, n_columns, ord(delimiter) if delimiter is not None else -1,
+                                       empty_is_missing)
+        return out[:rows] if rows >= 0 else None
     kept = [ln for ln in lines if ln.strip()]
     if not kept:
         return np.zeros((0, n_columns))
@@ -216,6 +231,8 @@ def _parse_slow(lines, first_line, n_columns, path, delimiter, empty_is_missing,
                 row.append(np.nan)
                 continue
             try:
+                if "_" in cell:          # float() reads "1_0" as 10; in a marker file it is a mistake
+                    raise ValueError(cell)
                 row.append(float(cell))
             except ValueError:
                 shown = _shorten(cell.strip()) or "an empty cell"
