@@ -231,7 +231,7 @@ def test_a_displacement_field_cannot_get_children(make_window, tmp_path, monkeyp
                         engine.InfluenceRegion(skin, np.full(len(skin), 0.5), np.ones((len(skin), 3))))
     path = engine.save_model(model, tmp_path / "field.xml")
     window = make_window(path)
-    assert _row(window, "pucker")[2] == "translation (field)"
+    assert _row(window, "pucker")[2] == "field"
     warnings = _answer(monkeypatch, "warning")
     before = model_state(window.document.model)
     _select(window, "pucker")

@@ -19,6 +19,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import Qt
+from PySide6.QtWidgets import QScrollArea
 
 from ..actions import ActionSpec, add_actions
 from .dock import ParameterTreeDock
@@ -52,7 +53,11 @@ def install(window: "MainWindow") -> None:
     editor.dock.view.delete_requested.connect(lambda: editor.remove_parameter())
     window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, editor.dock)
     editor.sheet = PropertySheet(editor)
-    window.tool_options.add_page(TOOL_ID, editor.sheet)
+    page = QScrollArea()                 # the sheet never squeezes the docks above it
+    page.setWidgetResizable(True)
+    page.setFrameShape(QScrollArea.Shape.NoFrame)
+    page.setWidget(editor.sheet)
+    window.tool_options.add_page(TOOL_ID, page)
     editor.dock.picked_by_user.connect(lambda name: window.tool_options.show_page(TOOL_ID))
     editor.gizmo = ParameterGizmo(window.viewport, window.document, window.view_state, editor)
     editor.actions = add_actions(window, ACTIONS)

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from PySide6.QtCore import QItemSelectionModel, Qt, Signal
+from PySide6.QtCore import QItemSelectionModel, QSize, Qt, Signal
 from PySide6.QtGui import QKeyEvent
 from PySide6.QtWidgets import QAbstractItemView, QDockWidget, QHeaderView, QTreeView, QVBoxLayout, QWidget
 
@@ -74,10 +74,10 @@ class ParameterTreeDock(QDockWidget):
         self.view.setDefaultDropAction(Qt.DropAction.MoveAction)
         self.view.setDropIndicatorShown(True)
         header = self.view.header()
-        header.setStretchLastSection(False)
-        header.setSectionResizeMode(0, QHeaderView.ResizeMode.Stretch)
+        header.setStretchLastSection(True)          # names are never cut short: the view scrolls instead
+        header.setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
         header.setSectionResizeMode(1, QHeaderView.ResizeMode.ResizeToContents)
-        header.setSectionResizeMode(2, QHeaderView.ResizeMode.ResizeToContents)
+        self.view.setIndentation(14)
         self.view.collapsed.connect(lambda index: self._collapsed.add(self.model.name_at(index)))
         self.view.expanded.connect(lambda index: self._collapsed.discard(self.model.name_at(index)))
 
@@ -92,6 +92,9 @@ class ParameterTreeDock(QDockWidget):
         document.parameters_changed.connect(self._on_tree_edited)
         document.model_replaced.connect(self._on_model_replaced)
         self._sync(document.model)
+
+    def sizeHint(self) -> QSize:  # noqa: N802 (Qt's name)
+        return QSize(340, 420)
 
     # -- queries -------------------------------------------------------------
     def selected_name(self) -> str | None:

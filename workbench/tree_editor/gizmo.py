@@ -24,10 +24,11 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
 
 import engine
 
-PIVOT_COLOR = "#ffd21f"
-ROTATION_COLOR = "#2ee6d6"
-TRANSLATION_COLOR = "#b86bff"
-GHOST_OPACITY = 0.4
+# Colours the heat map (blue → cyan → green → yellow → red) never uses.
+PIVOT_COLOR = "#ffffff"
+ROTATION_COLOR = "#ff2fd0"
+TRANSLATION_COLOR = "#a066ff"
+GHOST_OPACITY = 0.7
 ARROW_FRACTION = 0.32   # arrow length, as a fraction of the model's bounding radius
 SPHERE_FRACTION = 0.035
 
@@ -89,9 +90,11 @@ class ParameterGizmo(QObject):
 
     def arrow_direction(self) -> np.ndarray:
         """Unit vector from the arrow's tail to its tip."""
-        points = self.arrow_mesh.points
-        tip = points[np.argmax(points @ self._direction)]
-        tail = points[np.argmin(points @ self._direction)]
+        points = np.asarray(self.arrow_mesh.points, dtype=float)
+        along = points @ self._direction
+        span = along.max() - along.min()
+        tip = points[along >= along.max() - 1e-4 * span].mean(axis=0)      # the cone's apex
+        tail = points[along <= along.min() + 1e-4 * span].mean(axis=0)     # the middle of the shaft's end
         d = tip - tail
         return d / np.linalg.norm(d)
 

@@ -79,11 +79,11 @@ class PropertySheet(QWidget):
         self.description = QLineEdit()
         self.description.setPlaceholderText("what it does, for users")
 
-        pivot_row = QWidget()
-        pivot_layout = QHBoxLayout(pivot_row)
-        pivot_layout.setContentsMargins(0, 0, 0, 0)
-        pivot_layout.addWidget(self.pivot, 1)
-        pivot_layout.addWidget(self.pick_button)
+        pick_row = QWidget()
+        pick_layout = QHBoxLayout(pick_row)
+        pick_layout.setContentsMargins(0, 0, 0, 0)
+        pick_layout.addWidget(self.pick_button)
+        pick_layout.addStretch(1)
         range_row = QWidget()
         range_layout = QHBoxLayout(range_row)
         range_layout.setContentsMargins(0, 0, 0, 0)
@@ -98,7 +98,8 @@ class PropertySheet(QWidget):
         self.form.addRow("Type", self.kind)
         self.form.addRow("Axis", self.axis)
         self.form.addRow("Degrees / unit", self.degrees)
-        self.form.addRow("Pivot (mm)", pivot_row)
+        self.form.addRow("Pivot (mm)", self.pivot)
+        self.form.addRow("", pick_row)
         self.form.addRow("Direction (mm)", self.direction)
         self.form.addRow("Range", range_row)
         self.form.addRow("Description", self.description)
@@ -155,8 +156,9 @@ class PropertySheet(QWidget):
             field.show_value(value)
         if self.description.text() != p.description:
             self.description.setText(p.description)
+            self.description.setCursorPosition(0)      # show how it begins
         rotation = p.kind == "rotation"
-        for row in (self.axis, self.degrees, self.pivot.parentWidget()):
+        for row in (self.axis, self.degrees, self.pivot, self.pick_button.parentWidget()):
             self.form.setRowVisible(row, rotation)
         self.form.setRowVisible(self.direction, not rotation)
         self.pick_button.setEnabled(rotation)

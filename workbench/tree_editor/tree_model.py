@@ -29,9 +29,9 @@ GROUP_TIP = {1: "Group 1: has children, so it moves rigidly and carries them (§
 
 
 def type_text(parameter: engine.Parameter) -> str:
-    """``rotation``, ``translation`` or ``translation (field)`` for a blendshape."""
+    """``rotation``, ``translation`` or ``field`` for a translation by a displacement field (a blendshape)."""
     if parameter.field:
-        return "translation (field)"
+        return "field"
     return parameter.kind
 
 
