@@ -357,11 +357,11 @@ def register_recording(art: Articulation, markers, positions, iterations: int = 
         raise MocapError("no frame has every analysed marker: cannot register the recording")
     x = x[complete]
     flat = x.reshape(-1, 3)
-    _, rotation, translation = _umeyama(x.mean(axis=0), art.mean, scale=False)
+    _, rotation, translation = similarity_fit(x.mean(axis=0), art.mean, scale=False)
     for _ in range(iterations):
         moved = x @ rotation.T + translation
         target = art.reconstruct(art.values(moved))
-        _, new_rotation, new_translation = _umeyama(flat, target.reshape(-1, 3), scale=False)
+        _, new_rotation, new_translation = similarity_fit(flat, target.reshape(-1, 3), scale=False)
         step = np.abs(new_rotation - rotation).max() + np.abs(new_translation - translation).max()
         rotation, translation = new_rotation, new_translation
         if step < 1e-10:
@@ -467,7 +467,7 @@ def _align(mean, comps, target, rest_offset: bool, ridge: float = 1e-6):
     from scipy.spatial.transform import Rotation
 
     c = comps.shape[0]
-    scale, rotation, translation = _umeyama(mean, target)
+    scale, rotation, translation = similarity_fit(mean, target)
     values = np.zeros(c)
     if rest_offset:
         flat = comps.reshape(c, -1)
@@ -482,14 +482,23 @@ def _align(mean, comps, target, rest_offset: bool, ridge: float = 1e-6):
         start = np.concatenate([Rotation.from_matrix(rotation).as_rotvec(), [np.log(scale)], translation, values])
         solution = least_squares(residuals, start, method="lm", xtol=1e-12, ftol=1e-12, gtol=1e-12)
         values = solution.x[7:]
-        scale, rotation, translation = _umeyama(mean + np.tensordot(values, comps, axes=1), target)
+        scale, rotation, translation = similarity_fit(mean + np.tensordot(values, comps, axes=1), target)
     shape = mean + np.tensordot(values, comps, axes=1)
     rms = float(np.sqrt(np.mean(np.sum((scale * shape @ rotation.T + translation - target) ** 2, axis=1))))
     return scale, rotation, translation, values, rms
 
 
-def _umeyama(source, target, scale: bool = True):
-    """Scale s, rotation R, translation t minimising Σ |s R x + t − y|² (Umeyama 1991); s = 1 if not ``scale``."""
+def similarity_fit(source, target, scale: bool = True):
+    """Scale s, rotation R, translation t minimising Σ |s R x + t − y|² (Umeyama 1991); s = 1 if not ``scale``.
+
+    ``source`` and ``target`` are (K, 3) corresponding points (column-vector
+    convention: y ≈ s R x + t). Used to place markers on the model's landmarks.
+
+    >>> x = np.array([[0., 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])
+    >>> s, R, t = similarity_fit(x, 2 * x + [5, 0, 0])
+    >>> round(s, 9), np.allclose(R, np.eye(3)), t.round(9).tolist()
+    (2.0, True, [5.0, 0.0, 0.0])
+    """
     mx, my = source.mean(axis=0), target.mean(axis=0)
     x, y = source - mx, target - my
     u, d, vt = np.linalg.svd(y.T @ x / len(x))

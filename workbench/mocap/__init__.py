@@ -60,7 +60,8 @@ class MocapTool(QObject):
         self.plot_dock.marker_combo.currentTextChanged.connect(self._redraw)
         self.pca_dock.preview_changed.connect(self._on_preview)
         self.pca_dock.errors_changed.connect(self._on_errors)
-        window.document.model_replaced.connect(lambda _m: self._place_markers())
+        # a bound method, not a lambda: a lambda in the document's connection list would keep the window alive
+        window.document.model_replaced.connect(self._on_model_replaced)
 
     # -- sessions --------------------------------------------------------------------
     def import_dialog_for(self, path: str | Path | None = None) -> ImportDialog:
@@ -119,6 +120,9 @@ class MocapTool(QObject):
                                             f"{session.n_markers} markers", 4000)
 
     # -- the markers in the viewport -----------------------------------------------------------
+    def _on_model_replaced(self, _model) -> None:
+        self._place_markers()
+
     def _place_markers(self) -> None:
         session = self.state.session
         if session is None:

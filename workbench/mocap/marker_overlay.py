@@ -32,7 +32,7 @@ def marker_to_model_transform(model, markers, positions) -> tuple[float, np.ndar
     three pairs the markers are only moved so their centre sits on the
     face's landmarks' centre.
     """
-    from engine.mocap.apply import _umeyama
+    from engine.mocap.apply import similarity_fit
     from engine.mocap.synthetic import marker_vertices
 
     places = {}
@@ -46,7 +46,7 @@ def marker_to_model_transform(model, markers, positions) -> tuple[float, np.ndar
     if len(pairs) >= 3:
         source = np.array([median[markers.index(m)] for m in pairs])
         target = model.vertices[[places[m] for m in pairs]]
-        scale, rotation, translation = _umeyama(source, target)
+        scale, rotation, translation = similarity_fit(source, target)
         return scale, rotation, translation, pairs
     centre = (model.vertices[list(model.landmarks.values())].mean(axis=0) if model.landmarks
               else model.vertices.mean(axis=0))
