@@ -215,12 +215,14 @@ class PaintController(QObject):
         if not self._active:
             return
         self._pressed = True
+        self.viewport.set_fast_rendering(True)
         hit = self._hit(x, y)
         self._place_cursor(hit)
         if hit is None:
             return
         if sample or self.tool == "sample":
             self._pressed = False
+            self.viewport.set_fast_rendering(False)
             self.sample_at(hit[1])
         elif self.tool == "gradient":
             self._begin_stroke()
@@ -245,6 +247,7 @@ class PaintController(QObject):
     def release(self, *_pos) -> None:
         """Button up: the stroke becomes one undo step."""
         self._pressed = False
+        self.viewport.set_fast_rendering(False)
         stroke, self._stroke = self._stroke, None
         self._live, self._last, self._gradient = None, None, None
         self.cursor.hide_line()

@@ -20,6 +20,7 @@ RING_COLOR = "#ffffff"
 MIRROR_COLOR = "#ffd34d"
 GRADIENT_COLOR = "#ffd34d"
 RING_SEGMENTS = 72
+LINE_DEPTH_OFFSET = 20000.0   # depth units the lines are pulled towards the camera
 LIFT_MM = 0.3       # the ring floats this far above the surface, so the mesh does not hide it
 
 
@@ -74,6 +75,10 @@ class BrushCursor:
         actor = self._plotter.add_mesh(mesh, color=color, line_width=2.0, lighting=False, name=name,
                                        pickable=False, reset_camera=False, render=False)
         actor.SetPickable(False)
+        # Drawn in front of the surface it lies on, even where a concave patch (a fold) rises above the ring.
+        mapper = actor.GetMapper()
+        mapper.SetResolveCoincidentTopologyToPolygonOffset()
+        mapper.SetRelativeCoincidentTopologyLineOffsetParameters(0.0, -LINE_DEPTH_OFFSET)
         return actor
 
     @property
