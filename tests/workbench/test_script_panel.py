@@ -37,10 +37,16 @@ def head_window(make_window):
 
 
 def say_and_wait(qtbot, window, text: str):
+    """Type ``text`` and press Ctrl+Return in the editor, as a user would; wait for Say to end."""
     panel = window.script_panel
     panel.editor.setPlainText(text)
+    window.activateWindow()
+    qtbot.waitActive(window)
+    panel.editor.setFocus()
     with qtbot.waitSignal(panel.busy_changed, timeout=60000, check_params_cb=lambda busy: not busy):
-        qtbot.mouseClick(panel.say_button, Qt.MouseButton.LeftButton)
+        # Through the QWindow, as the window system delivers keys, so Qt's shortcut map sees them.
+        qtbot.keyClick(window.windowHandle(), Qt.Key.Key_Return, Qt.KeyboardModifier.ControlModifier)
+    assert panel.editor.toPlainText() == text            # the shortcut said it, it typed no newline
     return panel
 
 
@@ -147,3 +153,31 @@ def test_voices_are_listed_and_the_text_is_kept_across_sessions(make_window, syn
     assert again.editor.toPlainText() == "Tämä jää talteen <Blink/>"
     assert again.voice_box.currentText() == "hy_fi_mv_diphone"
     assert again.coarticulation_box.currentData() == "none"
+
+
+def test_cancel_forgets_the_running_say(head_window, qtbot):
+    from workbench.script_panel.jobs import running_jobs
+
+    panel = head_window.script_panel
+    panel.editor.setPlainText("Hyvää yötä")
+    qtbot.mouseClick(panel.say_button, Qt.MouseButton.LeftButton)
+    assert panel.busy and panel.cancel_button.isEnabled() and not panel.say_button.isEnabled()
+    assert not head_window.actions_by_id["speech.say"].isEnabled()
+    assert panel.busy_bar.isVisible()
+    qtbot.mouseClick(panel.cancel_button, Qt.MouseButton.LeftButton)
+    assert not panel.busy and panel.say_button.isEnabled() and not panel.busy_bar.isVisible()
+    qtbot.waitUntil(lambda: not running_jobs(), timeout=60000)          # Festival finished in the background
+    qtbot.wait(50)
+    assert panel.result is None and head_window.player.timeline is None
+    assert panel.editor.toPlainText() == "Hyvää yötä"
+
+
+def test_inline_commands_are_highlighted_and_stray_brackets_marked(make_window, synthetic_model_path):
+    from PySide6.QtGui import QTextCharFormat
+
+    panel = make_window(synthetic_model_path).script_panel
+    panel.editor.setPlainText("Hei <Blink/> a < b")
+    layout = panel.editor.document().firstBlock().layout()
+    looks = {(r.start, r.length): (r.format.fontWeight(), r.format.underlineStyle()) for r in layout.formats()}
+    assert looks[(5, 5)][0] > 400                                               # "Blink" in bold
+    assert looks[(15, 1)][1] == QTextCharFormat.UnderlineStyle.WaveUnderline   # the lone "<"

@@ -24,6 +24,7 @@ from PySide6.QtWidgets import (QComboBox, QFormLayout, QHBoxLayout, QLabel, QMes
 from engine.errors import UserError
 
 from ..icons import icon
+from .highlighter import InlineCommandHighlighter
 from .jobs import Job
 from .speech_run import COARTICULATIONS, SayRequest, SayResult, described_error, error_location, run_say
 
@@ -78,6 +79,7 @@ class ScriptPanel(QWidget):
         self.editor.setPlaceholderText("Text to speak, with inline commands: Hyvää <Happy/> huomenta!")
         self.editor.setFont(QFont("Monospace", 10))
         self.editor.setTabChangesFocus(True)
+        self.highlighter = InlineCommandHighlighter(self.editor.document())
         self.voice_box = QComboBox()
         self.voice_box.setObjectName("script_panel.voice")
         self.voice_box.setToolTip("The Festival voice (suo_fi_lj_diphone: Finnish, female; "
