@@ -38,7 +38,8 @@ def click(qtbot, gallery, name: str) -> None:
 def gallery(window, tmp_path):
     (tmp_path / "Gape.lib").write_text(GAPE)
     window.library_sources.set_folders([tmp_path])
-    window.expression_gallery_dock.show()
+    window.actions_by_id["library.gallery"].trigger()          # Library → Expression gallery
+    assert window.expression_gallery_dock.isVisible()
     return window.expression_gallery
 
 

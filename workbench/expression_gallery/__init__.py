@@ -127,7 +127,19 @@ class ExpressionGallery(QWidget):
     def _thumbnail_ready(self, name: str) -> None:
         item = self.items.get(name)
         if item is not None:
-            item.setIcon(QIcon(self.thumbnails.pixmaps[name]))
+            picture = QIcon()
+            for mode in (QIcon.Mode.Normal, QIcon.Mode.Selected, QIcon.Mode.Active):
+                picture.addPixmap(self.thumbnails.pixmaps[name], mode)   # no blue tint on the one playing
+            item.setIcon(picture)
+
+    # -- Qt overrides: render pictures only while the gallery is on screen ---------------
+    def showEvent(self, event) -> None:  # noqa: N802 (Qt's name)
+        super().showEvent(event)
+        self.thumbnails.set_active(True)
+
+    def hideEvent(self, event) -> None:  # noqa: N802 (Qt's name)
+        super().hideEvent(event)
+        self.thumbnails.set_active(False)
 
     # -- playing --------------------------------------------------------------------
     def preview(self, name: str, intensity: float | None = None):
@@ -174,8 +186,11 @@ def install(window) -> None:
     dock.setObjectName(DOCK_NAME)
     dock.setWidget(gallery)
     window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, dock)
+    neighbours = [d for d in window.findChildren(QDockWidget) if d is not dock
+                  and window.dockWidgetArea(d) == Qt.DockWidgetArea.LeftDockWidgetArea]
+    if neighbours:
+        window.tabifyDockWidget(neighbours[0], dock)     # a tab of its own height, not a squeezed strip
     dock.hide()
-    dock.visibilityChanged.connect(gallery.thumbnails.set_active)
     window.expression_gallery = gallery
     window.expression_gallery_dock = dock
     toggle = dock.toggleViewAction()

@@ -89,7 +89,7 @@ def full_value(parameter) -> float:
 
 
 def gallery_entries(library: Library, model) -> list[GalleryEntry]:
-    """The expressions that fit ``model`` (:data:`ORDER`, then by name), then its action units (tree order)."""
+    """The expressions that fit ``model`` (:data:`ORDER`, then by name), then its action units (by number)."""
     entries = []
     for name in sorted(library.names(), key=lambda n: (ORDER.index(n) if n in ORDER else len(ORDER), n)):
         definition = library[name]
@@ -103,7 +103,7 @@ def gallery_entries(library: Library, model) -> list[GalleryEntry]:
         timing = tuple(float(args.get(k) or 0.0) for k in ("onset", "apex", "offset"))
         entries.append(GalleryEntry("expression", name, definition.description or name, timing, library))
     names = model.parameters.names
-    units = [n for n in names if AU_NAME.match(n)] or names
+    units = sorted((n for n in names if AU_NAME.match(n)), key=lambda n: (int(AU_NAME.match(n)[0][2:]), n)) or names
     timing = (AU_TIMING["onset"], AU_TIMING["apex"], AU_TIMING["offset"])
     for name in units:
         description = model.parameters[name].description or name

@@ -103,7 +103,7 @@ class LibraryEditor(QWidget):
         for widget, stretch in ((self.command_list, 0), (middle, 2), (right, 2)):
             self.splitter.addWidget(widget)
             self.splitter.setStretchFactor(self.splitter.count() - 1, stretch)
-        self.splitter.setSizes([190, 460, 420])
+        self.splitter.setSizes([170, 430, 430])
         layout = QVBoxLayout(self)
         layout.setContentsMargins(2, 2, 2, 2)
         layout.addWidget(self.toolbar)
