@@ -54,6 +54,8 @@ class ThumbnailCache(QObject):
     def set_active(self, active: bool) -> None:
         """Render only while active (the gallery is visible)."""
         self.active = bool(active)
+        if not self.active:
+            self.close()                # no OpenGL context held while nobody looks (or the window closes)
         self._schedule()
 
     @property
