@@ -140,6 +140,18 @@ def test_festival_missing_names_the_debian_package(head_window, qtbot, monkeypat
     assert panel.editor.toPlainText() == "Hei"
 
 
+def test_a_voice_that_is_not_installed_names_its_debian_package(head_window, qtbot, monkeypatch):
+    shown = expect_warning(monkeypatch)
+    panel = head_window.script_panel
+    panel.voice_box.addItem("kal_diphone")              # e.g. remembered from another machine
+    panel.voice_box.setCurrentText("kal_diphone")
+    panel.editor.setPlainText("Hei")
+    with qtbot.waitSignal(panel.say_failed, timeout=60000):
+        panel.say()
+    assert "kal_diphone is not installed" in shown[0][1] and "festvox-kallpc16k" in shown[0][1]
+    assert panel.editor.toPlainText() == "Hei" and panel.result is None
+
+
 def test_voices_are_listed_and_the_text_is_kept_across_sessions(make_window, synthetic_model_path, qtbot):
     window = make_window(synthetic_model_path)
     panel = window.script_panel
@@ -181,3 +193,15 @@ def test_inline_commands_are_highlighted_and_stray_brackets_marked(make_window, 
     looks = {(r.start, r.length): (r.format.fontWeight(), r.format.underlineStyle()) for r in layout.formats()}
     assert looks[(5, 5)][0] > 400                                               # "Blink" in bold
     assert looks[(15, 1)][1] == QTextCharFormat.UnderlineStyle.WaveUnderline   # the lone "<"
+
+
+def test_closing_the_window_while_saying_is_safe(head_window, qtbot):
+    from workbench.script_panel.jobs import running_jobs
+
+    head_window.script_panel.editor.setPlainText("Näkemiin")
+    head_window.script_panel.say()
+    assert running_jobs()
+    head_window.close()
+    qtbot.waitUntil(lambda: not running_jobs(), timeout=60000)    # the thread ends; no slot of the closed panel fails
+    qtbot.wait(50)
+    assert not head_window.player.is_playing                       # a closed window does not start talking

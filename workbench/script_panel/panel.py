@@ -215,7 +215,8 @@ class ScriptPanel(QWidget):
             self._report_error(job.error)
             return
         self.adopt(job.result)
-        self._play(job.result)
+        if self.window.isVisible():             # a window closed meanwhile stays silent
+            self._play(job.result)
 
     def adopt(self, result: SayResult) -> None:
         """Make ``result`` the last utterance (what Export writes) without playing it."""
