@@ -160,11 +160,17 @@ def test_voices_are_listed_and_the_text_is_kept_across_sessions(make_window, syn
     panel.editor.setPlainText("Tämä jää talteen <Blink/>")
     panel.voice_box.setCurrentText("hy_fi_mv_diphone")
     panel.coarticulation_box.setCurrentIndex(1)
+    panel.prosody_box.setChecked(True)
+    panel.seed_box.setValue(7)
+    assert (panel.request().prosody_seed, panel.request().coarticulation) == (7, "none")
     window.close()
     again = make_window(synthetic_model_path).script_panel
     assert again.editor.toPlainText() == "Tämä jää talteen <Blink/>"
     assert again.voice_box.currentText() == "hy_fi_mv_diphone"
     assert again.coarticulation_box.currentData() == "none"
+    assert again.prosody_box.isChecked() and again.seed_box.value() == 7
+    again.prosody_box.setChecked(False)
+    assert again.request().prosody_seed is None
 
 
 def test_cancel_forgets_the_running_say(head_window, qtbot):

@@ -30,7 +30,8 @@ pytestmark = [
 def spoken(tmp_path_factory):
     from workbench.script_panel.speech_run import SayRequest, run_say
 
-    return run_say(SayRequest(SENTENCE, engine.load_model()), tmp_path_factory.mktemp("said"))
+    # With visual prosody (seeded): its brows and nods go into the files too.
+    return run_say(SayRequest(SENTENCE, engine.load_model(), prosody_seed=3), tmp_path_factory.mktemp("said"))
 
 
 @pytest.fixture(autouse=True)
@@ -97,7 +98,9 @@ def test_export_writes_a_playable_video_with_audio_and_the_tables(said_window, s
 
     with open(tmp_path / "hello-tracks.csv", newline="") as f:
         rows = list(csv.reader(f))
-    assert rows[0][0] == "time_ms" and "jaw_open" in rows[0] and "eyelid_left_close" in rows[0]
+    assert rows[0][0] == "time_ms" and {"jaw_open", "eyelid_left_close", "brow_raise"} <= set(rows[0])
+    brows = [float(row[rows[0].index("brow_raise")]) for row in rows[1:]]
+    assert max(brows) > 0.1
     assert len(rows) - 1 == frames
     jaw = rows[0].index("jaw_open")
     assert float(rows[1 + open_frame][jaw]) == pytest.approx(

@@ -18,8 +18,8 @@ from pathlib import Path
 
 from PySide6.QtCore import QSettings, Qt, Signal
 from PySide6.QtGui import QFont, QTextCursor
-from PySide6.QtWidgets import (QComboBox, QFormLayout, QHBoxLayout, QLabel, QMessageBox, QPlainTextEdit,
-                               QProgressBar, QPushButton, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (QCheckBox, QComboBox, QFormLayout, QHBoxLayout, QLabel, QMessageBox,
+                               QPlainTextEdit, QProgressBar, QPushButton, QSpinBox, QVBoxLayout, QWidget)
 
 from engine.errors import UserError
 
@@ -31,6 +31,8 @@ from .speech_run import COARTICULATIONS, SayRequest, SayResult, described_error,
 KEY_TEXT = "script_panel/text"
 KEY_VOICE = "script_panel/voice"
 KEY_COARTICULATION = "script_panel/coarticulation"
+KEY_PROSODY = "script_panel/prosody"
+KEY_SEED = "script_panel/prosody_seed"
 DEFAULT_TEXT = "Hyvää <Happy/> huomenta! Mitä kuuluu?"
 DEFAULT_VOICE = "suo_fi_lj_diphone"
 MESSAGE_MS = 6000
@@ -90,6 +92,14 @@ class ScriptPanel(QWidget):
             self.coarticulation_box.addItem(label, value)
         self.coarticulation_box.setToolTip("Cohen–Massaro dominance functions, or the paper's plain "
                                            "interpolation between each phone's targets")
+        self.prosody_box = QCheckBox("&Visual prosody, seed")
+        self.prosody_box.setObjectName("script_panel.prosody")
+        self.prosody_box.setToolTip("Add blinks, brows raised on accented words and nods at phrase ends "
+                                    "(the library's Blink, BrowRaise, HeadNod); the same seed gives the same face")
+        self.seed_box = QSpinBox()
+        self.seed_box.setObjectName("script_panel.seed")
+        self.seed_box.setRange(0, 999999)
+        self.prosody_box.toggled.connect(self.seed_box.setEnabled)
         self.say_button = QPushButton(icon("say"), "Say")
         self.say_button.setObjectName("script_panel.say")
         self.say_button.setToolTip("Speak the text (Ctrl+Return)")
@@ -113,6 +123,11 @@ class ScriptPanel(QWidget):
         form = QFormLayout()
         form.addRow("&Voice:", self.voice_box)
         form.addRow("&Coarticulation:", self.coarticulation_box)
+        prosody = QHBoxLayout()
+        prosody.addWidget(self.prosody_box)
+        prosody.addWidget(self.seed_box)
+        prosody.addStretch(1)
+        form.addRow("", prosody)
         buttons = QHBoxLayout()
         buttons.addWidget(self.say_button)
         buttons.addWidget(self.cancel_button)
@@ -133,11 +148,16 @@ class ScriptPanel(QWidget):
         self.voice_box.addItem(str(store.value(KEY_VOICE, DEFAULT_VOICE)))
         index = self.coarticulation_box.findData(str(store.value(KEY_COARTICULATION, "cohen-massaro")))
         self.coarticulation_box.setCurrentIndex(max(0, index))
+        self.prosody_box.setChecked(str(store.value(KEY_PROSODY, "false")).lower() == "true")
+        self.seed_box.setValue(int(store.value(KEY_SEED, 0)))
+        self.seed_box.setEnabled(self.prosody_box.isChecked())
         # Every keystroke is remembered: nothing typed is lost, even in a crash.
         self.editor.textChanged.connect(lambda: QSettings().setValue(KEY_TEXT, self.editor.toPlainText()))
         self.voice_box.currentTextChanged.connect(self._remember_voice)
         self.coarticulation_box.currentIndexChanged.connect(
             lambda _i: QSettings().setValue(KEY_COARTICULATION, self.coarticulation_box.currentData()))
+        self.prosody_box.toggled.connect(lambda on: QSettings().setValue(KEY_PROSODY, "true" if on else "false"))
+        self.seed_box.valueChanged.connect(lambda seed: QSettings().setValue(KEY_SEED, seed))
 
     def _remember_voice(self, voice: str) -> None:
         if voice:
@@ -182,6 +202,7 @@ class ScriptPanel(QWidget):
         return SayRequest(self.editor.toPlainText(), self.window.document.model,
                           voice=self.voice_box.currentText() or None,
                           coarticulation=self.coarticulation_box.currentData(),
+                          prosody_seed=self.seed_box.value() if self.prosody_box.isChecked() else None,
                           synthesizer=self.synthesizer)
 
     def say(self) -> None:

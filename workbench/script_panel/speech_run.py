@@ -32,6 +32,7 @@ class SayRequest:
     model: object
     voice: str | None = None
     coarticulation: str = "cohen-massaro"
+    prosody_seed: int | None = None        # None: no visual prosody; a seed: blinks, brows, nods
     synthesizer: object | None = None      # None: a FestivalSynthesizer
 
 
@@ -53,7 +54,7 @@ def run_say(request: SayRequest, folder: Path) -> SayResult:
     from engine.speech.synthesis import write_wav
 
     speech = speak(request.text, request.model, synthesizer=request.synthesizer, voice=request.voice,
-                   coarticulation=request.coarticulation, name=TEXT_NAME)
+                   coarticulation=request.coarticulation, prosody_seed=request.prosody_seed, name=TEXT_NAME)
     wav = Path(folder) / f"say-{next(_counter)}.wav"
     write_wav(wav, speech.utterance)
     return SayResult(request, speech, wav)
