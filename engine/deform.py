@@ -168,6 +168,15 @@ class Deformer:
         starts = np.flatnonzero(np.r_[True, (key[1:] != key[:-1]).any(axis=1)]) if n else np.zeros(0, int)
         stops = np.r_[starts[1:], n].astype(int)
         regions = {k: model.regions[self.names[k]] for k in self._leaf_params}
+        leaf_keys = list(regions)                                     # parameter order
+        # vertex × leaf membership (CSR, columns ascending = parameter order)
+        member_rows = [regions[k].indices for k in leaf_keys]
+        membership = sparse.csr_matrix(
+            (np.ones(sum(len(r) for r in member_rows), dtype=np.int8),
+             (np.concatenate(member_rows) if member_rows else np.zeros(0, int),
+              np.repeat(np.arange(len(leaf_keys)), [len(r) for r in member_rows]))),
+            shape=(n, len(leaf_keys)))
+        membership.sort_indices()
         Wp = W[perm] if n else W
         segments, entries, data, size = [], [], [], 0
 
@@ -190,10 +199,11 @@ class Deformer:
                     column[block.indices[span]] = block.data[span]
                     add(group1[col], [column])
             leaf_first = len(entries)
-            for k, region in regions.items():                         # parameter order
-                pos = np.minimum(np.searchsorted(region.indices, verts[0]), len(region.indices) - 1)
-                if region.indices[pos] != verts[0]:
-                    continue                                          # the whole run shares verts[0]'s leaves
+            # the whole run shares verts[0]'s leaves: look them up once, in parameter order
+            v = verts[0]
+            for j in membership.indices[membership.indptr[v]:membership.indptr[v + 1]]:
+                k = leaf_keys[j]
+                region = regions[k]
                 pos = np.searchsorted(region.indices, verts)
                 w = region.weights[pos]
                 if region.displacements is not None:

@@ -89,6 +89,9 @@ class MainWindow(QMainWindow):
         self._bind_undo_actions()
 
         self.setStatusBar(ModelStatusBar(document, self))
+        # The side columns run the full height; bottom docks (the timeline) sit under the viewport only.
+        self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
+        self.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
         features.install_all(self)      # the tools: their docks exist before the layout is restored
         self._update_title()
         self.setWindowModified(document.is_modified)

@@ -8,7 +8,7 @@ With no tool active the dock says so.
 from __future__ import annotations
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QDockWidget, QLabel, QStackedWidget, QWidget
+from PySide6.QtWidgets import QDockWidget, QFrame, QLabel, QScrollArea, QStackedWidget, QWidget
 
 NO_TOOL = "none"
 
@@ -24,6 +24,7 @@ class ToolOptionsDock(QDockWidget):
                          | QDockWidget.DockWidgetFeature.DockWidgetClosable)
         self.stack = QStackedWidget()
         self._pages: dict[str, QWidget] = {}
+        self._holders: dict[str, QScrollArea] = {}   # each page scrolls, so a tall page never sets the window's height
         placeholder = QLabel("No tool is active.\nTools for painting weights and editing the\n"
                              "parameter tree show their options here.")
         placeholder.setAlignment(Qt.AlignmentFlag.AlignCenter)
@@ -35,20 +36,25 @@ class ToolOptionsDock(QDockWidget):
     @property
     def current_tool(self) -> str:
         widget = self.stack.currentWidget()
-        return next(tool for tool, page in self._pages.items() if page is widget)
+        return next(tool for tool, holder in self._holders.items() if holder is widget)
 
     def add_page(self, tool: str, page: QWidget) -> None:
         """Register ``page`` as the options of ``tool`` (replacing an earlier page of that tool)."""
-        old = self._pages.pop(tool, None)
+        old = self._holders.pop(tool, None)
         if old is not None:
             self.stack.removeWidget(old)
             old.deleteLater()
+        holder = QScrollArea()
+        holder.setWidgetResizable(True)
+        holder.setFrameShape(QFrame.Shape.NoFrame)
+        holder.setWidget(page)
         self._pages[tool] = page
-        self.stack.addWidget(page)
+        self._holders[tool] = holder
+        self.stack.addWidget(holder)
 
     def page(self, tool: str) -> QWidget:
         return self._pages[tool]
 
     def show_page(self, tool: str = NO_TOOL) -> None:
         """Show ``tool``'s options (its page must have been added); the placeholder by default."""
-        self.stack.setCurrentWidget(self._pages[tool])
+        self.stack.setCurrentWidget(self._holders[tool])

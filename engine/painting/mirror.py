@@ -44,7 +44,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy import sparse
-from scipy.spatial import cKDTree
 
 
 @dataclass
@@ -290,6 +289,8 @@ class _Matcher:
         k = min(k, len(U))
         if k == 0:
             return np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
+        from scipy.spatial import cKDTree  # imported when needed: it costs 0.3 s at launch
+
         _, loc = cKDTree(self.ctx.vertices[U]).query(self.M[U], k=k, distance_upper_bound=radius)
         loc = loc.reshape(len(U), k)
         valid = loc < len(U)

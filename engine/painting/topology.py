@@ -20,8 +20,6 @@ import re
 
 import numpy as np
 from scipy import sparse
-from scipy.sparse import csgraph
-from scipy.spatial import cKDTree
 
 from ..cells import cell_sizes, cell_starts
 from ..errors import UserError
@@ -138,7 +136,10 @@ class PaintContext:
             (np.concatenate([vals, np.ones(len(lonely))]),
              (np.concatenate([rows, lonely]), np.concatenate([self.indices, lonely]))), shape=(n, n))
         self.normals = vertex_normals(self.vertices, self.triangles)
+        from scipy.spatial import cKDTree  # imported when needed: it costs 0.3 s at launch
+
         self.tree = cKDTree(self.vertices)
+        from scipy.sparse import csgraph  # imported when needed: 0.2 s at launch
         self.n_components, self.components = csgraph.connected_components(self.adjacency, directed=False)
         self.mirror_tolerance = float(mirror_tolerance)
         self._mirror = None
@@ -195,6 +196,7 @@ class PaintContext:
         if pos >= len(inside) or inside[pos] != seed:
             return np.zeros(0, dtype=np.int64)
         sub = self.adjacency[inside][:, inside]
+        from scipy.sparse import csgraph  # imported when needed: 0.2 s at launch
         order = csgraph.breadth_first_order(sub, pos, directed=False, return_predecessors=False)
         return inside[np.sort(order)]
 

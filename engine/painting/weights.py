@@ -22,7 +22,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.sparse import csgraph
 
 from ..errors import UserError
 from ..model import InfluenceRegion
@@ -214,6 +213,7 @@ def grow_weights(ctx, weights, rings: int = 1, *, distance: float | None = None,
         inside = np.flatnonzero(w > 0)
         if len(inside) == 0 or distance <= 0:
             return w
+        from scipy.sparse import csgraph  # imported when needed: 0.2 s at launch
         dist, _, source = csgraph.dijkstra(ctx.adjacency, directed=False, indices=inside, limit=float(distance),
                                            min_only=True, return_predecessors=True)
         new = np.flatnonzero((w == 0) & allowed & np.isfinite(dist) & (source >= 0))
@@ -240,6 +240,7 @@ def shrink_weights(ctx, weights, rings: int = 1, *, distance: float | None = Non
         src = np.flatnonzero(outside)
         if len(src) == 0 or distance <= 0:
             return w
+        from scipy.sparse import csgraph  # imported when needed: 0.2 s at launch
         dist = csgraph.dijkstra(ctx.adjacency, directed=False, indices=src, limit=float(distance), min_only=True)
         w[(w > 0) & allowed & (dist <= distance)] = 0.0
         return w

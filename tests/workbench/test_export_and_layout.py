@@ -91,11 +91,11 @@ def test_tool_options_dock_waits_for_a_tool(window):
     assert dock.windowTitle() == "Tool options" and dock.isVisible()
     assert window.dockWidgetArea(dock) == Qt.DockWidgetArea.RightDockWidgetArea
     assert dock.current_tool == NO_TOOL
-    assert "No tool" in dock.stack.currentWidget().text()
+    assert "No tool" in dock.page(NO_TOOL).text() and dock.page(NO_TOOL).isVisible()
     page = QLabel("brush radius …")
-    dock.add_page("paint", page)
-    dock.show_page("paint")
-    assert dock.current_tool == "paint" and dock.stack.currentWidget() is page
+    dock.add_page("test-tool", page)
+    dock.show_page("test-tool")
+    assert dock.current_tool == "test-tool" and dock.page("test-tool") is page and page.isVisible()
     dock.show_page()
     assert dock.current_tool == NO_TOOL
     toggle = dock.toggleViewAction()

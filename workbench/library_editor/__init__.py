@@ -83,7 +83,7 @@ def install(window) -> None:
                    tip="Start a library file from a template"),
         ActionSpec("library.open", "&Open library file…", MENU,
                    triggered=lambda w: (_show(w), w.library_editor.open_dialog()),
-                   tip="Open a command library file (.lib) in the library editor"),
+                   icon="library-open", tip="Open a command library file (.lib) in the library editor"),
         ActionSpec("library.folders", "Library &folders…", MENU,
                    triggered=lambda w: w.library_editor.folders_dialog(), icon="library-folders",
                    tip="Choose the folders your own library files are read from"),

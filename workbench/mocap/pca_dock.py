@@ -22,6 +22,7 @@ from __future__ import annotations
 import numpy as np
 from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QFontDatabase
+from PySide6.QtWidgets import QFrame, QScrollArea
 from PySide6.QtWidgets import (QComboBox, QDockWidget, QFileDialog, QHBoxLayout, QHeaderView, QLabel, QLineEdit,
                                QPlainTextEdit, QPushButton, QSlider, QSpinBox, QTableWidget, QTableWidgetItem,
                                QTabWidget, QVBoxLayout, QWidget)
@@ -62,7 +63,11 @@ class PcaDock(QDockWidget):
         self.tabs.addTab(self._stages_page(), "1 Stages")
         self.tabs.addTab(self._results_page(), "2 Results")
         self.tabs.addTab(self._apply_page(), "3 Apply")
-        self.setWidget(self.tabs)
+        scroller = QScrollArea()       # the dock may be narrower than its content: scroll, not widen the window
+        scroller.setWidgetResizable(True)
+        scroller.setFrameShape(QFrame.Shape.NoFrame)
+        scroller.setWidget(self.tabs)
+        self.setWidget(scroller)
         self._phase = 0.0
         self.timer = QTimer(self)
         self.timer.setInterval(40)

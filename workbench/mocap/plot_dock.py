@@ -12,6 +12,7 @@ text (:mod:`engine.mocap.labels`), and drawn along the time axis.
 
 from __future__ import annotations
 
+from PySide6.QtWidgets import QFrame, QScrollArea
 from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QDockWidget, QFileDialog,
                                QFormLayout, QHBoxLayout, QLabel, QLineEdit, QPushButton, QVBoxLayout, QWidget)
 
@@ -76,7 +77,11 @@ class MarkerPlotDock(QDockWidget):
         layout.setContentsMargins(4, 2, 4, 2)
         layout.addLayout(row)
         layout.addWidget(self.plot, 1)
-        self.setWidget(body)
+        scroller = QScrollArea()       # the dock may be narrower than its content: scroll, not widen the window
+        scroller.setWidgetResizable(True)
+        scroller.setFrameShape(QFrame.Shape.NoFrame)
+        scroller.setWidget(body)
+        self.setWidget(scroller)
 
         self.marker_combo.currentTextChanged.connect(self._update_curve)
         self.axis_combo.currentTextChanged.connect(self._update_curve)

@@ -37,14 +37,15 @@ def _specs() -> tuple[ActionSpec, ...]:
                    shortcut=PAINT_SHORTCUT, icon="paint-weights", toolbar=True, separator_before=True,
                    tip="Paint the selected parameter's weights with the mouse (Alt+drag orbits)"),
         ActionSpec("paint.smaller", "S&maller brush", MENU, triggered=lambda w: _scale_radius(w, 1 / RADIUS_STEP),
-                   shortcut="[", tip="Make the brush radius smaller"),
+                   shortcut="[", icon="brush-smaller", tip="Make the brush radius smaller"),
         ActionSpec("paint.larger", "L&arger brush", MENU, triggered=lambda w: _scale_radius(w, RADIUS_STEP),
-                   shortcut="]", tip="Make the brush radius larger"),
+                   shortcut="]", icon="brush-larger", tip="Make the brush radius larger"),
     ]
     for k, (operation, (text, tip)) in enumerate(operations.OPERATIONS.items()):
         specs.append(ActionSpec(f"weights.{operation}", text, MENU,
                                 triggered=lambda w, op=operation: operations.run(w.paint, op),
-                                separator_before=k in (0, 1, 3, 5), tip=tip))
+                                separator_before=k in (0, 1, 3, 5), tip=tip,
+                                icon="weights-" + operation.replace("_", "-")))
     return tuple(specs)
 
 

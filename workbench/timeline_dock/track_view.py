@@ -172,7 +172,8 @@ class TrackView(QWidget):
             painter.drawLine(QPointF(x, 0), QPointF(x, self.height()))
         else:
             painter.setPen(palette.placeholderText().color())
-            painter.drawText(self.rect().adjusted(LABEL_WIDTH, RULER_HEIGHT, 0, 0), Qt.AlignmentFlag.AlignCenter,
+            painter.drawText(self.rect().adjusted(8, RULER_HEIGHT, -8, 0),
+                             Qt.AlignmentFlag.AlignCenter | Qt.TextFlag.TextWordWrap,
                              "Nothing loaded — Animation ▸ Open animation… (Ctrl+Shift+O)")
         painter.end()
 
