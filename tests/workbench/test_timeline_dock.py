@@ -23,23 +23,6 @@ TWO_TRACKS = """<commands>
 </commands>
 """
 
-@pytest.fixture(autouse=True)
-def _installable_tools_only(monkeypatch):
-    """Other tools are being written in the same tree: install only those whose installer exists yet."""
-    from importlib import import_module
-
-    from workbench import features
-
-    def ready(entry: str) -> bool:
-        module, _, function = entry.partition(":")
-        try:
-            return hasattr(import_module(f"workbench.{module}"), function or "install")
-        except Exception:
-            return False
-
-    monkeypatch.setattr(features, "INSTALLERS", [e for e in features.INSTALLERS if ready(e)])
-
-
 def engine_timeline(text: str, model) -> Timeline:
     return Timeline(translate(parse_commands_text(text), load_library(), model), model)
 

@@ -31,23 +31,6 @@ PHONES = [("#", 0, 400), ("m", 400, 480), ("a", 480, 640), ("t", 640, 700), ("o"
           ("#", 900, 2000)]
 
 
-@pytest.fixture(autouse=True)
-def _installable_tools_only(monkeypatch):
-    """Other tools are being written in the same tree: install only those whose installer exists yet."""
-    from importlib import import_module
-
-    from workbench import features
-
-    def ready(entry: str) -> bool:
-        module, _, function = entry.partition(":")
-        try:
-            return hasattr(import_module(f"workbench.{module}"), function or "install")
-        except Exception:
-            return False
-
-    monkeypatch.setattr(features, "INSTALLERS", [e for e in features.INSTALLERS if ready(e)])
-
-
 @pytest.mark.skipif(not engine.default_model_path().exists(), reason="default head not built")
 def test_screenshot_of_the_timeline_dock(make_window, qtbot, tmp_path):
     shot = Path(os.environ.get("AP_SCREENSHOT_DIR") or tmp_path) / SCREENSHOT_NAME
