@@ -97,7 +97,7 @@ class MainWindow(QMainWindow):
         self.setWindowModified(document.is_modified)
         self.resize(1280, 800)
         self.resizeDocks([self.parameter_dock], [430], Qt.Orientation.Horizontal)
-        self.resizeDocks([self.parameter_dock, self.tool_options], [560, 160], Qt.Orientation.Vertical)
+        self.resizeDocks([self.parameter_dock, self.tool_options], [420, 320], Qt.Orientation.Vertical)
         self.restore_layout()
 
         seconds = autosave_seconds if autosave_seconds is not None else settings.autosave_interval_seconds()

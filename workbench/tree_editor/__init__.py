@@ -19,7 +19,6 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QScrollArea
 
 from ..actions import ActionSpec, add_actions
 from .dock import ParameterTreeDock
@@ -53,11 +52,7 @@ def install(window: "MainWindow") -> None:
     editor.dock.view.delete_requested.connect(lambda: editor.remove_parameter())
     window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, editor.dock)
     editor.sheet = PropertySheet(editor)
-    page = QScrollArea()                 # the sheet never squeezes the docks above it
-    page.setWidgetResizable(True)
-    page.setFrameShape(QScrollArea.Shape.NoFrame)
-    page.setWidget(editor.sheet)
-    window.tool_options.add_page(TOOL_ID, page)
+    window.tool_options.add_page(TOOL_ID, editor.sheet)     # the dock scrolls every page
     editor.dock.picked_by_user.connect(lambda name: window.tool_options.show_page(TOOL_ID))
     editor.gizmo = ParameterGizmo(window.viewport, window.document, window.view_state, editor)
     editor.actions = add_actions(window, ACTIONS)
