@@ -198,3 +198,14 @@ def test_plan_refuses_malformed_structure():
         good.deform(np.zeros(1), np.empty((3, 3)))
     with pytest.raises((TypeError, ValueError, BufferError)):
         good.deform(np.zeros(1), np.empty((4, 3))[:, :2])
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(0, 300), st.integers(1, 140), st.floats(0.0, 1.0), st.integers(0, 2 ** 32 - 1))
+def test_pattern_ranks_number_rows_as_numpy_unique_does(n_rows, n_columns, density, seed):
+    """The deformer groups vertices by the leaves acting on them with ``pattern_ranks``: the same
+    numbering as ``np.unique(..., axis=0)`` over the packed rows, across 64-bit word boundaries."""
+    rows = np.random.default_rng(seed).random((n_rows, n_columns)) < density
+    expected = (np.unique(np.packbits(rows, axis=1), axis=0, return_inverse=True)[1].ravel()
+                if n_rows else np.zeros(0, dtype=np.int64))
+    assert np.array_equal(engine.deform.pattern_ranks(rows), expected)
