@@ -55,15 +55,17 @@ longer than true surface distances on a coarse mesh. Lengths are mm.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
-from scipy import sparse
-from scipy.sparse.csgraph import dijkstra
 
 from ..errors import ParameterError, UserError
 from ..parameters import NAME_PATTERN, Parameter
 from .errors import MocapError
 from .pca import Articulation, describe_component
+
+if TYPE_CHECKING:
+    from scipy import sparse
 
 DEFAULT_PREFIX = "pca"
 _ARTICULATORY = {"lowering": "lips_lower", "raising": "lips_raise", "protrusion": "lip_protrude",
@@ -373,6 +375,8 @@ def register_recording(art: Articulation, markers, positions, iterations: int = 
 
 def surface_graph(model, part: str = "skin") -> sparse.csr_matrix:
     """The edges of ``part``'s polygons as a sparse (N × N) graph weighted by length, mm."""
+    from scipy import sparse      # here, not at import: scipy.sparse costs the workbench 0.15 s at start
+
     tris = model.triangles()
     on = model.vertex_part == model.parts.index(part)
     edges = np.concatenate([tris[:, [0, 1]], tris[:, [1, 2]], tris[:, [2, 0]]])
@@ -391,6 +395,8 @@ def articulation_region(graph, vertices, inner_mm: float, outer_mm: float, neigh
     fall with the surface distance ``d`` from those paths: 1 for ``d ≤
     inner_mm``, smoothstep down to 0 at ``outer_mm``.
     """
+    from scipy.sparse.csgraph import dijkstra      # here, not at import: it pulls in scipy.linalg (0.1–0.2 s)
+
     vertices = np.asarray(vertices, dtype=np.int64)
     dist, pred = dijkstra(graph, directed=False, indices=vertices, return_predecessors=True)
     between = dist[:, vertices]
@@ -422,6 +428,8 @@ def surface_coordinates(graph, region, dims: int = 3) -> np.ndarray:
     through the mouth but some 60 mm apart along the skin, come out far
     apart. Paths stay inside the region where it is connected.
     """
+    from scipy.sparse.csgraph import dijkstra
+
     region = np.asarray(region, dtype=np.int64)
     inside = graph[region][:, region]
     dist = dijkstra(inside, directed=False)

@@ -43,7 +43,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import sparse
 
 
 @dataclass
@@ -218,6 +217,8 @@ def _predicted_mirrors(ctx, M, anchors, ring, radius, partners=None, iterations=
     predicts its partners: offsets to the nearest vertex (or to the partner found by an earlier pass)
     are averaged over the polygon ring, exact matches pinned at zero offset, and the lookup repeated
     with the corrected positions."""
+    from scipy import sparse        # here, not at import: the workbench loads this module at start
+
     V = ctx.vertices
     deg = np.diff(ring.indptr)
     mean = (sparse.diags(1.0 / np.maximum(deg, 1)) @ ring + sparse.diags((deg == 0).astype(float))).tocsr()
@@ -239,6 +240,8 @@ def _predicted_mirrors(ctx, M, anchors, ring, radius, partners=None, iterations=
 
 def _ring_graph(faces, n):
     """Symmetric CSR graph joining every two vertices of a polygon (sorted column indices)."""
+    from scipy import sparse
+
     from ..cells import cell_sizes, cell_starts
 
     sizes = cell_sizes(faces)

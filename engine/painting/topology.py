@@ -19,7 +19,6 @@ from __future__ import annotations
 import re
 
 import numpy as np
-from scipy import sparse
 
 from ..cells import cell_sizes, cell_starts
 from ..errors import UserError
@@ -108,6 +107,8 @@ class PaintContext:
     """
 
     def __init__(self, model, *, mirror_tolerance: float = 1e-3):
+        from scipy import sparse  # here, not at import: the workbench loads this module at start
+
         self.vertices = model.vertices
         self.n_vertices = n = len(model.vertices)
         self.parts = list(model.parts)
