@@ -4,7 +4,9 @@ The model lives in :mod:`engine`; the workbench is a view over it.
 :class:`~workbench.document.ModelDocument` holds the open model and pose and
 announces changes; each widget (viewport, parameter panel, parts menu,
 status bar) is one module that listens. Importing this package loads no Qt;
-:func:`main` does.
+:func:`main` does. It does arrange for ``matplotlib.pyplot``, which pyvista
+imports but the workbench does not use, to run only when first used
+(:mod:`.deferred_imports`).
 
 >>> import workbench
 >>> workbench.main("my-head.xml")       # doctest: +SKIP
@@ -13,7 +15,11 @@ status bar) is one module that listens. Importing this package loads no Qt;
 
 from __future__ import annotations
 
+from . import deferred_imports
+
 __all__ = ["main"]
+
+deferred_imports.install()    # before anything imports pyvista: 0.3 s off the start (issue 7)
 
 
 def main(model_path: str | None = None) -> int:
