@@ -21,6 +21,10 @@ smooth falloff, front faces only, surface-connected); a stroke of
   returns on release; a still render with 4× MSAA is printed beside it);
 * **dab + render** — the two together: what one dab costs before the screen
   shows it (goal: under 16 ms on the head, under 50 ms at 100k);
+* **floors** — redrawing the same view with nothing changed (what the
+  rasteriser costs for this mesh at this size, whatever the tool does) and
+  redrawing the view with every part hidden (the window alone). *render −
+  same view* is what the dab's colour change costs to draw;
 * **pick** — mapping one mouse position to the rest mesh (``Viewport.pick_cell``),
   done once per mouse move, not per dab.
 
@@ -94,6 +98,20 @@ def measure(window, app, count, live):
         render_t.append(t2 - t1)
         both_t.append(t2 - t0)
         changed.append(len(change))
+    unchanged, empty = [], []                # the floors: redrawing this same view, and an empty one
+    for _ in range(count // 2):
+        t0 = time.perf_counter()
+        viewport.render_now()
+        unchanged.append(time.perf_counter() - t0)
+    shown = [part for part in viewport.part_names if viewport.part_actor(part).GetVisibility()]
+    for part in shown:
+        viewport.part_actor(part).SetVisibility(False)
+    for _ in range(count // 4):
+        t0 = time.perf_counter()
+        viewport.render_now()
+        empty.append(time.perf_counter() - t0)
+    for part in shown:
+        viewport.part_actor(part).SetVisibility(True)
     t0 = time.perf_counter()
     paint.release()                          # commit: Model.set_region + redraw from the document
     commit = time.perf_counter() - t0
@@ -111,7 +129,8 @@ def measure(window, app, count, live):
         still.append(time.perf_counter() - t0)
     document.undo_stack.undo()
     app.processEvents()
-    return {"still_render": stats(still), "dab": stats(dab_t), "render": stats(render_t), "dab_render": stats(both_t), "pick": stats(pick_t),
+    return {"still_render": stats(still), "dab": stats(dab_t), "render": stats(render_t), "dab_render": stats(both_t),
+            "pick": stats(pick_t), "redraw_unchanged": stats(unchanged), "redraw_empty": stats(empty),
             "changed_median": float(np.median(changed)), "commit_ms": commit * 1e3, "live": live}
 
 
@@ -155,6 +174,8 @@ def main(argv=None):
                   f"dab {r['dab']['median_ms']:.2f}/{r['dab']['p95_ms']:.2f} ms  "
                   f"render {r['render']['median_ms']:.2f}/{r['render']['p95_ms']:.2f} ms  "
                   f"dab+render {r['dab_render']['median_ms']:.2f}/{r['dab_render']['p95_ms']:.2f} ms  "
+                  f"floors: same view {r['redraw_unchanged']['median_ms']:.2f} ms, "
+                  f"empty view {r['redraw_empty']['median_ms']:.2f} ms  "
                   f"still render {r['still_render']['median_ms']:.1f} ms  "
                   f"pick {r['pick']['median_ms']:.2f}/{r['pick']['p95_ms']:.2f} ms  "
                   f"changed {r['changed_median']:.0f}  stroke commit {r['commit_ms']:.0f} ms  "

@@ -42,6 +42,49 @@ def test_tool_colours_override_and_update_in_part(window):
     assert not (viewport.displayed_colors() == 90).all()
 
 
+def _fresh_normals(mesh) -> np.ndarray:
+    """Vertex normals computed from scratch from what the mesh holds now."""
+    import pyvista as pv
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+
+    check = vtkPolyDataNormals()
+    check.SetInputData(pv.PolyData(mesh.points.copy(), mesh.faces.copy()))
+    check.SplittingOff()
+    check.ConsistencyOff()
+    check.ComputeCellNormalsOff()
+    check.Update()
+    return pv.wrap(check.GetOutput()).point_data["Normals"]
+
+
+def test_shading_follows_the_pose_and_a_colour_change_recomputes_nothing(window):
+    """Normals live on the drawn mesh: a pose and a live-preview move recompute them, a brush dab's
+    colour change leaves them (and the points) untouched, so drawing it costs no pipeline work."""
+    import pyvista as pv
+
+    viewport, document = window.viewport, window.document
+    skin = pv.wrap(viewport.part_actor("skin").GetMapper().GetInput())     # what is drawn
+    rest_normals = np.array(skin.point_data["Normals"])
+    assert np.allclose(rest_normals, _fresh_normals(skin), atol=1e-6)
+    rotation = next(n for n in document.model.parameters.names
+                    if document.model.parameters[n].kind == "rotation"
+                    and np.isin(viewport._parts["skin"].vertex_indices, document.model.regions[n].indices).any())
+    document.set_values({rotation: 0.8})
+    posed = np.array(skin.point_data["Normals"])
+    assert not np.allclose(posed, rest_normals, atol=1e-3)
+    assert np.allclose(posed, _fresh_normals(skin), atol=1e-6)
+
+    normals_array = skin.GetPointData().GetNormals()
+    points_time = skin.GetPoints().GetMTime()
+    viewport.update_colors(np.arange(50), np.full((50, 3), 200, dtype=np.uint8))
+    assert skin.GetPointData().GetNormals() is normals_array
+    assert skin.GetPoints().GetMTime() == points_time
+
+    moved = document.vertices()[viewport._parts["skin"].vertex_indices[:200]] + [0.0, 0.0, 3.0]
+    viewport.update_points(viewport._parts["skin"].vertex_indices[:200], moved)
+    assert np.allclose(skin.points[:200], moved)
+    assert np.allclose(skin.point_data["Normals"], _fresh_normals(skin), atol=1e-6)
+
+
 def test_pick_finds_the_surface_under_the_pixel(window):
     viewport = window.viewport
     viewport.render_now()
@@ -64,3 +107,37 @@ def test_playhead_clamps_and_counts_frames(qtbot):
     assert playhead.time == 0.5 and playhead.frame == 15
     playhead.set_time(9.0)
     assert playhead.time == 2.0
+
+
+def _brute_force_pick(viewport, x, y):
+    """The same pick by a fresh vtkCellPicker testing every polygon (no cell locator)."""
+    from vtkmodules.vtkRenderingCore import vtkCellPicker
+
+    picker = vtkCellPicker()
+    picker.SetTolerance(viewport._picker.GetTolerance())
+    picker.PickFromListOn()
+    for part in viewport.part_names:
+        if viewport.part_actor(part).GetVisibility():
+            picker.AddPickList(viewport.part_actor(part))
+    height = viewport.plotter.render_window.GetSize()[1]
+    ratio = viewport.plotter.devicePixelRatioF()
+    assert picker.Pick(x * ratio, height - 1 - y * ratio, 0.0, viewport.plotter.renderer)
+    return np.array(picker.GetPickPosition())
+
+
+def test_picking_follows_the_drawn_surface_after_it_moves(window):
+    """Picks go through a cell locator per part, rebuilt when the drawn points move (a pose, a
+    live-preview dab): each pick agrees with testing every polygon."""
+    viewport, document = window.viewport, window.document
+    viewport.render_now()
+    cx, cy = viewport.plotter.width() / 2, viewport.plotter.height() / 2
+    pixels = [(cx, cy), (cx - 20, cy + 15), (cx + 25, cy - 30)]
+    for x, y in pixels:
+        hit = viewport.pick(x, y)
+        assert hit is not None and np.linalg.norm(hit.point - _brute_force_pick(viewport, x, y)) < 0.2
+    skin = viewport._parts["skin"].vertex_indices
+    viewport.update_points(skin, document.vertices()[skin] + [15.0, 10.0, 12.0])
+    viewport.render_now()
+    for x, y in pixels:
+        hit = viewport.pick(x, y)
+        assert hit is not None and np.linalg.norm(hit.point - _brute_force_pick(viewport, x, y)) < 0.2
