@@ -7,10 +7,26 @@ With no tool active the dock says so.
 
 from __future__ import annotations
 
-from PySide6.QtCore import Qt
+from PySide6.QtCore import QSize, Qt
 from PySide6.QtWidgets import QDockWidget, QFrame, QLabel, QScrollArea, QStackedWidget, QWidget
 
 NO_TOOL = "none"
+
+
+class _PageScroller(QScrollArea):
+    """Holds one page: scrolls it down when it is tall, never sideways (it is at least as wide as the page)."""
+
+    def __init__(self):
+        super().__init__()
+        self.setHorizontalScrollBarPolicy(Qt.ScrollBarPolicy.ScrollBarAlwaysOff)
+
+    def minimumSizeHint(self) -> QSize:  # noqa: N802 (Qt's name)
+        hint = super().minimumSizeHint()
+        page = self.widget()
+        if page is None:
+            return hint
+        width = page.minimumSizeHint().width() + self.verticalScrollBar().sizeHint().width() + 2 * self.frameWidth()
+        return QSize(max(hint.width(), width), hint.height())
 
 
 class ToolOptionsDock(QDockWidget):
@@ -24,7 +40,7 @@ class ToolOptionsDock(QDockWidget):
                          | QDockWidget.DockWidgetFeature.DockWidgetClosable)
         self.stack = QStackedWidget()
         self._pages: dict[str, QWidget] = {}
-        self._holders: dict[str, QScrollArea] = {}   # each page scrolls, so a tall page never sets the window's height
+        self._holders: dict[str, QScrollArea] = {}   # each page scrolls down, so a tall page never sets the window's height
         placeholder = QLabel("No tool is active.\nTools for painting weights and editing the\n"
                              "parameter tree show their options here.")
         placeholder.setAlignment(Qt.AlignmentFlag.AlignCenter)
@@ -44,7 +60,7 @@ class ToolOptionsDock(QDockWidget):
         if old is not None:
             self.stack.removeWidget(old)
             old.deleteLater()
-        holder = QScrollArea()
+        holder = _PageScroller()
         holder.setWidgetResizable(True)
         holder.setFrameShape(QFrame.Shape.NoFrame)
         holder.setWidget(page)
@@ -54,6 +70,7 @@ class ToolOptionsDock(QDockWidget):
 
     def page(self, tool: str) -> QWidget:
         return self._pages[tool]
+
 
     def show_page(self, tool: str = NO_TOOL) -> None:
         """Show ``tool``'s options (its page must have been added); the placeholder by default."""

@@ -104,11 +104,29 @@ def test_tool_options_dock_waits_for_a_tool(window):
     assert not dock.isVisible()
 
 
+def test_every_tool_page_fits_the_default_column_without_scrolling_sideways(window, qtbot):
+    """Tool pages scroll down when tall, never sideways: the right column is at least as wide as the
+    widest page needs, and texts that name a parameter wrap instead of widening it."""
+    model = window.document.model
+    longest = max(model.parameters.names, key=len)
+    window.view_state.select_parameter(longest)
+    dock = window.tool_options
+    for tool in list(dock._holders):
+        dock.show_page(tool)
+        qtbot.wait(10)
+        holder, page = dock._holders[tool], dock.page(tool)
+        assert page.width() >= page.minimumSizeHint().width(), f"the {tool!r} page is cut off on the right"
+        assert page.width() <= holder.viewport().width(), f"the {tool!r} page is wider than its place"
+    dock.show_page()
+
+
 def test_window_layout_is_remembered(make_window, synthetic_model_path, qtbot):
     first = make_window(synthetic_model_path, size=(1100, 700))
     first.tool_options.hide()
-    first.resizeDocks([first.parameter_dock], [520], Qt.Orientation.Horizontal)
-    qtbot.waitUntil(lambda: first.parameter_dock.width() != 430)
+    qtbot.wait(20)
+    default = first.parameter_dock.width()
+    first.resizeDocks([first.parameter_dock], [default - 50], Qt.Orientation.Horizontal)
+    qtbot.waitUntil(lambda: first.parameter_dock.width() != default)
     width = first.parameter_dock.width()
     assert first.close()
     assert QSettings().value(settings.WINDOW_GEOMETRY) is not None

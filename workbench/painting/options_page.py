@@ -85,6 +85,7 @@ class PaintOptionsPage(QWidget):
         self.hold = QCheckBox("Hold the parameter at")
         self.hold_value = SpinSlider(0.0, 100.0, 0, " %")
         self.hold_label = QLabel()
+        self.hold_label.setWordWrap(True)     # its text names the parameter: it must not widen the dock
         self.hold_label.setEnabled(False)
 
         brush = QFormLayout()
