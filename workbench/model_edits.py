@@ -123,6 +123,49 @@ def subtree(tree: engine.ParameterTree, name: str) -> list[str]:
     return [p.name for p in tree if p.name in inside]
 
 
+def moved_parameters(tree: engine.ParameterTree, name: str, parent: str | None,
+                     before: str | None = None) -> list[engine.Parameter]:
+    """The tree's parameters (copies, in order) with ``name`` moved under ``parent`` (``None``: the top).
+
+    Placed just before its new sibling ``before``, or after the parent's last
+    child when ``before`` is ``None``; its own subtree goes with it (the
+    children keep their places). Raises :class:`ParameterError` for a move
+    into its own subtree or a ``before`` that is not a child of ``parent``.
+
+    >>> tree = engine.ParameterTree([engine.Parameter("head", "rotation"),
+    ...                              engine.Parameter("jaw", "rotation", parent="head"),
+    ...                              engine.Parameter("lip", "translation", parent="head"),
+    ...                              engine.Parameter("brow", "translation")])
+    >>> [p.name for p in moved_parameters(tree, "lip", "head", before="jaw")]
+    ['head', 'lip', 'jaw', 'brow']
+    >>> [(p.name, p.parent) for p in moved_parameters(tree, "brow", "head")][:4]
+    [('head', None), ('jaw', 'head'), ('lip', 'head'), ('brow', 'head')]
+    """
+    tree[name]  # unknown names raise with a suggestion
+    if parent is not None:
+        tree[parent]
+        if parent in subtree(tree, name):
+            what = "the parameter itself" if parent == name else f"one of {name}'s descendants"
+            raise ParameterError(f"cannot move {name} under {parent}: {parent} is {what} "
+                                 "(the parent chain loops)")
+    if before is not None and tree[before].parent != parent:
+        raise ParameterError(f"cannot place {name} before {before}: {before} is not a child of "
+                             f"{parent if parent is not None else 'the top level'}")
+    parameters = [p.copy() for p in tree]
+    if before == name:
+        return parameters
+    moved = next(p for p in parameters if p.name == name).copy(parent=parent)
+    parameters = [p for p in parameters if p.name != name]
+    names = [p.name for p in parameters]
+    if before is not None:
+        at = names.index(before)
+    else:
+        siblings = [i for i, p in enumerate(parameters) if p.parent == parent]
+        at = siblings[-1] + 1 if siblings else names.index(parent) + 1 if parent is not None else len(names)
+    parameters.insert(at, moved)
+    return parameters
+
+
 def without_subtree(model: engine.Model, name: str) -> tuple[TreeSnapshot, list[str]]:
     """The tree with ``name`` and everything below it gone, and the names removed.
 

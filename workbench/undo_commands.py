@@ -24,9 +24,9 @@ import numpy as np
 from PySide6.QtGui import QUndoCommand
 
 import engine
-from engine.errors import ParameterError, UserError
+from engine.errors import UserError
 
-from .model_edits import TreeSnapshot, subtree, without_subtree
+from .model_edits import TreeSnapshot, moved_parameters, subtree, without_subtree
 
 if TYPE_CHECKING:
     from .document import ModelDocument
@@ -150,23 +150,28 @@ class ReplaceParameterCommand(ModelEditCommand):
         self.document.apply_replace_parameter(self._old.copy())
 
 
-class ReparentParameterCommand(ReplaceParameterCommand):
-    """Move a parameter under another one (``None``: make it a root). Its subtree moves with it.
+class MoveParameterCommand(ModelEditCommand):
+    """Move a parameter under another one (``None``: to the top), before its new sibling ``before``
+    (``None``: after the last one). Its subtree moves with it.
 
     The tree refuses loops and children under a displacement field; the
-    groups (rigid / leaf) follow from the new shape.
+    groups (rigid / leaf) follow from the new shape. The order of the
+    parameters is the order siblings are shown and saved in.
     """
 
-    def __init__(self, document: "ModelDocument", name: str, parent: str | None):
-        if parent is not None:
-            document.model.parameters[parent]  # unknown names raise with a suggestion
-            if parent in subtree(document.model.parameters, name):
-                what = "the parameter itself" if parent == name else f"one of {name}'s descendants"
-                raise ParameterError(f"cannot move {name} under {parent}: {parent} is {what} "
-                                     "(the parent chain loops)")
-        moved = document.model.parameters[name].copy(parent=parent)
+    def __init__(self, document: "ModelDocument", name: str, parent: str | None, before: str | None = None):
+        self._after = TreeSnapshot(tuple(moved_parameters(document.model.parameters, name, parent, before)), {})
+        self._before = TreeSnapshot.of(document.model)
         where = f"under {parent}" if parent is not None else "to the top"
-        super().__init__(document, moved, text=f"Move {name} {where}")
+        if before is not None:
+            where = f"before {before}" if document.model.parameters[name].parent == parent else f"{where}, before {before}"
+        super().__init__(document, f"Move {name} {where}")
+
+    def apply(self) -> None:
+        self.document.apply_restore_tree(self._after)
+
+    def revert(self) -> None:
+        self.document.apply_restore_tree(self._before)
 
 
 class RenameParameterCommand(ModelEditCommand):

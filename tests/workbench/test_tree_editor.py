@@ -79,7 +79,8 @@ def test_the_dock_shows_the_tree_with_groups_and_types(window):
     assert _row(window, "brow_raise") == ("brow_raise", GROUP_TEXT[2], "translation")
     menu = window.menus["&Parameters"]
     ids = [a.objectName() for a in menu.actions() if a.objectName()]
-    assert ids == ["parameters.add", "parameters.remove", "parameters.rename"]
+    assert ids == ["parameters.add", "parameters.remove", "parameters.rename",
+                   "parameters.move_up", "parameters.move_down"]
     assert window.actions_by_id["parameters.rename"].shortcut().toString() == "F2"
     assert window.actions_by_id["parameters.add"] in window.toolbar.actions()
     assert not window.actions_by_id["parameters.add"].icon().isNull()
@@ -188,6 +189,55 @@ def _drop(window, names, target):
     event = QDropEvent(position, Qt.DropAction.MoveAction, data, Qt.MouseButton.LeftButton,
                        Qt.KeyboardModifier.NoModifier)
     view.dropEvent(event)
+
+
+def _drop_above(window, names, target):
+    """Drop the rows ``names`` on the upper edge of ``target``'s row: between it and the row above."""
+    view, model = window.tree_editor.dock.view, window.tree_editor.dock.model
+    rect = view.visualRect(model.index_of(target))
+    data = model.mimeData([model.index_of(n) for n in names])      # kept: the event does not own it
+    event = QDropEvent(QPointF(rect.center().x(), rect.top() + 1), Qt.DropAction.MoveAction, data,
+                       Qt.MouseButton.LeftButton, Qt.KeyboardModifier.NoModifier)
+    view.dropEvent(event)
+
+
+def _children_shown(window, name):
+    model = window.tree_editor.dock.model
+    index = model.index_of(name)
+    return [model.name_at(model.index(row, 0, index)) for row in range(model.rowCount(index))]
+
+
+def test_a_drop_between_rows_places_the_parameter_there_among_its_siblings(window):
+    document = window.document
+    assert document.model.parameters.children("head_turn") == ["jaw_open", "brow_raise"]
+    before = model_state(document.model)
+    _drop_above(window, ["brow_raise"], "jaw_open")
+    assert document.model.parameters.children("head_turn") == ["brow_raise", "jaw_open"]
+    assert _children_shown(window, "head_turn") == ["brow_raise", "jaw_open"]
+    assert document.undo_stack.undoText() == "Move brow_raise before jaw_open"
+    _check_undo_redo(document, before)
+
+
+def test_move_up_and_down_reorder_siblings_one_undo_step_each(window, tmp_path):
+    document, actions = window.document, window.actions_by_id
+    _select(window, "jaw_open")
+    assert not actions["parameters.move_up"].isEnabled() and actions["parameters.move_down"].isEnabled()
+    assert actions["parameters.move_down"].shortcut().toString() == "Ctrl+Shift+Down"
+    before = model_state(document.model)
+    actions["parameters.move_down"].trigger()
+    assert _children_shown(window, "head_turn") == ["brow_raise", "jaw_open"]
+    assert actions["parameters.move_up"].isEnabled() and not actions["parameters.move_down"].isEnabled()
+    assert window.view_state.selected_parameter == "jaw_open"
+    moved = _check_undo_redo(document, before)
+    path = document.save(tmp_path / "reordered.xml")            # the order is what the file keeps
+    document.open(path)
+    assert document.model.parameters.children("head_turn") == ["brow_raise", "jaw_open"]
+    assert model_state(document.model) == moved
+    _select(window, "jaw_open")
+    actions["parameters.move_up"].trigger()
+    assert document.model.parameters.children("head_turn") == ["jaw_open", "brow_raise"]
+    _select(window, "head_turn")                                 # a lone root has nowhere to go
+    assert not actions["parameters.move_up"].isEnabled() and not actions["parameters.move_down"].isEnabled()
 
 
 def test_drag_and_drop_moves_a_parameter_under_another(window):

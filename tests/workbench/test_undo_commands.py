@@ -9,7 +9,7 @@ import engine
 from synthetic_workbench_model import build_synthetic_model
 from workbench.document import ModelDocument
 from workbench.model_edits import weights_at, with_weights
-from workbench.undo_commands import (AddParameterCommand, ReparentParameterCommand, RemoveParameterCommand,
+from workbench.undo_commands import (AddParameterCommand, MoveParameterCommand, RemoveParameterCommand,
                                      RenameParameterCommand, ReplaceParameterCommand, SetRegionCommand,
                                      WeightsChangedCommand)
 from workbench_model_state import model_state
@@ -49,9 +49,13 @@ EDITS = [
     ("replace", lambda d: ReplaceParameterCommand(
         d, d.model.parameters["jaw_open"].copy(maximum=2.0, pivot=(1, -12, -25), degrees_per_unit=15.5,
                                                 description="Open wide.")), "Edit parameter jaw_open"),
-    ("reparent-under-leaf", lambda d: ReparentParameterCommand(d, "brow_raise", "jaw_open"),
+    ("reparent-under-leaf", lambda d: MoveParameterCommand(d, "brow_raise", "jaw_open"),
      "Move brow_raise under jaw_open"),
-    ("reparent-to-top", lambda d: ReparentParameterCommand(d, "jaw_open", None), "Move jaw_open to the top"),
+    ("reparent-to-top", lambda d: MoveParameterCommand(d, "jaw_open", None), "Move jaw_open to the top"),
+    ("reorder-siblings", lambda d: MoveParameterCommand(d, "brow_raise", "head_turn", before="jaw_open"),
+     "Move brow_raise before jaw_open"),
+    ("move-before-a-new-sibling", lambda d: MoveParameterCommand(d, "brow_raise", None, before="head_turn"),
+     "Move brow_raise to the top, before head_turn"),
     ("rename-parent", lambda d: RenameParameterCommand(d, "head_turn", "head_yaw"), "Rename head_turn to head_yaw"),
     ("rename-leaf", lambda d: RenameParameterCommand(d, "pucker", "lips_pucker"), "Rename pucker to lips_pucker"),
     ("set-region", lambda d: SetRegionCommand(
@@ -181,8 +185,9 @@ def test_a_tool_that_already_wrote_the_weights_pushes_before_and_after(document)
     (lambda d: AddParameterCommand(d, engine.Parameter("jaw_open", "rotation")), "already exists"),
     (lambda d: AddParameterCommand(d, engine.Parameter("child", "rotation", parent="pucker")),
      "cannot have children"),
-    (lambda d: ReparentParameterCommand(d, "head_turn", "jaw_open"), "loops"),
-    (lambda d: ReparentParameterCommand(d, "jaw_open", "pucker"), "cannot have children"),
+    (lambda d: MoveParameterCommand(d, "head_turn", "jaw_open"), "loops"),
+    (lambda d: MoveParameterCommand(d, "jaw_open", "pucker"), "cannot have children"),
+    (lambda d: MoveParameterCommand(d, "jaw_open", None, before="brow_raise"), "not a child of the top level"),
     (lambda d: RenameParameterCommand(d, "jaw_open", "brow_raise"), "already exists"),
     (lambda d: RenameParameterCommand(d, "jaw_open", "2 bad"), "not allowed"),
     (lambda d: ReplaceParameterCommand(d, d.model.parameters["jaw_open"].copy(field=False, kind="translation",

@@ -41,6 +41,12 @@ ACTIONS = (
                tip="Remove the selected parameter, everything below it and their influence regions"),
     ActionSpec("parameters.rename", "Re&name", MENU, triggered=lambda w: w.tree_editor.start_rename(),
                shortcut="F2", icon="parameter-rename", tip="Rename the selected parameter"),
+    ActionSpec("parameters.move_up", "Move &up", MENU, triggered=lambda w: w.tree_editor.move_among_siblings(-1),
+               shortcut="Ctrl+Shift+Up", icon="parameter-move-up", separator_before=True,
+               tip="Move the selected parameter before its previous sibling (the order it is shown and saved in)"),
+    ActionSpec("parameters.move_down", "Move &down", MENU,
+               triggered=lambda w: w.tree_editor.move_among_siblings(+1), shortcut="Ctrl+Shift+Down",
+               icon="parameter-move-down", tip="Move the selected parameter after its next sibling"),
 )
 
 

@@ -38,7 +38,7 @@ class ParameterTreeView(QTreeView):
 class ParameterTreeDock(QDockWidget):
     """Dock ``dock:parameter-tree`` with :attr:`view` over :attr:`model`.
 
-    ``rename(old, new) -> bool`` and ``reparent(names, parent)`` push the
+    ``rename(old, new) -> bool`` and ``move(names, parent, before)`` push the
     edits (see :class:`~workbench.tree_editor.editor.TreeEditor`).
     ``picked_by_user`` is emitted when the user (not a sync) selects a row.
     """
@@ -46,7 +46,8 @@ class ParameterTreeDock(QDockWidget):
     picked_by_user = Signal(object)
 
     def __init__(self, document: ModelDocument, view_state: ViewState,
-                 rename: Callable[[str, str], bool], reparent: Callable[[list[str], str | None], None],
+                 rename: Callable[[str, str], bool],
+                 move: Callable[[list[str], str | None, str | None], None],
                  parent: QWidget | None = None):
         super().__init__("Parameter tree", parent)
         self.setObjectName("dock:parameter-tree")
@@ -58,7 +59,7 @@ class ParameterTreeDock(QDockWidget):
         self._syncing = False
         self._collapsed: set[str] = set()
 
-        self.model = ParameterTreeModel(rename, reparent, self)
+        self.model = ParameterTreeModel(rename, move, self)
         self.view = ParameterTreeView()
         self.view.setModel(self.model)
         self.view.setObjectName("tree-editor:view")

@@ -24,7 +24,7 @@ import engine
 
 from ..model_edits import subtree, unique_name
 from ..undo_commands import (AddParameterCommand, ModelEditCommand, RemoveSubtreeCommand,
-                             RenameParameterCommand, ReparentParameterCommand)
+                             MoveParameterCommand, RenameParameterCommand)
 
 if TYPE_CHECKING:
     from ..main_window import MainWindow
@@ -55,11 +55,19 @@ class TreeEditor(QObject):
         return name if name is not None and name in self.document.model.parameters else None
 
     def update_actions(self, *_args) -> None:
-        """Remove and Rename need a selected parameter."""
-        selected = self.selected is not None
-        for action_id in ("parameters.remove", "parameters.rename"):
+        """Remove and Rename need a selected parameter; Move up / down one with a sibling that way."""
+        name = self.selected
+        first = last = True
+        if name is not None:
+            tree = self.document.model.parameters
+            parent = tree[name].parent
+            siblings = tree.children(parent) if parent is not None else tree.roots()
+            first, last = siblings[0] == name, siblings[-1] == name
+        enabled = {"parameters.remove": name is not None, "parameters.rename": name is not None,
+                   "parameters.move_up": not first, "parameters.move_down": not last}
+        for action_id, on in enabled.items():
             if action_id in self.actions:
-                self.actions[action_id].setEnabled(selected)
+                self.actions[action_id].setEnabled(on)
 
     # -- edits -------------------------------------------------------------
     def push(self, command_factory) -> bool:
@@ -133,17 +141,38 @@ class TreeEditor(QObject):
         self.dock.view.setFocus()
         self.dock.view.edit(self.dock.model.index_of(name))
 
-    def reparent(self, names: list[str], parent: str | None) -> bool:
+    def reparent(self, names: list[str], parent: str | None, before: str | None = None) -> bool:
         """Move each of ``names`` under ``parent`` (``None``: to the top), one undo step each.
 
-        A move into its own subtree is refused with a message.
+        With ``before`` (a child of ``parent``) they are placed just before it,
+        in the order given; without, after ``parent``'s last child (a parameter
+        already under ``parent`` then stays where it is). A move into its own
+        subtree is refused with a message.
         """
         done = True
+        tree = self.document.model.parameters
         for name in names:
-            if name not in self.document.model.parameters or self.document.model.parameters[name].parent == parent:
+            if name not in tree or name == before or (before is None and tree[name].parent == parent):
                 continue
-            done = self.push(lambda name=name: ReparentParameterCommand(self.document, name, parent)) and done
+            done = self.push(lambda name=name: MoveParameterCommand(self.document, name, parent, before)) and done
         return done
+
+    def move_among_siblings(self, step: int, name: str | None = None) -> bool:
+        """Move ``name`` (default: the selected parameter) ``step`` places up (−1) or down (+1) among its siblings."""
+        name = name if name is not None else self.selected
+        if name is None:
+            return False
+        tree = self.document.model.parameters
+        parent = tree[name].parent
+        siblings = tree.children(parent) if parent is not None else tree.roots()
+        at = siblings.index(name) + step
+        if not 0 <= at < len(siblings):
+            return False
+        rest = [s for s in siblings if s != name]
+        before = rest[at] if at < len(rest) else None
+        if before is None:
+            return self.push(lambda: MoveParameterCommand(self.document, name, parent))
+        return self.push(lambda: MoveParameterCommand(self.document, name, parent, before))
 
     # -- messages ------------------------------------------------------------
     def warn(self, text: str) -> None:

@@ -6,7 +6,8 @@ edits the model itself: an in-place rename (``setData`` on a name) and a drop
 are handed to callbacks, which push undo commands; the model then follows
 the document's ``parameters_changed`` signal like every other widget.
 
->>> model = ParameterTreeModel(rename=lambda old, new: True, reparent=lambda names, parent: None)  # doctest: +SKIP
+>>> model = ParameterTreeModel(rename=lambda old, new: True,                                 # doctest: +SKIP
+...                            move=lambda names, parent, before: None)
 >>> model.sync(document.model.parameters)                                                      # doctest: +SKIP
 """
 
@@ -39,14 +40,14 @@ class ParameterTreeModel(QStandardItemModel):
     """One row per parameter, children under their parent; column 0 editable (rename), rows draggable.
 
     ``rename(old, new) -> bool`` is called for an edited name and
-    ``reparent(names, parent_or_None)`` for a drop; both push the edit.
+    ``move(names, parent_or_None, before_or_None)`` for a drop; both push the edit.
     """
 
     def __init__(self, rename: Callable[[str, str], bool],
-                 reparent: Callable[[list[str], str | None], None], parent=None):
+                 move: Callable[[list[str], str | None, str | None], None], parent=None):
         super().__init__(parent)
         self._rename = rename
-        self._reparent = reparent
+        self._move = move
         self._shape: tuple = ()
         self._items: dict[str, QStandardItem] = {}
         self.setHorizontalHeaderLabels(list(COLUMNS))
@@ -148,12 +149,21 @@ class ParameterTreeModel(QStandardItemModel):
         return bool(self.dragged_names(data))
 
     def dropMimeData(self, data, action, row, column, parent) -> bool:  # noqa: N802 (Qt's name)
-        """A drop on a row (or between its children) moves the dragged parameters under it; elsewhere to the top.
+        """A drop on a row moves the dragged parameters under it (after its children); a drop between
+        rows places them there, among those rows' siblings (``row``: the position between them); a
+        drop below every row moves them to the top level, last.
 
         Always returns ``False``: the rows are not moved here but rebuilt
         from the edited model, so the view must not delete the dragged ones.
         """
         names = self.dragged_names(data)
-        if names:
-            self._reparent(names, self.name_at(parent.siblingAtColumn(0)) if parent.isValid() else None)
+        if not names:
+            return False
+        target = self.name_at(parent.siblingAtColumn(0)) if parent.isValid() else None
+        before = None
+        if row >= 0:
+            holder = self.itemFromIndex(parent.siblingAtColumn(0)) if parent.isValid() else self.invisibleRootItem()
+            if row < holder.rowCount():
+                before = holder.child(row, 0).data(NAME_ROLE)
+        self._move(names, target, before)
         return False
