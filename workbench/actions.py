@@ -79,6 +79,9 @@ ACTIONS: tuple[ActionSpec, ...] = (
     ActionSpec("view.wireframe", "&Wireframe", "&View", toggled=lambda w, on: w.view_state.set_wireframe(on),
                shortcut="Ctrl+Shift+W", icon="wireframe", toolbar=True, separator_before=True,
                tip="Draw the polygons' edges instead of shaded surfaces"),
+    ActionSpec("view.landmarks", "&Landmarks", "&View", toggled=lambda w, on: w.view_state.set_landmarks(on),
+               shortcut="Ctrl+Shift+L", icon="landmarks", toolbar=True,
+               tip="Show the model's landmarks (MPEG-4 feature points) with their ids"),
 )
 
 

@@ -20,6 +20,7 @@ from . import features, settings
 from .document import ModelDocument
 from .file_controller import TITLE, FileController
 from .icons import APP_ICON, icon
+from .landmark_overlay import LandmarkOverlay
 from .parameter_panel import ParameterPanel
 from .parts_menu import PartsMenu
 from .playhead import Playhead
@@ -86,6 +87,8 @@ class MainWindow(QMainWindow):
         tool_options_toggle.setIcon(icon("tool-options"))
         view_menu.addAction(tool_options_toggle)
         self.view_state.wireframe_changed.connect(self.actions_by_id["view.wireframe"].setChecked)
+        self.landmarks = LandmarkOverlay(self.viewport, document, self.view_state, self)
+        self.view_state.landmarks_changed.connect(self.actions_by_id["view.landmarks"].setChecked)
         self._bind_undo_actions()
 
         self.setStatusBar(ModelStatusBar(document, self))

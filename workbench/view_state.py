@@ -1,4 +1,4 @@
-"""How the model is displayed (not what it is): wireframe, hidden parts, the selected parameter.
+"""How the model is displayed (not what it is): wireframe, landmarks, hidden parts, the selected parameter.
 
 Kept apart from :class:`~workbench.document.ModelDocument` because none of it
 belongs in a model file; menus write it, the viewport listens.
@@ -15,6 +15,8 @@ class ViewState(QObject):
     Signals
     -------
     wireframe_changed(bool)
+    landmarks_changed(bool)
+        The model's landmarks are drawn (``True``) or not.
     part_visibility_changed(str, bool)
         A part was shown (``True``) or hidden (``False``).
     selected_parameter_changed(object)
@@ -26,6 +28,7 @@ class ViewState(QObject):
     """
 
     wireframe_changed = Signal(bool)
+    landmarks_changed = Signal(bool)
     part_visibility_changed = Signal(str, bool)
     selected_parameter_changed = Signal(object)
     heat_map_changed = Signal(bool)
@@ -33,6 +36,7 @@ class ViewState(QObject):
     def __init__(self, parent: QObject | None = None):
         super().__init__(parent)
         self._wireframe = False
+        self._landmarks = False
         self._hidden: set[str] = set()
         self._selected: str | None = None
         self._heat_map = True
@@ -66,6 +70,17 @@ class ViewState(QObject):
         if on != self._wireframe:
             self._wireframe = on
             self.wireframe_changed.emit(on)
+
+    @property
+    def landmarks(self) -> bool:
+        """Whether the model's landmarks are drawn (off by default)."""
+        return self._landmarks
+
+    def set_landmarks(self, on: bool) -> None:
+        on = bool(on)
+        if on != self._landmarks:
+            self._landmarks = on
+            self.landmarks_changed.emit(on)
 
     def is_part_visible(self, part: str) -> bool:
         return part not in self._hidden

@@ -182,6 +182,14 @@ class Viewport(QWidget):
             out[view.vertex_indices] = pv.wrap(source.GetOutputDataObject(0)).point_data[VERTEX_COLORS]
         return out
 
+    def displayed_normals(self, indices) -> np.ndarray:
+        """(k, 3) unit normals of the model vertices ``indices`` as drawn now (NaN where not drawn)."""
+        indices = np.asarray(indices, dtype=np.int64).reshape(-1)
+        out = np.full((len(indices), 3), np.nan)
+        for view, local, rows in self._locate(indices):
+            out[rows] = pv.convert_array(view.mesh.GetPointData().GetNormals())[local]
+        return out
+
     def heat_map_colors(self, name: str) -> np.ndarray:
         """(N, 3) uint8: parameter ``name``'s weights as heat colours over the ordinary colours."""
         model = self._document.model
