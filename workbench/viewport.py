@@ -47,6 +47,8 @@ VIEWS: dict[str, tuple[float, float, float]] = {
     "three-quarter": (1.0, 0.12, 1.1),
 }
 VERTEX_COLORS = "vertex_colors"  # name of the per-vertex sRGB array on each part mesh
+POINT_SIZE = 11.0                # dots drawn by Viewport.show_points, px
+LABEL_FONT_SIZE = 11
 BACKGROUND_BOTTOM = "#5d6670"
 BACKGROUND_TOP = "#c9ced4"
 
@@ -105,6 +107,16 @@ class _PartView:
         return self.locator
 
 
+@dataclass
+class _PointSet:
+    """Dots drawn over the model (and their labels): one cloud, its actors, what it was built with."""
+
+    cloud: pv.PolyData
+    actors: list
+    labels: list[str] | None
+    color: str
+
+
 class Viewport(QWidget):
     """Shows the document's model in its current pose and follows every change."""
 
@@ -113,6 +125,7 @@ class Viewport(QWidget):
         self._document = document
         self._view_state = view_state
         self._parts: dict[str, _PartView] = {}
+        self._point_sets: dict[str, _PointSet] = {}
         self._view = "front"
         self._base_colors = np.zeros((0, 3), dtype=np.uint8)
         self._overlay: np.ndarray | None = None      # colours a tool asked for, else None
@@ -181,6 +194,55 @@ class Viewport(QWidget):
             source.Update()
             out[view.vertex_indices] = pv.wrap(source.GetOutputDataObject(0)).point_data[VERTEX_COLORS]
         return out
+
+    def show_points(self, name: str, points, color: str, labels=None) -> None:
+        """Draw ``points`` ((k, 3) mm) as flat dots in ``color``, each with its text from ``labels`` beside it.
+
+        Called again with the same name, labels and colour it moves the dots
+        (and labels) in place. Labels of points behind the model are hidden.
+        """
+        points = np.asarray(points, dtype=float).reshape(-1, 3)
+        labels = None if labels is None else [str(label) for label in labels]
+        entry = self._point_sets.get(name)
+        if entry is None or entry.labels != labels or entry.color != color or entry.cloud.n_points != len(points):
+            self._remove_points(name)
+            cloud = pv.PolyData(points.copy())
+            actors = [self.plotter.add_mesh(cloud, color=color, point_size=POINT_SIZE, render_points_as_spheres=True,
+                                            lighting=False, name=f"points:{name}", pickable=False,
+                                            reset_camera=False, render=False)]
+            if labels:
+                cloud.point_data["labels"] = np.array(labels)
+                actors.append(self.plotter.add_point_labels(
+                    cloud, "labels", name=f"labels:{name}", font_size=LABEL_FONT_SIZE, text_color="white",
+                    shape_color="#20262c", shape_opacity=0.55, margin=2, show_points=False,
+                    always_visible=False, tolerance=0.01, reset_camera=False, render=False))
+            entry = self._point_sets[name] = _PointSet(cloud, actors, labels, color)
+        else:
+            entry.cloud.points[:] = points
+            entry.cloud.Modified()
+        for actor in entry.actors:
+            actor.SetVisibility(True)
+        self._schedule_render()
+
+    def hide_points(self, name: str) -> None:
+        """Stop drawing the dots (and labels) shown under ``name``, if any."""
+        entry = self._point_sets.get(name)
+        if entry is not None and entry.actors[0].GetVisibility():
+            for actor in entry.actors:
+                actor.SetVisibility(False)
+            self._schedule_render()
+
+    def shown_points(self, name: str) -> np.ndarray:
+        """(k, 3) mm: the dots drawn now under ``name`` (none while hidden)."""
+        entry = self._point_sets.get(name)
+        if entry is None or not entry.actors[0].GetVisibility():
+            return np.zeros((0, 3))
+        return np.array(entry.cloud.points)
+
+    def _remove_points(self, name: str) -> None:
+        entry = self._point_sets.pop(name, None)
+        for actor in entry.actors if entry is not None else ():
+            self.plotter.remove_actor(actor, render=False)
 
     def displayed_normals(self, indices) -> np.ndarray:
         """(k, 3) unit normals of the model vertices ``indices`` as drawn now (NaN where not drawn)."""
@@ -386,6 +448,7 @@ class Viewport(QWidget):
     def close_plotter(self) -> None:
         """Release the VTK render window and every actor (call before the widget goes away)."""
         self._parts.clear()
+        self._point_sets.clear()
         self.plotter.close()
 
     # -- building --------------------------------------------------------
