@@ -125,7 +125,7 @@ def _command(tag: str, source: str, offset: int, name: str) -> HighLevelCommand:
         [command] = parse_commands_text(f"<commands>{tag}</commands>", name)
     except CommandError as exc:
         raise CommandError(f"column {column}: {exc.message}", file=name, line=line) from None
-    return replace(command, file=name, line=line)
+    return replace(command, file=name, line=line, column=column)
 
 
 def _check_no_stray_brackets(source: str, start: int, end: int, name: str) -> None:

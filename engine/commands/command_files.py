@@ -59,9 +59,16 @@ class HighLevelCommand:
     arguments: dict[str, float]
     file: str = "<text>"
     line: int | None = None
+    column: int | None = field(default=None, repr=False)
+    """Set for an inline command in a script: where on its line the tag starts."""
 
     def where(self) -> dict:
         return {"file": self.file, "line": self.line}
+
+    def error(self, message: str) -> CommandError:
+        """A :class:`CommandError` about this command, at its file, line and (inline) column."""
+        prefix = f"column {self.column}: " if self.column is not None else ""
+        return CommandError(prefix + message, **self.where())
 
 
 @dataclass

@@ -54,15 +54,14 @@ def translate(commands, library: Library, model) -> list[Activation]:
 def translate_command(command: HighLevelCommand, library: Library, model) -> list[Activation]:
     """The activations one high-level command expands to."""
     if command.name not in library:
-        raise CommandError(f"unknown command <{command.name}>{_closest(command.name, library.names())}",
-                           **command.where())
+        raise command.error(f"unknown command <{command.name}>{_closest(command.name, library.names())}")
     definition = library[command.name]
     args = command_arguments(command, definition)
     parameters = [parameter_of_line(definition, curve, model) for curve in definition.curves]
     try:
         laid_out = expand(definition, args)
     except ArgumentProblem as exc:
-        raise CommandError(f"<{command.name}>: {exc}", **command.where()) from None
+        raise command.error(f"<{command.name}>: {exc}") from None
     scale = args[AMPLITUDE] / 100.0
     source = f"{command.file}:{command.line}" if command.line is not None else command.file
     activations = []
@@ -79,15 +78,14 @@ def command_arguments(command: HighLevelCommand, definition: CommandDefinition) 
     for name in command.arguments:
         if name not in accepted:
             known = ", ".join(sorted(accepted))
-            raise CommandError(f"<{command.name}> has no argument '{name}'{_closest(name, accepted)} "
-                               f"(it accepts: {known}; see {definition.file}:{definition.line})",
-                               **command.where())
+            raise command.error(f"<{command.name}> has no argument '{name}'{_closest(name, accepted)} "
+                                f"(it accepts: {known}; see {definition.file}:{definition.line})")
     values = {}
     for name, default in accepted.items():
         if name in command.arguments:
             values[name] = command.arguments[name]
         elif default is None:
-            raise CommandError(f"<{command.name}> needs the argument '{name}'", **command.where())
+            raise command.error(f"<{command.name}> needs the argument '{name}'")
         else:
             values[name] = default
     return Arguments(values, set(command.arguments), tuple(definition.optional))

@@ -27,6 +27,7 @@ from ..script import Script, anchored_commands, parse_script
 from ..timeline import Timeline
 from .articulation import ArticulationTable, load_articulation
 from .coarticulation import articulate
+from .festival import prepare_text
 from .prosody import prosody_commands
 
 
@@ -56,6 +57,9 @@ def speak(text: str, model, synthesizer=None, voice: str | None = None, library=
     script = parse_script(text, name)
     if not script.text.strip():
         raise CommandError("there is no text to speak (only commands?)", file=name)
+    # A character Festival cannot read, named by file, line and column in the text as written
+    # (the synthesizer only sees the text with the commands taken out).
+    prepare_text(text, name)
     library = load_library() if library is None else library
     table = load_articulation() if table is None else table
     table.check(model)

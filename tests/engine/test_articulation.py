@@ -197,6 +197,27 @@ def test_script_errors_name_line_and_column(text, line, words):
     assert caught.value.file == "talk.txt" and caught.value.line == line and words in caught.value.message
 
 
+@pytest.mark.parametrize("text, line, words", [
+    ("Hei\nmoi <Blink/> <Smiley/> moi", 2, "column 14: unknown command <Smiley>"),
+    ('Hei <HeadNod amplitud="3"/>', 1, "column 5: <HeadNod> has no argument 'amplitud'"),
+    ("Hei <Blink/> <Blink/> 漢 moi", 1, "column 23"),                 # counted in the text as written
+])
+def test_speak_names_the_file_line_and_column_before_synthesis(text, line, words):
+    """Errors found in a script name where they stand in the text as typed (commands included), before
+    any synthesis: the synthesizer given here fails the test if it is reached."""
+    from engine import load_model
+    from engine.speech.say import speak
+
+    class Unreachable:
+        def synthesize(self, *args):
+            raise AssertionError("synthesis started before the script was checked")
+
+    with pytest.raises(UserError) as caught:
+        speak(text, load_model(), synthesizer=Unreachable(), name="talk.txt")
+    assert caught.value.file == "talk.txt" and caught.value.line == line
+    assert words in caught.value.message, caught.value.message
+
+
 # -- prosody ------------------------------------------------------------------------------
 
 def test_prosody_is_seeded_and_uses_library_commands():

@@ -261,10 +261,9 @@ class ScriptPanel(QWidget):
         self.window.statusBar().showMessage(f"Saying: {title}", MESSAGE_MS)
 
     def _report_error(self, error: BaseException) -> None:
-        text = self.editor.toPlainText()
         if isinstance(error, UserError):
-            message = described_error(error, text)
-            where = error_location(error, text)
+            message = described_error(error)
+            where = error_location(error)
             if where is not None:
                 self._put_cursor(*where)
         else:                                       # a bug of ours: say so, keep the text, no crash

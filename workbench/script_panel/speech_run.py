@@ -20,8 +20,6 @@ from pathlib import Path
 
 #: The name the text goes by in error messages: ``text:2: column 7: …``.
 TEXT_NAME = "text"
-#: The name Festival's text check gives it (``engine.speech.festival.prepare_text``'s default).
-SYNTHESIS_NAME = "<text>"
 COARTICULATIONS = (("Cohen–Massaro", "cohen-massaro"), ("none (target interpolation)", "none"))
 _counter = itertools.count(1)
 
@@ -60,43 +58,27 @@ def run_say(request: SayRequest, folder: Path) -> SayResult:
     return SayResult(request, speech, wav)
 
 
-def error_location(error: Exception, text: str) -> tuple[int, int] | None:
-    """(line, column), both from 1, of what ``error`` complains about in ``text``; ``None`` if unknown.
+def error_location(error: Exception) -> tuple[int, int] | None:
+    """(line, column), both from 1, of what ``error`` complains about in the typed text; ``None`` if unknown.
 
-    The column comes from the message (``column 7``) or, for a command the
-    library does not know, from where ``<Name`` stands on the error's line.
+    The engine names the text's line and, in the message, the column
+    (``column 7``) in the text as typed, commands included.
 
     >>> from engine.errors import CommandError
-    >>> error_location(CommandError("unknown command <Hapy>", file="text", line=2), "Hei\\nmoi <Hapy/>")
+    >>> error_location(CommandError("column 5: unknown command <Hapy>", file="text", line=2))
     (2, 5)
     """
     line = getattr(error, "line", None)
-    if not isinstance(line, int) or getattr(error, "file", None) not in (TEXT_NAME, SYNTHESIS_NAME):
+    if not isinstance(line, int) or getattr(error, "file", None) != TEXT_NAME:
         return None
-    message = getattr(error, "message", str(error))
-    character = re.search(r"has no character '(.)'", message)
-    if character and character.group(1) in text:
-        # Festival's check counts in the text with the commands taken out; find it in what was typed.
-        before = text[:text.index(character.group(1))]
-        return before.count("\n") + 1, len(before) - (before.rfind("\n") + 1) + 1
-    column = re.search(r"\bcolumn (\d+)", message)
-    if column:
-        return line, int(column.group(1))
-    lines = text.split("\n")
-    tag = re.search(r"<([A-Za-z_][\w.\-]*)", message)
-    if tag and 0 < line <= len(lines):
-        found = re.search(r"<\s*" + re.escape(tag.group(1)) + r"\b", lines[line - 1])
-        if found:
-            return line, found.start() + 1
-    return line, 1
+    column = re.search(r"\bcolumn (\d+)", getattr(error, "message", str(error)))
+    return line, int(column.group(1)) if column else 1
 
 
-def described_error(error: Exception, text: str) -> str:
+def described_error(error: Exception) -> str:
     """The message for the dialog: the engine's own line, with the column added when it lacks one."""
     message = str(error)
-    if message.startswith(SYNTHESIS_NAME + ":"):
-        message = TEXT_NAME + message[len(SYNTHESIS_NAME):]
-    where = error_location(error, text)
+    where = error_location(error)
     if where is not None and not re.search(r"\bcolumn \d+", message):
         message += f" (line {where[0]}, column {where[1]})"
     return message
