@@ -37,6 +37,7 @@ from engine.painting import heat_colors
 
 from .colors import base_vertex_colors
 from .document import ModelDocument
+from .local_normals import LocalNormals
 from .view_state import ViewState
 
 # Direction from the model towards the camera for each preset view. The
@@ -72,6 +73,7 @@ class _PartView:
     actor: object
     locator: vtkStaticCellLocator | None = None    # for picking; rebuilt when the points have moved
     locator_points_time: int = -1
+    local_normals: LocalNormals | None = None      # for moving a few points (live preview), built on first use
 
     @classmethod
     def shading(cls, mesh: pv.PolyData) -> vtkPolyDataNormals:
@@ -92,6 +94,15 @@ class _PartView:
         self.normals.GetInputDataObject(0, 0).Modified()
         self.normals.Update()
         self.mesh.GetPointData().SetNormals(self.normals.GetOutput().GetPointData().GetNormals())
+
+    def update_normals_near(self, moved: np.ndarray) -> None:
+        """Recompute only the normals that moving the mesh points ``moved`` changes (a live-preview dab)."""
+        if self.local_normals is None:
+            self.local_normals = LocalNormals(self.mesh.faces, self.mesh.n_points)
+        array = self.mesh.GetPointData().GetNormals()
+        normals = pv.convert_array(array)
+        self.local_normals.update(np.asarray(self.mesh.points, dtype=float), normals, moved)
+        array.Modified()
 
     def current_locator(self) -> vtkStaticCellLocator:
         """A cell locator over the mesh as drawn now: a pick at 94k vertices takes 0.5 ms instead of 30."""
@@ -310,7 +321,7 @@ class Viewport(QWidget):
             array = pv.convert_array(points.GetData())
             array[local] = positions[rows]
             points.Modified()
-            view.update_normals()
+            view.update_normals_near(local)
         self._schedule_render()
 
     def set_fast_rendering(self, on: bool) -> None:

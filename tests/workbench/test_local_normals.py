@@ -1,0 +1,49 @@
+"""Live-preview shading: normals recomputed around moved vertices equal vtkPolyDataNormals over the whole mesh."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import pyvista as pv
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+
+import engine
+from workbench.local_normals import LocalNormals
+
+
+def whole_mesh_normals(points, cells) -> np.ndarray:
+    normals = vtkPolyDataNormals()
+    normals.SetInputData(pv.PolyData(np.array(points), cells))
+    normals.SplittingOff()
+    normals.ConsistencyOff()
+    normals.ComputeCellNormalsOff()
+    normals.Update()
+    return pv.wrap(normals.GetOutput()).point_data["Normals"].astype(float)
+
+
+@pytest.fixture(scope="module")
+def head():
+    return engine.load_model()            # triangles and quads
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_moving_a_patch_gives_the_whole_mesh_normals(head, seed):
+    rng = np.random.default_rng(seed)
+    local = LocalNormals(head.faces, head.n_vertices)
+    normals = whole_mesh_normals(head.vertices, head.faces)
+    before = normals.copy()
+    centre = head.vertices[rng.integers(head.n_vertices)]
+    moved = np.flatnonzero(np.linalg.norm(head.vertices - centre, axis=1) < 12.0)     # a brush-sized patch
+    points = head.vertices.copy()
+    points[moved] += rng.normal(scale=0.3, size=3)                                     # what a dab does
+    rewritten = local.update(points, normals, moved)
+    assert np.allclose(normals, whole_mesh_normals(points, head.faces), atol=1e-6)
+    untouched = np.setdiff1d(np.arange(head.n_vertices), rewritten)
+    assert np.array_equal(normals[untouched], before[untouched])
+    assert set(moved) <= set(rewritten)
+
+
+def test_every_point_moved_is_the_whole_mesh_computation(head):
+    normals = np.zeros((head.n_vertices, 3))
+    LocalNormals(head.faces, head.n_vertices).update(head.vertices, normals, np.arange(head.n_vertices))
+    assert np.allclose(normals, whole_mesh_normals(head.vertices, head.faces), atol=1e-6)
