@@ -16,7 +16,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolBar, QWidget
 import engine
 
 from . import actions as workbench_actions
-from . import features, settings
+from . import features, garbage_collection, settings
 from .document import ModelDocument
 from .file_controller import TITLE, FileController
 from .icons import APP_ICON, icon
@@ -43,6 +43,7 @@ class MainWindow(QMainWindow):
     def __init__(self, document: ModelDocument, parent: QWidget | None = None, *,
                  autosave_seconds: float | None = None):
         super().__init__(parent)
+        garbage_collection.collect_on_gui_thread()   # worker threads must never finalise Qt objects
         self.document = document
         self.view_state = ViewState(self)
         self.playhead = Playhead(self)

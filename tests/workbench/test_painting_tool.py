@@ -18,14 +18,6 @@ from engine.painting import Brush, DenseRegion, Stroke, compute_dab, compute_gra
 from workbench_model_state import model_state
 
 
-@pytest.fixture(autouse=True)
-def _painting_only(monkeypatch):
-    """Install only this tool: other tools are tested on their own (and may be mid-edit in a shared tree)."""
-    from workbench import features
-
-    monkeypatch.setattr(features, "INSTALLERS", ["painting:install"])
-
-
 def dense(window, name):
     return DenseRegion.from_model(window.document.model, name).weights
 

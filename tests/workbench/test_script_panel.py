@@ -23,14 +23,6 @@ pytestmark = [
 ]
 
 
-@pytest.fixture(autouse=True)
-def _only_the_tools_this_panel_needs(monkeypatch):
-    """The player (timeline dock) and the script panel: other tools' work in progress cannot break these tests."""
-    from workbench import features
-
-    monkeypatch.setattr(features, "INSTALLERS", ["timeline_dock:install", "script_panel:install"])
-
-
 @pytest.fixture
 def head_window(make_window):
     return make_window(DEFAULT_HEAD)

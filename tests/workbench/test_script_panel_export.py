@@ -34,13 +34,6 @@ def spoken(tmp_path_factory):
     return run_say(SayRequest(SENTENCE, engine.load_model(), prosody_seed=3), tmp_path_factory.mktemp("said"))
 
 
-@pytest.fixture(autouse=True)
-def _only_the_tools_this_panel_needs(monkeypatch):
-    from workbench import features
-
-    monkeypatch.setattr(features, "INSTALLERS", ["timeline_dock:install", "script_panel:install"])
-
-
 @pytest.fixture
 def said_window(make_window, spoken):
     window = make_window(DEFAULT_HEAD)
