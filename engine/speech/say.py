@@ -42,11 +42,21 @@ class Speech:
 
     @property
     def duration_ms(self) -> float:
+        """Length of the audio, ms."""
         return float(self.utterance.duration_ms)
 
+    @property
+    def end_ms(self) -> float:
+        """Where the performance ends: the audio's end, or the last key of any command when that is later
+        (an expression still fading out after the last word). Keys less than a millisecond past the
+        audio (Festival's phone labels end up to a sample after its waveform) do not count."""
+        last_key = float(self.timeline.end)
+        return last_key if last_key > self.duration_ms + 1.0 else self.duration_ms
+
     def frame_times(self, fps: float) -> np.ndarray:
-        """Frame n at n·1000/fps ms, covering the audio (the last frame starts before the audio ends)."""
-        count = max(1, int(math.ceil(self.duration_ms * fps / 1000.0 - 1e-9)))
+        """Frame n at n·1000/fps ms, covering the audio and every command (the last frame starts before
+        :attr:`end_ms`). A video pads the audio with silence to its length."""
+        count = max(1, int(math.ceil(self.end_ms * fps / 1000.0 - 1e-9)))
         return np.arange(count) * (1000.0 / fps)
 
 

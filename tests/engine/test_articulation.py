@@ -236,3 +236,30 @@ def test_prosody_is_seeded_and_uses_library_commands():
 
 def test_syllables():
     assert [syllables(w) for w in ("ja", "hyvää", "päivää", "kuuluu", "vaaleanpunainen")] == [1, 2, 2, 2, 5]
+
+
+def test_frames_cover_a_command_that_outlasts_the_audio():
+    """An expression after the last word fades out after the audio: the frames (video, tracks,
+    landmarks) cover it; a command ending within the audio leaves the length to the audio."""
+    from engine import load_model
+    from engine.speech.say import speak
+    from engine.speech.synthesis import Segment, Utterance
+
+    class Recorded:
+        """Festival's interface with fixed timings: "moi" in 400 ms of silence-padded audio."""
+
+        def synthesize(self, text, voice=None):
+            phones = [Segment("#", 0.0, 100.0, ""), Segment("m", 100.0, 180.0, "moi"),
+                      Segment("o", 180.0, 300.0, "moi"), Segment("i", 300.0, 400.0, "moi")]
+            return Utterance(text, "recorded", np.zeros(8820, dtype=np.float32), 22050, phones,
+                             [Segment("moi", 100.0, 400.0, "moi")])
+
+    model = load_model()
+    inside = speak("moi <Blink at=\"0\"/>", model, synthesizer=Recorded())
+    assert inside.end_ms == inside.duration_ms == 400.0
+    assert len(inside.frame_times(25)) == 10
+    after = speak("moi <Happy/>", model, synthesizer=Recorded())
+    assert after.timeline.end > after.duration_ms + 100
+    assert after.end_ms == after.timeline.end
+    times = after.frame_times(25)
+    assert times[-1] < after.end_ms <= times[-1] + 40.0

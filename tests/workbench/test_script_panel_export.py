@@ -72,7 +72,8 @@ def test_export_writes_a_playable_video_with_audio_and_the_tables(said_window, s
     assert names == ["hello-landmarks.csv", "hello-tracks.csv", "hello.mp4", "hello.wav"]
     assert "hello.mp4" in window.statusBar().currentMessage()
 
-    seconds = spoken.duration
+    seconds = spoken.speech.end_ms / 1000.0         # the audio, or the last command if that ends later
+    assert seconds >= spoken.duration
     frames = int(np.ceil(seconds * 15 - 1e-9))
     info = probe(tmp_path / "hello.mp4")
     assert (info.width, info.height, info.fps) == (160, 120, 15)
@@ -86,7 +87,7 @@ def test_export_writes_a_playable_video_with_audio_and_the_tables(said_window, s
     assert np.abs(pictures[0] - pictures[1]).mean() > 0.5
 
     samples, rate = read_wav(tmp_path / "hello.wav")
-    assert len(samples) / rate == pytest.approx(seconds, abs=1e-3)
+    assert len(samples) / rate == pytest.approx(spoken.duration, abs=1e-3)     # the WAV is the speech alone
     np.testing.assert_allclose(samples, spoken.speech.utterance.samples, atol=1 / 32767)
 
     with open(tmp_path / "hello-tracks.csv", newline="") as f:
