@@ -4,7 +4,9 @@ Each part of the model is one actor drawing its own :class:`pyvista.PolyData`,
 which holds the points, the polygons, the vertex colours and the vertex
 normals (smooth shading). The actors are built once per model; a pose change
 writes the new vertex positions into those meshes and recomputes the normals
-with a ``vtkPolyDataNormals`` filter that reads only points and polygons. A
+with a ``vtkPolyDataNormals`` filter that reads only points and polygons
+(a live-preview dab, which moves a few points, recomputes only the normals
+around them: :mod:`workbench.local_normals`). A
 colour change therefore touches the colours alone: VTK re-uploads one array
 and recomputes nothing, so a brush dab costs no more to draw than an
 unchanged view (``benchmarks/bench_paint_gui.py``).

@@ -44,16 +44,9 @@ def test_tool_colours_override_and_update_in_part(window):
 
 def _fresh_normals(mesh) -> np.ndarray:
     """Vertex normals computed from scratch from what the mesh holds now."""
-    import pyvista as pv
-    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+    from test_local_normals import whole_mesh_normals
 
-    check = vtkPolyDataNormals()
-    check.SetInputData(pv.PolyData(mesh.points.copy(), mesh.faces.copy()))
-    check.SplittingOff()
-    check.ConsistencyOff()
-    check.ComputeCellNormalsOff()
-    check.Update()
-    return pv.wrap(check.GetOutput()).point_data["Normals"]
+    return whole_mesh_normals(mesh.points.copy(), mesh.faces.copy())
 
 
 def test_shading_follows_the_pose_and_a_colour_change_recomputes_nothing(window):
