@@ -1,10 +1,10 @@
 """Build the compiled kernels; all other metadata lives in pyproject.toml.
 
-``pip install -e .`` (``./bootstrap`` does it) compiles ``engine/_deform_kernel.c``
-into the extension module ``engine._deform_kernel`` (the deformation) and
-``engine/_text_table.c`` into ``engine._text_table`` (reading large number
-tables: motion-capture exports) and ``engine/_rigid_fit.c`` into
-``engine._rigid_fit`` (Kabsch rotations of every frame: head-motion removal). They need a C compiler and the Python headers
+``pip install -e .`` (``./bootstrap`` does it) compiles ``engine/deform/_kernel.c``
+into the extension module ``engine.deform._kernel`` (the deformation) and
+``engine/mocap/_text_table.c`` into ``engine.mocap._text_table`` (reading large number
+tables: motion-capture exports) and ``engine/mocap/_rigid_fit.c`` into
+``engine.mocap._rigid_fit`` (Kabsch rotations of every frame: head-motion removal). They need a C compiler and the Python headers
 (Debian: ``build-essential python3-dev``, in ``bootstrap``'s package list).
 When compiling fails the install still succeeds (``optional=True``) and the
 engine uses its numpy paths; ``test_deform_kernel.py::test_kernel_is_built_and_current``
@@ -16,9 +16,9 @@ from pathlib import Path
 
 from setuptools import Extension, setup
 
-SOURCE = "engine/_deform_kernel.c"
-TABLE_SOURCE = "engine/_text_table.c"
-RIGID_SOURCE = "engine/_rigid_fit.c"
+SOURCE = "engine/deform/_kernel.c"
+TABLE_SOURCE = "engine/mocap/_text_table.c"
+RIGID_SOURCE = "engine/mocap/_rigid_fit.c"
 
 
 def digest(source: str) -> str:
@@ -28,7 +28,7 @@ def digest(source: str) -> str:
 setup(
     ext_modules=[
         Extension(
-            "engine._deform_kernel",
+            "engine.deform._kernel",
             sources=[SOURCE],
             # -O3 but no -march=native: the build runs on any CPU of its architecture.
             # -ffp-contract=off: no fused multiply-adds (the default on aarch64), so a vertex
@@ -40,14 +40,14 @@ setup(
             optional=True,
         ),
         Extension(
-            "engine._text_table",
+            "engine.mocap._text_table",
             sources=[TABLE_SOURCE],
             extra_compile_args=["-O3"],
             define_macros=[("SOURCE_SHA256", f'"{digest(TABLE_SOURCE)}"')],
             optional=True,
         ),
         Extension(
-            "engine._rigid_fit",
+            "engine.mocap._rigid_fit",
             sources=[RIGID_SOURCE],
             extra_compile_args=["-O2"],
             define_macros=[("SOURCE_SHA256", f'"{digest(RIGID_SOURCE)}"')],

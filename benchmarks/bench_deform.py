@@ -6,14 +6,14 @@ Run from the project root::
     .venv/bin/python benchmarks/bench_deform.py [--frames 200] [--json out.json]
 
 Meshes: the default head and its 4 × 4 linear subdivision (~94k vertices;
-``engine.subdivide``) as produced and after ``engine.deform.
+``engine.model.subdivide``) as produced and after ``engine.deform.deformer.
 optimise_vertex_order`` (a one-off renumbering that makes the deformer's
 internal order the model's own, so no frame pays for reordering; the
 shipped head is saved in that order). Every parameter is set to a random
 value inside its range each frame (the worst case: all parameters active).
 
 * **engine** — ``Model.deform``: ``engine.deform.Deformer`` with the compiled
-  vertex pass (``engine/_deform_kernel.c``) when it is built; the row below
+  vertex pass (``engine/deform/_kernel.c``) when it is built; the row below
   it times the numpy fallback (``Deformer(model, kernel=False)``) on the same
   frames.
 * **peer** — dense linear-blend skinning written the way ``smplx.lbs`` does
@@ -46,8 +46,8 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import engine  # noqa: E402
-from engine.deform import Deformer, optimise_vertex_order  # noqa: E402
-from engine.subdivide import subdivide  # noqa: E402
+from engine.deform.deformer import Deformer, optimise_vertex_order  # noqa: E402
+from engine.model.subdivide import subdivide  # noqa: E402
 
 
 def random_frames(model, count, seed=0):
@@ -121,7 +121,7 @@ def main(argv=None):
               (f"subdivided ×{args.subdivision}²", fine),
               (f"  same, order optimised", optimise_vertex_order(fine)[0])]
     rows = []
-    path = "compiled kernel" if engine.deform.compiled is not None else "numpy (kernel not built)"
+    path = "compiled kernel" if engine.deform.deformer.compiled is not None else "numpy (kernel not built)"
     print(f"engine = Model.deform: {path}; single thread")
     print(f"{'mesh':22s} {'vertices':>9s} {'engine ms':>10s} {'peer ms':>9s} {'floor ms':>9s} "
           f"{'peer/engine':>12s} {'engine/floor':>13s}")

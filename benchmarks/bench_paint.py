@@ -6,7 +6,7 @@ Run from the project root::
     .venv/bin/python benchmarks/bench_paint.py [--dabs 200] [--json out.json]
 
 Meshes: the default head (5 960 vertices) and its 4 × 4 linear subdivision
-(~94k vertices, ``engine.subdivide``). A stroke of ``--dabs`` dabs runs
+(~94k vertices, ``engine.model.subdivide``). A stroke of ``--dabs`` dabs runs
 across the face at nose height, from one cheek to the other, on the front
 surface, painting the jaw's influence region; every dab is
 
@@ -53,7 +53,7 @@ import engine  # noqa: E402
 from engine.painting import Brush, DenseRegion, LivePreview, PaintContext, Stroke, heat_colors  # noqa: E402
 from engine.painting.mirror import mirror_map  # noqa: E402
 from engine.painting.heatmap import WEIGHT_RAMP  # noqa: E402
-from engine.subdivide import subdivide  # noqa: E402
+from engine.model.subdivide import subdivide  # noqa: E402
 
 VIEW = np.array([0.0, 0.0, -1.0])          # looking at the face from the front
 

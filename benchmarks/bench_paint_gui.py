@@ -6,7 +6,7 @@ Run from the project root under a display (Xvfb is enough)::
     xvfb-run -a .venv/bin/python benchmarks/bench_paint_gui.py [--dabs 120] [--json out.json]
 
 Meshes: the default head (``engine.load_model()``, 5 960 vertices) and its
-4 × 4 subdivision (93 689 vertices, ``engine.subdivide``). The workbench
+4 × 4 subdivision (93 689 vertices, ``engine.model.subdivide``). The workbench
 window (1280 × 800) paints ``jaw_open`` with the add brush (strength 0.3,
 smooth falloff, front faces only, surface-connected); a stroke of
 ``--dabs`` dabs crosses the face at mouth height. Per dab it measures
@@ -49,7 +49,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 os.environ.setdefault("XDG_DATA_HOME", tempfile.mkdtemp(prefix="ap-bench-data-"))
 
 import engine  # noqa: E402
-from engine.subdivide import subdivide  # noqa: E402
+from engine.model.subdivide import subdivide  # noqa: E402
 
 
 def stroke_points(model, count):

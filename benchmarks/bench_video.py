@@ -12,13 +12,13 @@ nodding and tilting slowly, brows and eyelids moving, all on sine waves; the
 audio is a 16 kHz tone (Festival's rate), so the MP4 carries AAC as ``say``'s
 does. Stages, each timed on its own and then all together:
 
-* **setup** — :class:`engine.render.FrameRenderer` made (pyvista/VTK import,
+* **setup** — :class:`engine.outputs.render.FrameRenderer` made (pyvista/VTK import,
   OpenGL context, shaders compiled on the first frame);
 * **deform** — ``Deformer.deform`` for every frame;
 * **render** — ``FrameRenderer.render`` for every frame (new points and
   normals, draw, read the picture back);
 * **encode** — the same frames piped into ffmpeg alone (libx264 + AAC, the
-  settings of :mod:`engine.video`), wall clock and ffmpeg's CPU time;
+  settings of :mod:`engine.outputs.video`), wall clock and ffmpeg's CPU time;
 * **write_video** — the real thing, end to end: drawing and encoding
   overlap (ffmpeg runs in its own process), so its time is less than the sum.
 
@@ -45,7 +45,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import engine  # noqa: E402
 from engine import video  # noqa: E402
-from engine.render import FrameRenderer  # noqa: E402
+from engine.outputs.render import FrameRenderer  # noqa: E402
 
 MOTION = {  # parameter: (centre, amplitude as a fraction of the half range, frequency Hz)
     "jaw_open": (None, 1.0, 3.0),

@@ -26,7 +26,7 @@ arguments. Rendering is offscreen (pyvista); no display is needed. All nine
 shipped commands take under two minutes on two cores and about 2.5 MB.
 
 The eye and brow close-ups are crops of a larger picture; where to crop comes
-from the renderer's own camera placement (``engine.render._place_camera``),
+from the renderer's own camera placement (``engine.outputs.render._place_camera``),
 so the box stays on the eyes if the framing there changes.
 """
 
@@ -44,8 +44,8 @@ sys.path.insert(0, str(ROOT))
 
 import engine  # noqa: E402
 from engine.commands import load_library, parse_commands_text, translate  # noqa: E402
-from engine.render import VIEWS, _framed_points, _place_camera, render_model  # noqa: E402
-from engine.timeline import Timeline  # noqa: E402
+from engine.outputs.render import VIEWS, _framed_points, _place_camera, render_model  # noqa: E402
+from engine.timeline.timeline import Timeline  # noqa: E402
 
 # Command → (arguments besides at="0", view, region). A region crops the
 # picture to a part of the face (REGIONS); None shows the whole head.

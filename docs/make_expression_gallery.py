@@ -18,7 +18,7 @@ Writes to ``docs/images/expressions/``:
     sampled on a timeline like any script), front and three-quarter, plus a
     one-sided smile and an even blend of two commands.
 
-The views are crops of offscreen renders (``engine.render``); the camera
+The views are crops of offscreen renders (``engine.outputs.render``); the camera
 frames the rest pose, so every picture of a view is seen from the same place.
 About a minute on two cores.
 """
@@ -34,8 +34,8 @@ sys.path.insert(0, str(ROOT))
 
 import engine  # noqa: E402
 from engine.commands import load_library, parse_commands_text, translate  # noqa: E402
-from engine.render import FrameRenderer  # noqa: E402
-from engine.timeline import Timeline  # noqa: E402
+from engine.outputs.render import FrameRenderer  # noqa: E402
+from engine.timeline.timeline import Timeline  # noqa: E402
 
 OUT = ROOT / "docs" / "images" / "expressions"
 RENDER = (800, 1000)

@@ -17,7 +17,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 import engine  # noqa: E402
-from engine.render import render_model  # noqa: E402
+from engine.outputs.render import render_model  # noqa: E402
 
 POSES = [
     ("neutral", "neutral", {}, "front"),

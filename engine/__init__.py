@@ -11,11 +11,10 @@ commands (§2.3) and speech (§2.1).
 >>> P = head.deform(jaw_open=0.6, head_turn=0.2)  # (N, 3) vertex positions
 """
 
-from .errors import ModelFileError, ParameterError, UserError
-from .model import InfluenceRegion, Model
-from .model_files import load_model, save_model
-from .parameters import Parameter, ParameterTree
-from .paths import default_model_path
+from engine.errors import ModelFileError, ParameterError, UserError
+from engine.formats.model_files import load_model, save_model
+from engine.model import InfluenceRegion, Model, Parameter, ParameterTree
+from engine.paths import default_model_path
 
 __all__ = [
     "InfluenceRegion", "Model", "ModelFileError", "Parameter", "ParameterError", "ParameterTree",

@@ -1,7 +1,7 @@
 """Display colours of a model's parts.
 
 A model with painted per-vertex colours (:attr:`engine.Model.vertex_colors`:
-eyebrows, iris, pupil) is drawn in those, as ``engine.render`` does; this
+eyebrows, iris, pupil) is drawn in those, as ``engine.outputs.render`` does; this
 module is for models without them. A model file may give each part a colour (``<part name="skin"
 color="#e0ac94"/>``, kept in :attr:`engine.Model.part_colors`); parts
 without one get a default chosen from their name, so the default head's

@@ -28,7 +28,7 @@ from pathlib import Path
 import engine
 from engine.commands import load_library
 from engine.errors import LibraryError, UserError
-from engine.files import atomic_write_text
+from engine.formats.atomic import atomic_write_text
 from engine.paths import LIBRARY_DIR
 
 README_NAME = "README.txt"

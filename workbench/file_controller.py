@@ -19,7 +19,7 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 import engine
-from engine.mesh_io import import_mesh
+from engine.formats.mesh_io import import_mesh
 from engine.paths import DATA_DIR
 
 from . import settings

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from engine.cells import cell_sizes, cell_starts
+from engine.model.cells import cell_sizes, cell_starts
 
 
 class LocalNormals:

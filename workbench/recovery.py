@@ -30,7 +30,7 @@ from pathlib import Path
 from PySide6.QtCore import QLockFile, QObject, QStandardPaths, QTimer, Signal
 
 import engine
-from engine.files import atomic_write_text
+from engine.formats.atomic import atomic_write_text
 
 from .document import ModelDocument
 

@@ -24,7 +24,7 @@ import numpy as np
 from PySide6.QtCore import QTimer
 from PySide6.QtWidgets import QMessageBox
 
-from engine.files import atomic_write_text
+from engine.formats.atomic import atomic_write_text
 
 from .undo_commands import WeightsChangedCommand
 

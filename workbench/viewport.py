@@ -33,7 +33,7 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkStaticCellLocator
 from vtkmodules.vtkRenderingCore import vtkCellPicker
 
 import engine
-from engine.cells import cell_sizes, cell_starts
+from engine.model.cells import cell_sizes, cell_starts
 
 from engine.painting import heat_colors
 
@@ -472,7 +472,7 @@ class Viewport(QWidget):
         self._local_of = None
         points = self._document.vertices()
         self._overlay = None
-        # Painted colours (eyebrows, iris, pupil) win over the part colour, as in engine.render.
+        # Painted colours (eyebrows, iris, pupil) win over the part colour, as in engine.outputs.render.
         self._base_colors = base_vertex_colors(model)
         colors = self._current_colors()
         for part, (indices, cells) in _split_by_part(model).items():

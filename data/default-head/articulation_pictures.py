@@ -29,7 +29,7 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(HERE))
 
 import engine  # noqa: E402
-from engine.render import FrameRenderer  # noqa: E402
+from engine.outputs.render import FrameRenderer  # noqa: E402
 
 SINGLE = [
     ("rest", {}),

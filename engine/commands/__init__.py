@@ -5,17 +5,17 @@
 >>> activations = translate(read_commands("script.xml"), load_library(), load_model())   # doctest: +SKIP
 >>> print(low_level_xml(activations))                                                    # doctest: +SKIP
 
-The timeline that samples the result lives in :mod:`engine.timeline`.
+The timeline that samples the result lives in :mod:`engine.timeline.timeline`.
 See ``docs/commands.md`` for the formats and rules.
 """
 
-from .command_files import (Activation, HighLevelCommand, low_level_xml, parse_commands_text, read_commands,
+from engine.commands.command_files import (Activation, HighLevelCommand, low_level_xml, parse_commands_text, read_commands,
                             write_low_level)
-from .interpolation import INTERPOLATIONS, interpolate
-from .library import Library, load_library
-from .library_format import CommandDefinition, Curve, load_library_file, parse_library_text
-from .procedures import PROCEDURES, register_procedure
-from .translator import translate
+from engine.commands.interpolation import INTERPOLATIONS, interpolate
+from engine.commands.library import Library, load_library
+from engine.commands.library_format import CommandDefinition, Curve, load_library_file, parse_library_text
+from engine.commands.procedures import PROCEDURES, register_procedure
+from engine.commands.translator import translate
 
 __all__ = [
     "Activation", "CommandDefinition", "Curve", "HighLevelCommand", "INTERPOLATIONS", "Library", "PROCEDURES",

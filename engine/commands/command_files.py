@@ -22,7 +22,7 @@ ordered time/value keys, interpolation) is carried as::
       </activate>
     </low-level-commands>
 
-Both are validated against ``engine/schemas/commands.xsd``; parsing is safe
+Both are validated against ``engine/formats/schemas/commands.xsd``; parsing is safe
 against hostile XML, and every error names the file and line.
 
 >>> from engine.commands.command_files import parse_commands_text
@@ -39,9 +39,9 @@ from pathlib import Path
 import numpy as np
 from lxml import etree
 
-from ..errors import CommandError
-from ..files import atomic_write_text
-from ..xml_io import parse_xml, parse_xml_text, validate
+from engine.errors import CommandError
+from engine.formats.atomic import atomic_write_text
+from engine.formats.xml_io import parse_xml, parse_xml_text, validate
 
 SCHEMA_NAME = "commands.xsd"
 LOW_LEVEL_ROOT = "low-level-commands"

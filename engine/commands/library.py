@@ -27,9 +27,9 @@ import re
 from pathlib import Path
 from typing import Iterable
 
-from ..errors import LibraryError
-from ..paths import LIBRARY_DIR
-from .library_format import AMPLITUDE, CommandDefinition, load_library_file
+from engine.errors import LibraryError
+from engine.paths import LIBRARY_DIR
+from engine.commands.library_format import AMPLITUDE, CommandDefinition, load_library_file
 
 LIBRARY_SUFFIX = ".lib"
 

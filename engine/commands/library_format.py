@@ -36,8 +36,8 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..errors import LibraryError
-from .interpolation import INTERPOLATIONS
+from engine.errors import LibraryError
+from engine.commands.interpolation import INTERPOLATIONS
 
 AMPLITUDE = "amplitude"
 """The paper's name for a command's percentage scale, and for its single line."""
@@ -138,7 +138,7 @@ def parse_library_text(text: str, file: str = "<library>") -> list[CommandDefini
 
     Raises :class:`~engine.errors.LibraryError` with file and line for anything wrong.
     """
-    from .procedures import check_definition
+    from engine.commands.procedures import check_definition
 
     definitions = []
     for block in _blocks(_statements(text, file), file):

@@ -10,8 +10,8 @@ formats, the mapping file and the session file.
 >>> session = import_marker_file("take1.tsv", max_gap_ms=100)     # doctest: +SKIP
 """
 
-from .errors import LabelFileError, MarkerFileError, MocapError, SessionFileError
-from .session import Session, load_session, save_session
+from engine.mocap.errors import LabelFileError, MarkerFileError, MocapError, SessionFileError
+from engine.mocap.session import Session, load_session, save_session
 
 __all__ = ["Session", "load_session", "save_session", "MocapError", "MarkerFileError", "SessionFileError",
            "LabelFileError"]

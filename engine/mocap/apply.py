@@ -59,10 +59,10 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..errors import ParameterError, UserError
-from ..parameters import NAME_PATTERN, Parameter
-from .errors import MocapError
-from .pca import Articulation, describe_component
+from engine.errors import ParameterError, UserError
+from engine.model.parameters import NAME_PATTERN, Parameter
+from engine.mocap.errors import MocapError
+from engine.mocap.pca import Articulation, describe_component
 
 if TYPE_CHECKING:
     from scipy import sparse
@@ -222,7 +222,7 @@ def apply_articulation(model, art: Articulation, *, names=None, prefix: str | No
     parent_name = _parent(model, used, vertices) if parent == "auto" else parent
     if parent_name is not None:
         model.parameters[parent_name]            # an unknown name raises with a suggestion
-    from ..model import InfluenceRegion
+    from engine.model.model import InfluenceRegion
 
     added = []
     try:
@@ -290,7 +290,7 @@ def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation,
     own reference frame: pass ``register=True`` to first move it rigidly into
     the analysed recording's coordinates (:func:`register_recording`).
     """
-    from .synthetic import model_at_landmarks
+    from engine.mocap.synthetic import model_at_landmarks
 
     markers = [str(m) for m in markers]
     absent = [m for m in applied.markers if m not in markers]

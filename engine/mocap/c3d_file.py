@@ -16,8 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import MarkerFileError
-from .readers import Recording, unit_scale, zero_triplets_to_nan
+from engine.mocap.errors import MarkerFileError
+from engine.mocap.readers import Recording, unit_scale, zero_triplets_to_nan
 
 
 

@@ -6,7 +6,7 @@ them as one line, ``error: <file>:<line>: <what>``, and exits with status 2.
 
 from __future__ import annotations
 
-from ..errors import UserError
+from engine.errors import UserError
 
 
 class MocapError(UserError):

@@ -3,13 +3,13 @@
 Every frame is moved by the rotation and translation (no scaling) that best
 maps its reference markers onto the same markers in a reference frame, in
 the least-squares sense (Kabsch's SVD solution, with the reflection
-excluded). Transforms follow :mod:`engine.transforms`: 4×4 matrices for row
+excluded). Transforms follow :mod:`engine.deform.transforms`: 4×4 matrices for row
 vectors, ``[p, 1] · A = [p', 1]``. A frame uses whichever reference markers
 it has (at least three, not on one line); a frame with fewer gets a NaN
 alignment and all its markers count as missing.
 
 >>> import numpy as np
->>> from engine.transforms import rotation_about_axis, translation, apply
+>>> from engine.deform.transforms import rotation_about_axis, translation, apply
 >>> ref = np.array([[0., 0, 0], [50, 0, 0], [0, 60, 0], [0, 0, 40]])
 >>> T = rotation_about_axis([1, 2, 3], [10, 0, 0], 25) @ translation([5, -3, 8])
 >>> A = kabsch(apply(T, ref)[None], ref, np.ones((1, 4), bool))[0]
@@ -21,10 +21,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import MocapError
+from engine.mocap.errors import MocapError
 
-try:  # the compiled batched Kabsch (engine/_rigid_fit.c); numpy's batched SVD otherwise
-    from .. import _rigid_fit
+try:  # the compiled batched Kabsch (engine/mocap/_rigid_fit.c); numpy's batched SVD otherwise
+    from engine.mocap import _rigid_fit
 except ImportError:  # pragma: no cover - exercised where the extension is not built
     _rigid_fit = None
 
@@ -73,7 +73,7 @@ def kabsch(points: np.ndarray, target: np.ndarray, present: np.ndarray) -> np.nd
 def _rotations(H: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Kabsch rotations R = U diag(1, 1, d) Vᵀ (d = sign det UVᵀ) and singular values of (F, 3, 3) H.
 
-    The compiled ``engine._rigid_fit`` (one-sided Jacobi SVD) when it is built,
+    The compiled ``engine.mocap._rigid_fit`` (one-sided Jacobi SVD) when it is built,
     numpy's batched SVD otherwise; both agree to rounding.
     """
     if _rigid_fit is not None:

@@ -17,13 +17,13 @@ from pathlib import Path
 
 import numpy as np
 
-from ..landmarks import landmark_sort_key
-from .errors import MocapError
-from .gaps import fill_gaps, max_gap_frames
-from .head_motion import MIN_REFERENCE, remove_head_motion
-from .naming import default_reference, marker_names, read_mapping
-from .readers import FORMAT_NAMES, Recording, read_marker_file
-from .session import Session
+from engine.model.landmarks import landmark_sort_key
+from engine.mocap.errors import MocapError
+from engine.mocap.gaps import fill_gaps, max_gap_frames
+from engine.mocap.head_motion import MIN_REFERENCE, remove_head_motion
+from engine.mocap.naming import default_reference, marker_names, read_mapping
+from engine.mocap.readers import FORMAT_NAMES, Recording, read_marker_file
+from engine.mocap.session import Session
 
 DEFAULT_MAX_GAP_MS = 100.0
 
@@ -49,11 +49,11 @@ def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str |
     if labels is not None and text is not None:
         raise MocapError("give phone labels either from a file or from the spoken text, not both")
     if labels is not None:
-        from .labels import read_labels
+        from engine.mocap.labels import read_labels
 
         phones, phone_source = read_labels(labels, tier=tier), Path(labels).name
     elif text is not None:
-        from .labels import festival_phones
+        from engine.mocap.labels import festival_phones
 
         duration = recording.n_frames * 1000.0 / recording.rate_hz if stretch_text else None
         phones = festival_phones(text, voice=voice, duration_ms=duration, synthesizer=synthesizer)

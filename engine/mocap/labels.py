@@ -26,7 +26,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from .errors import LabelFileError
+from engine.mocap.errors import LabelFileError
 
 PHONE_TIER_NAMES = ("phones", "phone", "phonemes", "segments", "segment")
 _UNITS = re.compile(r"#\s*units?\s*[:=]?\s*(ms|s)\s*$", re.IGNORECASE)
@@ -191,7 +191,7 @@ def festival_phones(text: str, voice: str | None = None, duration_ms: float | No
     ``synthesizer`` defaults to :class:`engine.speech.festival.FestivalSynthesizer`.
     """
     if synthesizer is None:
-        from ..speech.festival import FestivalSynthesizer
+        from engine.speech.festival import FestivalSynthesizer
 
         synthesizer = FestivalSynthesizer()
     phones = synthesizer.synthesize(text, voice=voice).phones

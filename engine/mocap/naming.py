@@ -3,7 +3,7 @@
 The paper's 32 markers were "a subset of MPEG4 points and some additional
 locations to capture head motion"; "some of them (9.x, 20.x) are used as
 reference points". Sessions name markers by feature point id (``2.1``,
-``8.1``…``8.8``, ``9.3`` …, see :data:`engine.landmarks.FEATURE_POINTS`) and
+``8.1``…``8.8``, ``9.3`` …, see :data:`engine.model.landmarks.FEATURE_POINTS`) and
 the head-fixed points by the ids in :data:`REFERENCE_POINTS`.
 
 A label becomes an id by, in order:
@@ -28,8 +28,8 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from ..landmarks import landmark_sort_key
-from .errors import LabelFileError, MocapError
+from engine.model.landmarks import landmark_sort_key
+from engine.mocap.errors import LabelFileError, MocapError
 
 DROP = "-"
 

@@ -45,10 +45,10 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from ..raster import draw_box, draw_dot, draw_line, draw_text
-from ..files import atomic_path
-from .errors import MocapError
-from .hdf5_files import open_versioned, text_attribute
+from engine.outputs.raster import draw_box, draw_dot, draw_line, draw_text
+from engine.formats.atomic import atomic_path
+from engine.mocap.errors import MocapError
+from engine.mocap.hdf5_files import open_versioned, text_attribute
 
 ARTICULATION_FORMAT = "artificial-person-articulation"
 ARTICULATION_VERSION = 1
@@ -714,7 +714,7 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
     much (``X5``). Returns the (H, W, 3) uint8
     image and, with ``path``, writes it as PNG.
     """
-    from ..render import write_png
+    from engine.outputs.render import write_png
 
     views = (("FRONT", 0, 1), ("SIDE", 2, 1))
     # Small components are drawn magnified (×2, ×5, ×10 …, shown in the row's title) so that

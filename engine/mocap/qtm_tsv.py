@@ -25,8 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import MarkerFileError
-from .readers import Recording, parse_number, parse_rows, read_text_lines, zero_triplets_to_nan
+from engine.mocap.errors import MarkerFileError
+from engine.mocap.readers import Recording, parse_number, parse_rows, read_text_lines, zero_triplets_to_nan
 
 REQUIRED_KEYS = ("NO_OF_FRAMES", "NO_OF_MARKERS", "FREQUENCY", "MARKER_NAMES")
 

@@ -21,10 +21,10 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import MarkerFileError
+from engine.mocap.errors import MarkerFileError
 
-try:  # the compiled table reader (engine/_text_table.c); numpy's loadtxt otherwise
-    from .. import _text_table
+try:  # the compiled table reader (engine/mocap/_text_table.c); numpy's loadtxt otherwise
+    from engine.mocap import _text_table
 except ImportError:  # pragma: no cover - exercised where the extension is not built
     _text_table = None
 
@@ -94,16 +94,16 @@ def read_marker_file(path: str | Path, format: str = "auto", csv_layout=None) ->
         raise MarkerFileError("is a folder, not a marker file", file=path)
     fmt = detect_format(path) if format == "auto" else format
     if fmt == "tsv":
-        from .qtm_tsv import read_qtm_tsv
+        from engine.mocap.qtm_tsv import read_qtm_tsv
         return read_qtm_tsv(path)
     if fmt == "trc":
-        from .trc import read_trc
+        from engine.mocap.trc import read_trc
         return read_trc(path)
     if fmt == "c3d":
-        from .c3d_file import read_c3d
+        from engine.mocap.c3d_file import read_c3d
         return read_c3d(path)
     if fmt == "csv":
-        from .csv_table import read_csv
+        from engine.mocap.csv_table import read_csv
         return read_csv(path, csv_layout)
     raise MarkerFileError(f"unknown format '{fmt}' (use auto, {', '.join(FORMATS)})", file=path)
 
@@ -175,7 +175,7 @@ def parse_rows(lines: list[str], first_line: int, n_columns: int, path: Path, de
 def _parse_fast(lines, n_columns, delimiter, empty_is_missing):
     """A C parser for the common case of a well-formed table; None when anything is unusual.
 
-    The compiled ``engine._text_table`` when it is built (one pass, the same
+    The compiled ``engine.mocap._text_table`` when it is built (one pass, the same
     doubles as ``float``), else numpy's ``loadtxt``.
     """
     if _text_table is not None and len(delimiter or " ") == 1:

@@ -41,9 +41,9 @@ from pathlib import Path
 import h5py
 import numpy as np
 
-from ..files import atomic_path
-from .errors import MocapError, SessionFileError
-from .hdf5_files import open_versioned, text_attribute
+from engine.formats.atomic import atomic_path
+from engine.mocap.errors import MocapError, SessionFileError
+from engine.mocap.hdf5_files import open_versioned, text_attribute
 
 SESSION_FORMAT = "artificial-person-mocap-session"
 SESSION_VERSION = 1

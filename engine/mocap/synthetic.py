@@ -43,7 +43,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import UserError
+from engine.errors import UserError
 
 #: Markers of the lip contour and the jaw: what the paper analysed (§3.1.1, "8.x and 2.1").
 ARTICULATION_MARKERS = ("2.1", "8.1", "8.2", "8.3", "8.4", "8.5", "8.6", "8.7", "8.8")
@@ -152,9 +152,9 @@ def synthesize_recording(text: str | None = None, *, phones=None, model=None, ta
     empty, and :class:`~engine.speech.synthesis.SynthesisError` when Festival
     is needed but missing.
     """
-    from ..model_files import load_model
-    from ..speech.articulation import load_articulation
-    from ..speech.coarticulation import articulation_tracks
+    from engine.formats.model_files import load_model
+    from engine.speech.articulation import load_articulation
+    from engine.speech.coarticulation import articulation_tracks
 
     model = load_model() if model is None else model
     table = load_articulation() if table is None else table
@@ -165,7 +165,7 @@ def synthesize_recording(text: str | None = None, *, phones=None, model=None, ta
     if phones is None:
         text = DEFAULT_TEXT if text is None else text
         if synthesizer is None:
-            from ..speech.festival import FestivalSynthesizer
+            from engine.speech.festival import FestivalSynthesizer
             synthesizer = FestivalSynthesizer()
         phones = synthesizer.synthesize(text, voice).phones
     segments = _segments(phones)
@@ -280,7 +280,7 @@ def model_at_vertices(model, vertices, landmarks=None):
 
     A vertex listed twice appears twice, with the same weights.
     """
-    from ..model import InfluenceRegion, Model
+    from engine.model.model import InfluenceRegion, Model
 
     vertices = np.asarray(vertices, dtype=np.int64).reshape(-1)
     regions = {}
@@ -310,7 +310,7 @@ class _Subtable:
 
 
 def _segments(phones):
-    from ..speech.synthesis import Segment
+    from engine.speech.synthesis import Segment
 
     out = []
     for p in phones:

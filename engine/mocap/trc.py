@@ -19,8 +19,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import MarkerFileError
-from .readers import Recording, nan_partial_samples, parse_number, parse_rows, read_text_lines, unit_scale
+from engine.mocap.errors import MarkerFileError
+from engine.mocap.readers import Recording, nan_partial_samples, parse_number, parse_rows, read_text_lines, unit_scale
 
 REQUIRED_KEYS = ("DataRate", "NumFrames", "NumMarkers", "Units")
 

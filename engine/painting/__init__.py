@@ -38,14 +38,14 @@ A stroke at a Python prompt:
 >>> step.undo(dense.weights); head.set_region("brow_raise", dense.to_region())   # undo, exactly
 """
 
-from .brush import (FALLOFFS, MODES, Brush, brush_footprint, compute_dab, compute_gradient, paintable_mask,
+from engine.painting.brush import (FALLOFFS, MODES, Brush, brush_footprint, compute_dab, compute_gradient, paintable_mask,
                     sample_weight)
-from .changes import Change, Stroke
-from .heatmap import WEIGHT_RAMP, heat_colors
-from .mirror import MirrorMap, mirror_map, mirrored_points, mirrored_vectors
-from .preview import LivePreview
-from .topology import PaintContext, mirrored_part_name
-from .weights import (LEFT_TO_RIGHT, RIGHT_TO_LEFT, DenseRegion, clear_weights, grow_weights, group1_names,
+from engine.painting.changes import Change, Stroke
+from engine.painting.heatmap import WEIGHT_RAMP, heat_colors
+from engine.painting.mirror import MirrorMap, mirror_map, mirrored_points, mirrored_vectors
+from engine.painting.preview import LivePreview
+from engine.painting.topology import PaintContext, mirrored_part_name
+from engine.painting.weights import (LEFT_TO_RIGHT, RIGHT_TO_LEFT, DenseRegion, clear_weights, grow_weights, group1_names,
                       invert_weights, mirror_region, mirror_targets, mirror_weights, normalise_group1,
                       normalise_stack, shrink_weights, smooth_weights)
 

@@ -36,11 +36,11 @@ from typing import Callable, Union
 
 import numpy as np
 
-from ..errors import UserError
-from .changes import Change
-from .mirror import mirrored_points, mirrored_vectors
-from .topology import _point
-from .weights import clip01
+from engine.errors import UserError
+from engine.painting.changes import Change
+from engine.painting.mirror import mirrored_points, mirrored_vectors
+from engine.painting.topology import _point
+from engine.painting.weights import clip01
 
 MODES = ("add", "subtract", "set", "smooth")
 

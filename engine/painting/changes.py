@@ -25,7 +25,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import UserError
+from engine.errors import UserError
 
 
 @dataclass(frozen=True)
@@ -90,7 +90,7 @@ class Stroke:
 
     def dab(self, ctx, brush, point, view_direction=None, **options) -> Change:
         """Compute a brush dab (:func:`~engine.painting.brush.compute_dab`) on the current weights and apply it."""
-        from .brush import compute_dab
+        from engine.painting.brush import compute_dab
         return self.apply(compute_dab(ctx, self.weights, brush, point, view_direction, **options))
 
     def finish(self) -> Change:

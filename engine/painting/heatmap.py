@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..errors import UserError
+from engine.errors import UserError
 
 # Turbo at t = 0, 1/16, …, 1 (sRGB, 0–255; the values of matplotlib's "turbo")
 _TURBO_17 = np.array([

@@ -242,7 +242,7 @@ def _ring_graph(faces, n):
     """Symmetric CSR graph joining every two vertices of a polygon (sorted column indices)."""
     from scipy import sparse
 
-    from ..cells import cell_sizes, cell_starts
+    from engine.model.cells import cell_sizes, cell_starts
 
     sizes = cell_sizes(faces)
     starts = cell_starts(sizes)

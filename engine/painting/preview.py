@@ -29,8 +29,8 @@ from typing import Mapping
 
 import numpy as np
 
-from ..errors import UserError
-from .weights import DenseRegion
+from engine.errors import UserError
+from engine.painting.weights import DenseRegion
 
 
 class LivePreview:

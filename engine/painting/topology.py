@@ -20,8 +20,8 @@ import re
 
 import numpy as np
 
-from ..cells import cell_sizes, cell_starts
-from ..errors import UserError
+from engine.model.cells import cell_sizes, cell_starts
+from engine.errors import UserError
 
 _SIDE_WORDS = [("left", "right"), ("Left", "Right"), ("LEFT", "RIGHT")]
 
@@ -166,7 +166,7 @@ class PaintContext:
     def mirror(self):
         """The X-mirror :class:`~engine.painting.mirror.MirrorMap` (computed on first use, then cached)."""
         if self._mirror is None:
-            from .mirror import mirror_map
+            from engine.painting.mirror import mirror_map
             self._mirror = mirror_map(self, tolerance=self.mirror_tolerance)
         return self._mirror
 

@@ -23,9 +23,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import UserError
-from ..model import InfluenceRegion
-from .mirror import mirrored_vectors
+from engine.errors import UserError
+from engine.model.model import InfluenceRegion
+from engine.painting.mirror import mirrored_vectors
 
 LEFT_TO_RIGHT = "left_to_right"
 RIGHT_TO_LEFT = "right_to_left"

@@ -36,8 +36,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import LibraryError
-from ..paths import LIBRARY_DIR
+from engine.errors import LibraryError
+from engine.paths import LIBRARY_DIR
 
 DEFAULT_TABLE = LIBRARY_DIR / "articulation" / "finnish.phones"
 LONG_MARK = ":"

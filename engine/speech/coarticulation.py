@@ -32,8 +32,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..commands.command_files import Activation
-from ..errors import UserError
+from engine.commands.command_files import Activation
+from engine.errors import UserError
 
 METHODS = ("cohen-massaro", "none")
 STEP_MS = 5.0

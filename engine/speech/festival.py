@@ -38,7 +38,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .synthesis import Segment, SynthesisError, Utterance, decode_wav
+from engine.speech.synthesis import Segment, SynthesisError, Utterance, decode_wav
 
 DEFAULT_VOICE = "suo_fi_lj_diphone"
 """Female Finnish voice (Suopuhe, Debian package ``festvox-suopuhe-lj``)."""

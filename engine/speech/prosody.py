@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import random
 
-from ..commands.command_files import HighLevelCommand
+from engine.commands.command_files import HighLevelCommand
 
 PAUSES = ("#", "##")
 PHRASE_GAP_MS = 120.0

@@ -1,6 +1,6 @@
 """The whole speech pipeline: text with inline commands → audio, phones, one timeline.
 
-    text ─► user command interpreter (engine.script) ─► synthesizer (Festival, §2.1)
+    text ─► user command interpreter (engine.script.inline_commands) ─► synthesizer (Festival, §2.1)
          ─► articulation with coarticulation ─┐
          ─► inline commands, anchored to words ├─► translator (§2.3) ─► timeline ─► video, tables
          ─► visual prosody (optional) ─────────┘
@@ -18,17 +18,17 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from ..commands import load_library, translate
-from ..commands.command_files import Activation, format_number
-from ..errors import CommandError
-from ..files import atomic_write_text
-from ..landmarks import landmark_sort_key
-from ..script import Script, anchored_commands, parse_script
-from ..timeline import Timeline
-from .articulation import ArticulationTable, load_articulation
-from .coarticulation import articulate
-from .festival import prepare_text
-from .prosody import prosody_commands
+from engine.commands import load_library, translate
+from engine.commands.command_files import Activation, format_number
+from engine.errors import CommandError
+from engine.formats.atomic import atomic_write_text
+from engine.model.landmarks import landmark_sort_key
+from engine.script.inline_commands import Script, anchored_commands, parse_script
+from engine.timeline.timeline import Timeline
+from engine.speech.articulation import ArticulationTable, load_articulation
+from engine.speech.coarticulation import articulate
+from engine.speech.festival import prepare_text
+from engine.speech.prosody import prosody_commands
 
 
 @dataclass
@@ -77,7 +77,7 @@ def speak(text: str, model, synthesizer=None, voice: str | None = None, library=
     translate([replace(c.command, arguments={"at": 0.0, **c.command.arguments}) for c in script.commands],
               library, model)
     if synthesizer is None:
-        from .festival import FestivalSynthesizer
+        from engine.speech.festival import FestivalSynthesizer
 
         synthesizer = FestivalSynthesizer()
     utterance = synthesizer.synthesize(script.text, voice)

@@ -40,8 +40,8 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 
-from ..errors import UserError
-from ..files import atomic_write_bytes, atomic_write_text
+from engine.errors import UserError
+from engine.formats.atomic import atomic_write_bytes, atomic_write_text
 
 PHONES_CSV_HEADER = ("start_ms", "end_ms", "phone", "word")
 

@@ -26,9 +26,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from engine.model import InfluenceRegion, Model
-from engine.parameters import Parameter, ParameterTree
-from engine.transforms import rotation_about_axis, translation
+from engine.model.model import InfluenceRegion, Model
+from engine.model.parameters import Parameter, ParameterTree
+from engine.deform.transforms import rotation_about_axis, translation
 
 
 # ---------------------------------------------------------------------------

@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from engine.errors import CommandError, LibraryError, UserError
-from engine.script import anchored_commands, parse_script, word_start_times
+from engine.script.inline_commands import anchored_commands, parse_script, word_start_times
 from engine.speech.articulation import load_articulation, parse_articulation
 from engine.speech.coarticulation import articulate, articulation_tracks, closure_window, key_times
 from engine.speech.prosody import prosody_commands, split_phrases, syllables

@@ -166,7 +166,7 @@ def test_help_exits_zero():
 
 
 def test_importing_the_cli_loads_no_vtk_or_qt():
-    code = ("import sys, engine, engine.cli, engine.mesh_io, engine.render; "
+    code = ("import sys, engine, engine.cli, engine.formats.mesh_io, engine.outputs.render; "
             "print([m for m in sys.modules if m.split('.')[0] in ('vtk', 'vtkmodules', 'pyvista', 'PySide6')])")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert result.stdout.strip() == "[]", result.stdout + result.stderr
@@ -293,7 +293,7 @@ def test_pose_npz_keeps_the_model_vertex_order(model_path, tmp_path):
 
 
 def test_pose_obj_reads_back_with_quads_and_parts(model_path, tmp_path):
-    from engine.mesh_io import import_mesh
+    from engine.formats.mesh_io import import_mesh
 
     out = tmp_path / "pose.obj"
     assert run("pose", "-m", model_path, *_set_args(), "-o", out).returncode == 0
@@ -360,7 +360,7 @@ def test_render_writes_a_png_with_the_face_in_it_and_no_noise(model_path, tmp_pa
 
 @pytest.mark.slow
 def test_render_model_views_in_process(model_path, tmp_path):
-    from engine.render import render_model
+    from engine.outputs.render import render_model
 
     model = load_model(model_path)
     pictures = {view: render_model(model, view=view, size=(120, 150)) for view in ("front", "side", "three-quarter")}

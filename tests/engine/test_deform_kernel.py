@@ -1,4 +1,4 @@
-"""The compiled deformation kernel (``engine/_deform_kernel.c``) and its numpy fallback.
+"""The compiled deformation kernel (``engine/deform/_kernel.c``) and its numpy fallback.
 
 ``test_invariants.py`` runs every invariant through both paths; this file
 checks what is specific to the kernel: that it is built from the current
@@ -19,15 +19,15 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-import engine.deform
-from engine.deform import Deformer, deform_reference, optimise_vertex_order
-from engine.model import InfluenceRegion, Model
+import engine.deform.deformer
+from engine.deform.deformer import Deformer, deform_reference, optimise_vertex_order
+from engine.model.model import InfluenceRegion, Model
 from engine.paths import default_model_path
 from synthetic import leaf_names, random_model, random_values
 
-SOURCE = Path(engine.deform.__file__).with_name("_deform_kernel.c")
+SOURCE = Path(engine.deform.deformer.__file__).with_name("_kernel.c")
 
-needs_kernel = pytest.mark.skipif(engine.deform.compiled is None,
+needs_kernel = pytest.mark.skipif(engine.deform.deformer.compiled is None,
                                   reason="the compiled deformation kernel is not built")
 
 
@@ -35,23 +35,23 @@ def test_kernel_is_built_and_current():
     """``pip install -e .`` (``./bootstrap`` runs it) compiles the kernel; a C compiler and the
     Python headers come from bootstrap's Debian package list. A build from an older source
     (the C file edited since) must be rebuilt, or the tests would check stale code."""
-    assert engine.deform.compiled is not None, (
-        "engine._deform_kernel is not built or its ABI does not match: run .venv/bin/pip install -e . "
+    assert engine.deform.deformer.compiled is not None, (
+        "engine.deform._kernel is not built or its ABI does not match: run .venv/bin/pip install -e . "
         "(needs build-essential and python3-dev)")
     if SOURCE.exists():
         digest = hashlib.sha256(SOURCE.read_bytes()).hexdigest()
-        assert engine.deform.compiled.SOURCE_SHA256 == digest, (
-            "engine._deform_kernel was built from an older _deform_kernel.c: run .venv/bin/pip install -e .")
+        assert engine.deform.deformer.compiled.SOURCE_SHA256 == digest, (
+            "engine.deform._kernel was built from an older _kernel.c: run .venv/bin/pip install -e .")
 
 
 def test_model_deform_uses_the_kernel_when_built():
     model = random_model(0, 30, 5, 3)
-    assert model.deformer().kernel is (engine.deform.compiled is not None)
+    assert model.deformer().kernel is (engine.deform.deformer.compiled is not None)
     assert Deformer(model, kernel=False).kernel is False
 
 
 def test_kernel_required_but_missing_is_an_error(monkeypatch):
-    monkeypatch.setattr(engine.deform, "compiled", None)
+    monkeypatch.setattr(engine.deform.deformer, "compiled", None)
     model = random_model(0, 10, 3, 2)
     with pytest.raises(RuntimeError, match="not built"):
         Deformer(model, kernel=True)
@@ -160,7 +160,7 @@ def test_kernel_runs_in_threads():
 @needs_kernel
 def test_plan_refuses_malformed_structure():
     """A Plan checks every index it will follow, so bad input raises instead of crashing."""
-    Plan = engine.deform.compiled.Plan
+    Plan = engine.deform.deformer.compiled.Plan
     i64 = np.int64
 
     def plan(**change):
@@ -208,4 +208,4 @@ def test_pattern_ranks_number_rows_as_numpy_unique_does(n_rows, n_columns, densi
     rows = np.random.default_rng(seed).random((n_rows, n_columns)) < density
     expected = (np.unique(np.packbits(rows, axis=1), axis=0, return_inverse=True)[1].ravel()
                 if n_rows else np.zeros(0, dtype=np.int64))
-    assert np.array_equal(engine.deform.pattern_ranks(rows), expected)
+    assert np.array_equal(engine.deform.deformer.pattern_ranks(rows), expected)

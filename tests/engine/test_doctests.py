@@ -8,10 +8,10 @@ import importlib
 import pytest
 
 MODULES = [
-    "engine.errors", "engine.xml_io", "engine.commands.interpolation", "engine.commands.library_format",
+    "engine.errors", "engine.formats.xml_io", "engine.commands.interpolation", "engine.commands.library_format",
     "engine.commands.library", "engine.commands.command_files", "engine.commands.translator",
-    "engine.timeline", "engine.script", "engine.speech.articulation", "engine.speech.coarticulation",
-    "engine.speech.prosody", "engine.landmarks",
+    "engine.timeline.timeline", "engine.script.inline_commands", "engine.speech.articulation", "engine.speech.coarticulation",
+    "engine.speech.prosody", "engine.model.landmarks",
 ]
 
 

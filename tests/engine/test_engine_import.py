@@ -35,9 +35,9 @@ def loaded_forbidden_modules(modules: list[str]) -> list[str]:
 
 @pytest.mark.parametrize("modules", [
     ["engine"],
-    ["engine", "engine.model_files", "engine.deform"],
-    ["engine.errors", "engine.transforms", "engine.parameters", "engine.model", "engine.paths",
-     "engine.landmarks"],
+    ["engine", "engine.formats.model_files", "engine.deform.deformer"],
+    ["engine.errors", "engine.deform.transforms", "engine.model.parameters", "engine.model.model", "engine.paths",
+     "engine.model.landmarks"],
 ], ids=["engine", "engine+model_files+deform", "core-modules"])
 def test_importing_the_engine_loads_no_gui_or_rendering(modules):
     assert loaded_forbidden_modules(modules) == []
@@ -45,14 +45,14 @@ def test_importing_the_engine_loads_no_gui_or_rendering(modules):
 
 def test_every_engine_module_imports_without_gui_or_rendering():
     """docs/architecture.md: even the modules that render or read meshes through pyvista
-    (``engine.render``, ``engine.mesh_io``) import it inside their functions."""
+    (``engine.outputs.render``, ``engine.formats.mesh_io``) import it inside their functions."""
     import pkgutil
 
     import engine
 
     modules = sorted(m.name for m in pkgutil.walk_packages(engine.__path__, "engine.")
                      if not m.name.endswith("__main__"))
-    assert "engine.deform" in modules
+    assert "engine.deform.deformer" in modules
     assert loaded_forbidden_modules(modules) == []
 
 
@@ -62,8 +62,8 @@ def test_loading_and_deforming_a_model_loads_no_gui_or_rendering(tmp_path):
 import json, sys
 import numpy as np
 import engine
-from engine.model import InfluenceRegion, Model
-from engine.parameters import Parameter, ParameterTree
+from engine.model.model import InfluenceRegion, Model
+from engine.model.parameters import Parameter, ParameterTree
 tree = ParameterTree([Parameter("jaw_open", "rotation", axis=(1, 0, 0), degrees_per_unit=20)])
 m = Model(np.eye(3), [3, 0, 1, 2], parameters=tree, regions={{"jaw_open": InfluenceRegion([0, 1], [1, 1])}})
 path = engine.save_model(m, {str(tmp_path / "m.xml")!r})

@@ -13,7 +13,7 @@ import pytest
 import engine
 from cli_runner import run
 from engine.commands import load_library, parse_commands_text, translate
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 from test_action_units import eyeball_entry_mm
 from test_articulatory_parameters import Lips, assert_lips_apart
 

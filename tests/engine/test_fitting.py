@@ -1,4 +1,4 @@
-"""Fitting a parameter to an example pose (engine/fitting.py, §2.2.2, issue 6).
+"""Fitting a parameter to an example pose (engine/fitting/__init__.py, §2.2.2, issue 6).
 
 Synthetic poses are made with the engine's own transforms on a small curved
 sheet of quads (a chin-like piece of cylinder, mm), so the true axis, pivot,
@@ -22,7 +22,7 @@ from engine.errors import ParameterError
 from engine.fitting import (FittingError, fit_parameter, fit_pose, mesh_edges, reference_pose,
                             reference_pose_names)
 from engine.paths import PROJECT_ROOT
-from engine.transforms import apply, rotation_about_axis
+from engine.deform.transforms import apply, rotation_about_axis
 
 AXIS = np.array([0.96, 0.1, -0.26]) / np.linalg.norm([0.96, 0.1, -0.26])
 PIVOT = np.array([0.0, 70.0, 0.0])

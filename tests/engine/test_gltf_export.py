@@ -1,4 +1,4 @@
-"""glTF 2.0 export (engine/gltf_export.py, ``export-gltf``): round trip, morph targets, the default head.
+"""glTF 2.0 export (engine/outputs/gltf_export.py, ``export-gltf``): round trip, morph targets, the default head.
 
 A small hand-made model (two parts of quads, a rotation parent with a
 rotation, a uniform and a field translation below it) checks the arrays
@@ -15,14 +15,14 @@ import numpy as np
 import pytest
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, UserError, load_model
-from engine.cells import cells_to_triangles
-from engine.gltf_export import (
+from engine.model.cells import cells_to_triangles
+from engine.outputs.gltf_export import (
     METRES_PER_MM, MODEL_VERTEX, GltfFileError, MorphTarget, _quaternion, _rotation_from_x, export_gltf,
     glb_bytes, gltf_document, parameter_targets, pose_targets, read_gltf, skeleton_parameters, target_value,
 )
-from engine.gltf_read import _quaternion_matrix as _matrix
+from engine.formats.gltf_read import _quaternion_matrix as _matrix
 from engine.paths import default_model_path, reference_poses_path
-from engine.render import _PartLayout
+from engine.outputs.render import _PartLayout
 
 from cli_runner import assert_user_error, run
 

@@ -7,7 +7,7 @@ are in mm; "exactly" means ``np.array_equal``, otherwise the tolerance is
 1e-9 mm on coordinates of about ±100 mm.
 
 Every test runs twice, through each of the engine's two deformation paths: the
-compiled vertex pass (``engine._deform_kernel``; skipped when it is not built,
+compiled vertex pass (``engine.deform._kernel``; skipped when it is not built,
 which ``test_deform_kernel.py`` reports as a failure) and the numpy fallback.
 """
 
@@ -18,13 +18,13 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-import engine.deform
-from engine.deform import deform_reference
+import engine.deform.deformer
+from engine.deform.deformer import deform_reference
 from engine.errors import ParameterError
-from engine.model import InfluenceRegion, Model
-from engine.parameters import Parameter, ParameterTree
+from engine.model.model import InfluenceRegion, Model
+from engine.model.parameters import Parameter, ParameterTree
 from engine.paths import default_model_path
-from engine.transforms import apply
+from engine.deform.transforms import apply
 from synthetic import (add_weight, bind, group1_names, leaf_names, own_transform, pairwise_distances,
                        propagated_transform, random_model, random_values, strip_faces, zero_values)
 
@@ -47,10 +47,10 @@ RIGS = [(seed, *shape) for shape in SHAPES for seed in SEEDS]
 @pytest.fixture(autouse=True, params=["kernel", "numpy"])
 def deform_path(request, monkeypatch):
     """Run the test with the compiled kernel, then with the numpy path (``Deformer(model)``
-    picks the kernel exactly when ``engine.deform.compiled`` is set)."""
+    picks the kernel exactly when ``engine.deform.deformer.compiled`` is set)."""
     if request.param == "numpy":
-        monkeypatch.setattr(engine.deform, "compiled", None)
-    elif engine.deform.compiled is None:
+        monkeypatch.setattr(engine.deform.deformer, "compiled", None)
+    elif engine.deform.deformer.compiled is None:
         pytest.skip("the compiled deformation kernel is not built")
     return request.param
 
@@ -421,7 +421,7 @@ def test_propagation_is_child_first():
 def test_vectorised_deformer_equals_literal_reference(seed, n_vertices, n_parameters, depth, partial,
                                                       contiguous, zero_fraction, scale):
     """The :class:`Deformer` (compiled segments, or numpy blocks, blended band and leaves)
-    gives the literal per-vertex formulation of §2.2 (``engine.deform.deform_reference``) to
+    gives the literal per-vertex formulation of §2.2 (``engine.deform.deformer.deform_reference``) to
     1e-9 mm, for random trees, weights, layouts and values (including values beyond the range)."""
     rng = np.random.default_rng(seed)
     model = random_model(rng, n_vertices, n_parameters, depth, partial=partial, contiguous=contiguous,
@@ -438,7 +438,7 @@ def test_fast_path_runs_indices_and_vertex_orders_agree(seed, monkeypatch):
     (the kernel otherwise writes each vertex to its own row). All layouts give the reference,
     and each other vertex for vertex. (Looks at the numpy ``Deformer.leaves``, whose second
     field is the list of runs or the index array.)"""
-    from engine.deform import Deformer, optimise_vertex_order
+    from engine.deform.deformer import Deformer, optimise_vertex_order
 
     model = rig(seed, 60, 8, 3, False, True)
     assert all(isinstance(leaf[1], list) for leaf in Deformer(model, kernel=False).leaves)

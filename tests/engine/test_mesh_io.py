@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from engine.errors import MeshImportError, UserError
-from engine.mesh_io import import_mesh, write_mesh
+from engine.formats.mesh_io import import_mesh, write_mesh
 
 pv = pytest.importorskip("pyvista")
 
@@ -175,7 +175,7 @@ def _write_points_only(path):
 
 
 def _write_png(path):
-    from engine.render import write_png
+    from engine.outputs.render import write_png
 
     write_png(path, np.zeros((4, 4, 3), dtype=np.uint8))
 

@@ -30,7 +30,7 @@ from engine.mocap.labels import festival_phones, read_labels
 from engine.mocap.naming import default_reference, marker_names, read_mapping
 from engine.mocap.readers import Recording, detect_format, read_marker_file
 from engine.mocap.session import SESSION_FORMAT, load_session, save_session
-from engine.transforms import rotation_about_axis, translation
+from engine.deform.transforms import rotation_about_axis, translation
 
 from cli_runner import assert_user_error, run
 

@@ -1,7 +1,7 @@
 """The compiled motion-capture kernels and their numpy fallbacks (issue 5, speed of §3.1.1 import).
 
-``engine/_text_table.c`` reads the number table of a marker export in one pass;
-``engine/_rigid_fit.c`` computes every frame's Kabsch rotation. Both must
+``engine/mocap/_text_table.c`` reads the number table of a marker export in one pass;
+``engine/mocap/_rigid_fit.c`` computes every frame's Kabsch rotation. Both must
 give what the plain Python/numpy paths give: the same doubles as ``float``
 for every cell, and the same rotations as the SVD to rounding.
 """
@@ -18,23 +18,23 @@ from hypothesis import strategies as st
 
 import engine
 from engine.mocap import head_motion, readers
-from engine.transforms import apply, rotation_about_axis, translation
+from engine.deform.transforms import apply, rotation_about_axis, translation
 
-ENGINE = Path(engine.__file__).parent
+KERNELS = Path(engine.__file__).parent / "mocap"
 text_table = readers._text_table
 rigid_fit = head_motion._rigid_fit
-needs_parser = pytest.mark.skipif(text_table is None, reason="engine._text_table is not built")
-needs_rigid = pytest.mark.skipif(rigid_fit is None, reason="engine._rigid_fit is not built")
+needs_parser = pytest.mark.skipif(text_table is None, reason="engine.mocap._text_table is not built")
+needs_rigid = pytest.mark.skipif(rigid_fit is None, reason="engine.mocap._rigid_fit is not built")
 
 
 @pytest.mark.parametrize("module, source", [("_text_table", "_text_table.c"), ("_rigid_fit", "_rigid_fit.c")])
 def test_kernels_are_built_and_current(module, source):
     """``pip install -e .`` (``./bootstrap``) compiles both; a stale build would test old code."""
     compiled = {"_text_table": text_table, "_rigid_fit": rigid_fit}[module]
-    assert compiled is not None, f"engine.{module} is not built: run .venv/bin/pip install -e . " \
+    assert compiled is not None, f"engine.mocap.{module} is not built: run .venv/bin/pip install -e . " \
                                  "(needs build-essential and python3-dev)"
-    digest = hashlib.sha256((ENGINE / source).read_bytes()).hexdigest()
-    assert compiled.SOURCE_SHA256 == digest, f"engine.{module} was built from an older {source}: " \
+    digest = hashlib.sha256((KERNELS / source).read_bytes()).hexdigest()
+    assert compiled.SOURCE_SHA256 == digest, f"engine.mocap.{module} was built from an older {source}: " \
                                              "run .venv/bin/pip install -e ."
 
 

@@ -17,10 +17,10 @@ import h5py
 import numpy as np
 import pytest
 
-import engine.model_files as model_files
+import engine.formats.model_files as model_files
 from engine import ModelFileError, UserError, load_model, save_model
-from engine.model import InfluenceRegion, Model
-from engine.parameters import Parameter, ParameterTree
+from engine.model.model import InfluenceRegion, Model
+from engine.model.parameters import Parameter, ParameterTree
 from synthetic import assert_models_equal, random_model, random_values
 
 # ---------------------------------------------------------------------------

@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 
 import engine
 from engine.errors import UserError
-from engine.model import InfluenceRegion, Model
+from engine.model.model import InfluenceRegion, Model
 from engine.painting import (FALLOFFS, LEFT_TO_RIGHT, RIGHT_TO_LEFT, WEIGHT_RAMP, Brush, Change, DenseRegion,
                              LivePreview, PaintContext, Stroke, brush_footprint, clear_weights, compute_dab, compute_gradient,
                              grow_weights, group1_names, heat_colors, invert_weights, mirror_map, mirror_region,

@@ -10,7 +10,7 @@ from engine.commands import Activation, load_library, parse_commands_text, trans
 from engine.commands.command_files import low_level_xml, read_commands, write_low_level
 from engine.commands.interpolation import INTERPOLATIONS, interpolate
 from engine.errors import CommandError, UserError
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 
 
 @pytest.fixture(scope="module")

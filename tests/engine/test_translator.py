@@ -10,8 +10,8 @@ from engine.commands.command_files import low_level_xml
 from engine.commands.procedures import Arguments, ArgumentProblem, periodic_timing, register_procedure, stretch
 from engine.errors import CommandError, LibraryError
 
-from engine.model import InfluenceRegion, Model
-from engine.parameters import Parameter, ParameterTree
+from engine.model.model import InfluenceRegion, Model
+from engine.model.parameters import Parameter, ParameterTree
 
 
 def synthetic_model():
@@ -262,7 +262,7 @@ def test_every_shipped_command_moves_the_default_head(head, library):
                 "BrowRaise": ["brow_raise"], "JawOpen": ["jaw_open"]}
     assert set(expected) <= set(library.names())
     assert library.bind(head) is library
-    from engine.timeline import Timeline
+    from engine.timeline.timeline import Timeline
 
     for name, parameters in expected.items():
         args = ' x="20" y="10"' if name == "EyesLook" else ""

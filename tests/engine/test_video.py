@@ -22,7 +22,7 @@ import engine
 from engine.errors import ParameterError, UserError
 from engine.paths import default_model_path
 
-video = pytest.importorskip("engine.video")
+video = pytest.importorskip("engine.outputs.video")
 
 pytestmark = [
     pytest.mark.slow,
@@ -71,7 +71,7 @@ def two_state(head, tmp_path_factory):
     calls = []
     stats = video.write_video(out, head, times, values, NAMES, FPS, audio=silence_then_tone(0.6),
                               sample_rate=RATE, size=SIZE, progress=lambda done, total: calls.append((done, total)))
-    from engine.render import FrameRenderer
+    from engine.outputs.render import FrameRenderer
 
     with FrameRenderer(head, size=SIZE, antialias=False) as renderer:
         pictures = [renderer.render(head.deform(dict(zip(NAMES, pose)))) for pose in (POSE_A, POSE_B)]

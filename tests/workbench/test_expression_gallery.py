@@ -8,7 +8,7 @@ from PySide6.QtCore import Qt
 
 import engine
 from engine.commands import load_library, parse_commands_text, translate
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 
 GAPE = """$command = Gape
 $description = Astonished: brows up, jaw dropped

@@ -11,7 +11,7 @@ from PySide6.QtCore import QSettings, QTimer
 from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox
 
 import engine
-from engine.mesh_io import write_mesh
+from engine.formats.mesh_io import write_mesh
 from synthetic_workbench_model import build_synthetic_model
 from workbench import settings
 from workbench.file_controller import is_shipped

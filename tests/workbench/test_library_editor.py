@@ -12,7 +12,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QMessageBox, QWidget
 
 from engine.commands import load_library, parse_commands_text, translate
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 
 GOOD = """# brow_raise swung up and down, count times
 $command = BrowSwing

@@ -8,7 +8,7 @@ import pytest
 import engine
 from engine.commands import load_library, parse_commands_text, translate
 from engine.speech.synthesis import Segment, wav_bytes
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 
 DEFAULT_HEAD = engine.default_model_path()
 JAW_SCRIPT = """<commands>

@@ -10,7 +10,7 @@ from PySide6.QtWidgets import QMessageBox
 import engine
 from engine.commands import load_library, parse_commands_text, translate, write_low_level
 from engine.speech.synthesis import Segment
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 
 DEFAULT_HEAD = engine.default_model_path()
 needs_default_head = pytest.mark.skipif(not DEFAULT_HEAD.exists(), reason="default head not built")

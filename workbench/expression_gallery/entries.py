@@ -36,7 +36,7 @@ from engine.commands.command_files import HighLevelCommand
 from engine.commands.library_format import AMPLITUDE, START
 from engine.commands.translator import translate_command
 from engine.errors import UserError
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 
 EXPRESSION_PROCEDURE = "attack-hold-release"
 AU_NAME = re.compile(r"^AU\d+")

@@ -3,7 +3,7 @@
 Rendering happens on the GUI thread (VTK's OpenGL contexts belong to the
 thread that made them, and the viewport's lives there too) but in small
 steps: each event-loop turn renders one queued thumbnail with one
-:class:`engine.render.FrameRenderer` (about 0.1 s on the default head with
+:class:`engine.outputs.render.FrameRenderer` (about 0.1 s on the default head with
 software OpenGL), so the window opens at once and the pictures fill in.
 Nothing is rendered while the gallery is hidden. Pictures are cached per
 model revision; the renderer is released as soon as the queue is empty.
@@ -96,7 +96,7 @@ class ThumbnailCache(QObject):
             self.close()
             self._revision = (id(model), model.revision)
         if self._renderer is None:
-            from engine.render import FrameRenderer
+            from engine.outputs.render import FrameRenderer
             self._renderer = FrameRenderer(model, size=RENDER_SIZE, view="front", antialias=True)
         values = entry.pose(model)
         image = self._renderer.render(model.deform(values))

@@ -32,7 +32,7 @@ from engine.commands.command_files import HighLevelCommand
 from engine.commands.library_format import START, CommandDefinition
 from engine.commands.translator import translate_command
 from engine.errors import UserError
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 
 PLOT_SAMPLES = 400
 """Samples per curve between the first and the last key (the keys themselves are added)."""

@@ -22,7 +22,7 @@ from PySide6.QtWidgets import (QComboBox, QFileDialog, QHBoxLayout, QLabel, QMes
                                QToolBar, QVBoxLayout, QWidget)
 
 from engine.errors import UserError
-from engine.files import atomic_write_text
+from engine.formats.atomic import atomic_write_text
 
 from ..icons import icon
 from .analysis import CheckResult, CommandCurves, Problem, check_library_text, command_curves

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from engine.files import atomic_path
+from engine.formats.atomic import atomic_path
 
 SAMPLE_TEXT = "Papu ja kala. Hyvää päivää, mitä kuuluu?"
 

@@ -138,7 +138,7 @@ def export_speech(plan: ExportPlan, speech, model, progress: Progress | None = N
 
 def _write(kind: str, path: str, speech, model, plan: ExportPlan, times, frame_progress: Progress) -> None:
     if kind == "mp4":
-        from engine.video import write_video
+        from engine.outputs.video import write_video
 
         values = speech.timeline.sample(times)
         write_video(path, model, times, values, speech.timeline.parameters, plan.fps,

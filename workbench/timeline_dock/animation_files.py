@@ -19,7 +19,7 @@ from pathlib import Path
 
 from engine.commands import load_library, read_commands, translate
 from engine.errors import UserError
-from engine.timeline import Timeline
+from engine.timeline.timeline import Timeline
 
 from ..playhead import DEFAULT_FPS
 from .tracks_table import read_tracks_csv

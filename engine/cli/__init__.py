@@ -1,0 +1,71 @@
+"""The command line, ``artificial-person <verb>`` (DESIGN.md, "Command line").
+
+Every verb calls the same engine functions the workbench uses. Mistakes in
+the user's input (a bad option, an unknown parameter, a malformed model file)
+end with status 2 and one line on stderr, ``error: <file>:<line>: <what>``,
+never a traceback.
+
+The verbs live in one module each (``model_verbs``, ``command_verbs``,
+``speech_verbs``, ``export_verbs``, ``mocap_verbs``), sharing only
+:mod:`engine.cli.common`. Other installed packages add verbs through the
+``artificial_person.verbs`` entry point group: the workbench adds
+``workbench`` that way, so the engine never imports the GUI.
+
+>>> from engine.cli import main
+>>> main(["info", "--json"])                                   # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from importlib import import_module
+from importlib.metadata import entry_points
+
+from engine.cli.common import PROG, CliParser, say_error
+from engine.errors import UserError
+
+#: The engine's own verb modules, in the order ``--help`` lists them; each has ``add_verbs(verbs)``.
+VERB_MODULES = ("model_verbs", "command_verbs", "speech_verbs", "export_verbs", "mocap_verbs")
+#: Entry point group through which other packages add verbs (``add_verbs(verbs)`` callables).
+PLUGIN_GROUP = "artificial_person.verbs"
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run one command; returns the exit status (0 ok, 2 bad input, 1 environment trouble)."""
+    parser = build_parser()
+    try:
+        args = parser.parse_args(argv)
+        return int(args.run(args) or 0)
+    except UserError as exc:
+        say_error(str(exc))
+        return 2
+    except SystemExit as exc:  # --help and --version
+        return exc.code if isinstance(exc.code, int) else 0
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:  # e.g. `artificial-person info | head`
+        sys.stderr.close()
+        return 0
+    except OSError as exc:  # disk full, permissions: not a bug, so no traceback either
+        where = f"{exc.filename}: " if exc.filename else ""
+        say_error(f"{where}{exc.strerror or exc}")
+        return 1
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argument parser with one sub-parser per verb (the engine's, then those of plugins)."""
+    from engine import __version__
+
+    parser = CliParser(prog=PROG, description="Build, configure and animate the Artificial Person talking head.")
+    parser.add_argument("--version", action="version", version=f"{PROG} {__version__}")
+    verbs = parser.add_subparsers(dest="verb", metavar="VERB", required=True)
+    for plugin in sorted(entry_points(group=PLUGIN_GROUP), key=lambda e: e.name):
+        try:
+            add_verbs = plugin.load()
+        except ImportError:          # a plugin whose package is gone: its verbs are absent, the rest work
+            continue
+        add_verbs(verbs)
+    for name in VERB_MODULES:
+        import_module(f"{__name__}.{name}").add_verbs(verbs)
+    return parser

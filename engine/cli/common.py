@@ -1,0 +1,166 @@
+"""What every verb of the command line shares: the parser, argument types, options, model loading.
+
+Verb modules import from here and from the engine, never from each other,
+so each verb can be read (and changed) on its own. Mistakes in the user's
+input become :class:`~engine.errors.UserError`, which :func:`engine.cli.main`
+prints as one line and turns into exit status 2.
+
+>>> setting("jaw_open=0.5")
+('jaw_open', 0.5)
+>>> size("640x480")
+(640, 480)
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+from pathlib import Path
+from typing import NoReturn
+
+from engine.errors import ModelFileError, UserError
+from engine.model import Model
+
+PROG = "artificial-person"
+VIEW_NAMES = ("front", "side", "three-quarter")
+
+
+class CliParser(argparse.ArgumentParser):
+    """argparse that reports a mistake as one :class:`UserError` instead of usage text and exit."""
+
+    def error(self, message: str) -> NoReturn:
+        raise UserError(message)
+
+
+def say_error(text: str) -> None:
+    """Print ``error: <text>`` as one line on stderr (line breaks in ``text`` folded)."""
+    print("error: " + " ".join(text.split()), file=sys.stderr)
+
+
+# -- options many verbs take -------------------------------------------------------
+
+def add_model_option(p: argparse.ArgumentParser) -> None:
+    """``-m/--model MODEL``; left out, the shipped default head."""
+    p.add_argument("-m", "--model", default=None, metavar="MODEL",
+                   help="model description (.xml); default: the shipped head")
+
+
+def add_set_option(p: argparse.ArgumentParser) -> None:
+    """``--set NAME=VALUE ...`` into ``args.settings`` (a list of pairs)."""
+    p.add_argument("--set", dest="settings", action="extend", nargs="+", type=setting, default=[],
+                   metavar="NAME=VALUE", help="parameter values (may be repeated); others take their default")
+
+
+def add_library_option(p: argparse.ArgumentParser) -> None:
+    """``-L/--library LIBDIR`` (repeatable) into ``args.library``."""
+    p.add_argument("-L", "--library", dest="library", action="append", default=[], metavar="LIBDIR",
+                   help="a folder of *.lib files (or one file) searched after the shipped library; "
+                        "its commands override shipped ones of the same name (may be repeated)")
+
+
+# -- argument types --------------------------------------------------------------------
+
+def setting(text: str) -> tuple[str, float]:
+    """``NAME=VALUE`` with a finite number."""
+    name, sep, value = text.partition("=")
+    name = name.strip()
+    if not sep or not name:
+        raise argparse.ArgumentTypeError(f"'{text}' is not NAME=VALUE (e.g. jaw_open=0.5)")
+    try:
+        number = float(value)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}': '{value}' is not a number") from None
+    if not math.isfinite(number):
+        raise argparse.ArgumentTypeError(f"'{text}': the value must be a finite number")
+    return name, number
+
+
+def size(text: str) -> tuple[int, int]:
+    """``WIDTHxHEIGHT`` in pixels, each 1 … :data:`engine.outputs.render.MAX_SIZE`."""
+    from engine.outputs.render import MAX_SIZE
+
+    parts = text.lower().split("x")
+    if len(parts) != 2 or not all(p.strip().isdigit() for p in parts):
+        raise argparse.ArgumentTypeError(f"'{text}' is not WIDTHxHEIGHT in pixels (e.g. 800x600)")
+    width, height = (int(p) for p in parts)
+    if not (0 < width <= MAX_SIZE and 0 < height <= MAX_SIZE):
+        raise argparse.ArgumentTypeError(f"'{text}': width and height must be 1..{MAX_SIZE} pixels")
+    return width, height
+
+
+def positive_number(text: str) -> float:
+    """A finite number above 0."""
+    try:
+        number = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not (math.isfinite(number) and number > 0):
+        raise argparse.ArgumentTypeError(f"'{text}' must be a positive number")
+    return number
+
+
+def non_negative(text: str) -> float:
+    """A finite number, 0 or more."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not (value >= 0 and value != float("inf")):
+        raise argparse.ArgumentTypeError(f"'{text}' must be 0 or more")
+    return value
+
+
+def positive_int(text: str) -> int:
+    """A whole number, 1 or more."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"'{text}' must be at least 1")
+    return value
+
+
+# -- helpers ---------------------------------------------------------------------------------
+
+def load_model_argument(model_path: str | None) -> Model:
+    """Load ``-m MODEL`` (the default head for ``None``); anything the loader lets escape becomes one error line."""
+    from lxml import etree
+
+    from engine.formats.model_files import load_model
+    from engine.paths import default_model_path
+
+    try:
+        return load_model(model_path)
+    except etree.LxmlError as exc:  # e.g. schema validation choking on an unexpanded entity
+        where = model_path if model_path is not None else default_model_path()
+        raise ModelFileError(f"cannot read the model description: {exc}", file=where) from None
+    except (ValueError, TypeError) as exc:  # malformed numbers or arrays in a damaged file
+        where = model_path if model_path is not None else default_model_path()
+        raise ModelFileError(f"damaged model: {exc}", file=where) from None
+
+
+def parameter_values(model: Model, settings: list[tuple[str, float]]) -> dict[str, float]:
+    """``--set`` pairs as a dict (the last one wins), checked against the model's ranges."""
+    values = dict(settings)
+    model.check_values(values)
+    return values
+
+
+def require_suffix(path: str, allowed: tuple[str, ...], what: str) -> Path:
+    """``path`` as a :class:`Path` if its extension is one of ``allowed``, else a :class:`UserError`."""
+    out = Path(path)
+    if out.suffix.lower() not in allowed:
+        raise UserError(f"unknown output extension '{out.suffix or out.name}' for {what} "
+                        f"(use {either(allowed)})", file=out)
+    return out
+
+
+def either(options: tuple[str, ...]) -> str:
+    """``'a'``, ``'a or b'``, ``'a, b or c'``.
+
+    >>> either((".obj", ".ply", ".npz"))
+    '.obj, .ply or .npz'
+    """
+    return options[0] if len(options) == 1 else ", ".join(options[:-1]) + " or " + options[-1]

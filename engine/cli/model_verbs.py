@@ -1,0 +1,135 @@
+"""Verbs on one model: ``info``, ``render``, ``pose``, ``import-mesh``.
+
+>>> from engine.cli import main
+>>> main(["info", "--json"])                                   # doctest: +SKIP
+>>> main(["render", "--set", "jaw_open=0.5", "head_turn=-0.3", "--view", "three-quarter",
+...       "-o", "pose.png"])                                   # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from typing import Any
+
+import numpy as np
+
+from engine.cli.common import (VIEW_NAMES, add_model_option, add_set_option, load_model_argument,
+                               parameter_values, positive_number, require_suffix, size)
+from engine.model import Model
+from engine.model.landmarks import landmark_sort_key
+
+POSE_FORMATS = (".obj", ".ply", ".npz")
+
+
+def add_verbs(verbs: Any) -> None:
+    """Add ``info``, ``render``, ``pose`` and ``import-mesh`` to the CLI's sub-parsers."""
+    p = verbs.add_parser("info", help="print the parameter tree, parts and landmarks")
+    add_model_option(p)
+    p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
+    p.set_defaults(run=run_info)
+
+    p = verbs.add_parser("render", help="render one pose to a PNG picture")
+    add_model_option(p)
+    add_set_option(p)
+    p.add_argument("--view", choices=VIEW_NAMES, default="front",
+                   help="camera: front, side (from the subject's left) or three-quarter")
+    p.add_argument("--size", type=size, default=(600, 800), metavar="WxH",
+                   help="picture size in pixels (default 600x800)")
+    p.add_argument("-o", "--output", required=True, metavar="OUT.png", help="picture to write")
+    p.set_defaults(run=run_render)
+
+    p = verbs.add_parser("pose", help="write the deformed mesh (same vertex order as the model)")
+    add_model_option(p)
+    add_set_option(p)
+    p.add_argument("-o", "--output", required=True, metavar="OUT.(obj|ply|npz)", help="mesh file to write")
+    p.set_defaults(run=run_pose)
+
+    p = verbs.add_parser("import-mesh", help="make a model with no parameters from a mesh file")
+    p.add_argument("file", metavar="FILE", help="OBJ, PLY, STL, VTK/VTP, glTF/GLB, …")
+    p.add_argument("-o", "--output", required=True, metavar="MODEL.xml",
+                   help="model description to write (its arrays go beside it as .h5)")
+    p.add_argument("--scale", type=positive_number, default=None, metavar="S",
+                   help="multiply coordinates by S to get mm (default 1: the file is in mm)")
+    p.set_defaults(run=run_import_mesh)
+
+
+def run_info(args: argparse.Namespace) -> int:
+    model = load_model_argument(args.model)
+    if args.json:
+        print(json.dumps(model_summary(model), indent=2))
+    else:
+        print(model_report(model))
+    return 0
+
+
+def run_render(args: argparse.Namespace) -> int:
+    out = require_suffix(args.output, (".png",), "render")
+    model = load_model_argument(args.model)
+    values = parameter_values(model, args.settings)
+    from engine.outputs.render import render_model
+
+    render_model(model, values, view=args.view, size=args.size, path=out)
+    return 0
+
+
+def run_pose(args: argparse.Namespace) -> int:
+    out = require_suffix(args.output, POSE_FORMATS, "pose")
+    model = load_model_argument(args.model)
+    values = parameter_values(model, args.settings)
+    from engine.formats.mesh_io import write_mesh
+
+    write_mesh(out, model.deform(values), model.faces, parts=model.parts, vertex_part=model.vertex_part,
+               name=model.name)
+    return 0
+
+
+def run_import_mesh(args: argparse.Namespace) -> int:
+    out = require_suffix(args.output, (".xml",), "import-mesh")
+    from engine.formats.mesh_io import import_mesh
+    from engine.formats.model_files import save_model
+
+    save_model(import_mesh(args.file, scale=args.scale), out)
+    return 0
+
+
+def model_summary(model: Model) -> dict[str, Any]:
+    """The ``info --json`` object: parameters (tree order), landmarks and vertex count."""
+    tree = model.parameters
+    parameters = []
+    for name, _ in tree.depth_first():
+        p = tree[name]
+        parameters.append({"name": p.name, "type": p.kind, "group": tree.group(name), "parent": p.parent,
+                           "min": p.minimum, "max": p.maximum, "default": p.default})
+    return {"parameters": parameters, "landmarks": {k: int(v) for k, v in model.landmarks.items()},
+            "vertices": int(model.n_vertices)}
+
+
+def model_report(model: Model) -> str:
+    """The ``info`` text: an indented parameter tree, then parts and landmarks."""
+    tree = model.parameters
+    n_polygons = len(model.polygons())
+    lines = [f"{model.name}: {model.n_vertices} vertices, {n_polygons} polygons, "
+             f"{len(model.parts)} parts, {len(model.parameters)} parameters"]
+    rows = []
+    for name, depth in tree.depth_first():
+        p = tree[name]
+        if p.kind == "rotation":
+            scale = f"{p.degrees_per_unit:g} deg/unit"
+        elif p.field:
+            scale = "displacement field"
+        else:
+            scale = f"{float(np.linalg.norm(p.direction)):g} mm/unit"
+        rows.append(("  " * depth + name, p.kind, f"group {tree.group(name)}",
+                     f"[{p.minimum:g}, {p.maximum:g}]", f"default {p.default:g}", scale))
+    if rows:
+        widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+        lines.append("parameters (name, type, group, range, default, scale):")
+        lines += ["  " + "  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
+    else:
+        lines.append("parameters: none")
+    counts = np.bincount(model.vertex_part, minlength=len(model.parts))
+    lines.append("parts: " + ", ".join(f"{part} ({counts[i]} vertices)" for i, part in enumerate(model.parts)))
+    ids = sorted(model.landmarks, key=landmark_sort_key)
+    lines.append(f"landmarks: {len(ids)}" + (f" ({', '.join(ids)})" if ids else ""))
+    return "\n".join(lines)

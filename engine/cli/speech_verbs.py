@@ -1,0 +1,118 @@
+"""The ``say`` verb: text (with inline commands) → audio, video and tables (DESIGN.md).
+
+>>> from engine.cli import main
+>>> main(["say", "Hyvää päivää <HeadNod amplitude='60' count='2'/> mitä kuuluu?", "-o", "hello.mp4"])  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+from typing import Any
+
+from engine.cli.common import VIEW_NAMES, add_library_option, add_model_option, load_model_argument, positive_number, size
+from engine.errors import UserError
+
+OUTPUT_SUFFIXES = (".mp4", ".wav", ".xml")
+
+
+def add_verbs(verbs: Any) -> None:
+    p = verbs.add_parser("say", help="speak text with inline commands: video, audio and tables (§2.1)")
+    source = p.add_mutually_exclusive_group(required=True)
+    source.add_argument("text", nargs="?", metavar="TEXT", help="the text, e.g. 'Hyvää päivää <Blink/> mitä kuuluu?'")
+    source.add_argument("--file", metavar="F", help="read the text from a UTF-8 file instead")
+    p.add_argument("--voice", default=None, metavar="V",
+                   help="Festival voice (default suo_fi_lj_diphone; hy_fi_mv_diphone is the male Finnish voice)")
+    add_model_option(p)
+    add_library_option(p)
+    p.add_argument("--articulation", default=None, metavar="TABLE",
+                   help="phone → target table (default library/articulation/finnish.phones)")
+    p.add_argument("--coarticulation", choices=("cohen-massaro", "none"), default="cohen-massaro",
+                   help="Cohen–Massaro dominance functions (default) or the paper's plain target interpolation")
+    p.add_argument("--prosody", action="store_true",
+                   help="add visual prosody: blinks, brows on accented words, nods at phrase ends")
+    p.add_argument("--seed", type=int, default=0, metavar="N", help="seed for --prosody (default 0)")
+    p.add_argument("--fps", type=positive_number, default=30.0, metavar="N", help="frames per second (default 30)")
+    p.add_argument("--size", type=size, default=(640, 480), metavar="WxH", help="video size (default 640x480)")
+    p.add_argument("--view", choices=VIEW_NAMES, default="front", help="camera (default front)")
+    p.add_argument("-o", "--output", default=None, metavar="OUT.(mp4|wav|xml)",
+                   help="video with audio (.mp4), the audio (.wav), or the low-level commands (.xml)")
+    p.add_argument("--tracks", default=None, metavar="CSV", help="every parameter at every frame")
+    p.add_argument("--phones", default=None, metavar="CSV", help="phone segments: start_ms,end_ms,phone,word")
+    p.add_argument("--landmarks", default=None, metavar="CSV", help="landmark positions at every frame")
+    p.add_argument("--quiet", action="store_true", help="no progress display")
+    p.set_defaults(run=run_say)
+
+
+def run_say(args: argparse.Namespace) -> int:
+    from engine.commands import load_library
+    from engine.speech.articulation import load_articulation
+    from engine.speech.say import speak, write_landmarks
+
+    outputs = [args.output, args.tracks, args.phones, args.landmarks]
+    if not any(outputs):
+        raise UserError("nothing to write: give -o OUT.(mp4|wav|xml), --tracks, --phones or --landmarks")
+    out = _checked_output(args.output)
+    for path, suffix in ((args.tracks, ".csv"), (args.phones, ".csv"), (args.landmarks, ".csv")):
+        if path is not None and Path(path).suffix.lower() != suffix:
+            raise UserError(f"unknown extension '{Path(path).suffix or Path(path).name}' (use {suffix})", file=path)
+    text, name = _text(args)
+    model = load_model_argument(args.model)
+    library = load_library(args.library)
+    table = load_articulation(args.articulation)
+    speech = speak(text, model, voice=args.voice, library=library, table=table,
+                   coarticulation=args.coarticulation, prosody_seed=args.seed if args.prosody else None, name=name)
+    if args.phones:
+        from engine.speech.synthesis import write_phones_csv
+
+        write_phones_csv(args.phones, speech.utterance)
+    if args.tracks:
+        times = speech.frame_times(args.fps)
+        speech.timeline.write_tracks(args.tracks, fps=args.fps, end=float(times[-1]))
+    if args.landmarks:
+        write_landmarks(args.landmarks, speech, model, args.fps)
+    if out is not None:
+        _write_output(out, speech, model, args)
+    return 0
+
+
+def _checked_output(path: str | None) -> Path | None:
+    if path is None:
+        return None
+    out = Path(path)
+    if out.suffix.lower() not in OUTPUT_SUFFIXES:
+        raise UserError(f"unknown output extension '{out.suffix or out.name}' for say (use .mp4, .wav or .xml)",
+                        file=out)
+    return out
+
+
+def _text(args) -> tuple[str, str]:
+    if args.file is None:
+        return args.text, "<text>"
+    try:
+        return Path(args.file).read_text(encoding="utf-8"), args.file
+    except OSError as exc:
+        raise UserError(f"cannot read the text: {exc.strerror or exc}", file=args.file) from None
+    except UnicodeDecodeError:
+        raise UserError("the text file is not UTF-8", file=args.file) from None
+
+
+def _write_output(out: Path, speech, model, args) -> None:
+    suffix = out.suffix.lower()
+    if suffix == ".wav":
+        from engine.speech.synthesis import write_wav
+
+        write_wav(out, speech.utterance)
+    elif suffix == ".xml":
+        from engine.commands import write_low_level
+
+        write_low_level(speech.activations, out)
+    else:
+        from engine.outputs.video import write_video, progress_printer
+
+        times = speech.frame_times(args.fps)
+        values = speech.timeline.sample(times)
+        progress = None if args.quiet else progress_printer("rendering")
+        write_video(out, model, times, values, speech.timeline.parameters, args.fps,
+                    audio=speech.utterance.samples, sample_rate=speech.utterance.sample_rate,
+                    size=args.size, view=args.view, progress=progress)

@@ -1,0 +1,351 @@
+"""Reading and writing models: XML description + HDF5 arrays (format version 1).
+
+``head.xml`` (validated against ``engine/formats/schemas/model.xsd``) holds the
+parameter tree, parts and landmarks; the HDF5 file it names in ``arrays``
+holds the rest mesh, faces, per-vertex parts, sparse weights and displacement
+fields. Both carry a format version; readers refuse versions they do not know.
+Saves are atomic: each file is written to a temporary name and renamed. See
+``docs/model-format.md``.
+
+>>> from engine import load_model, save_model
+>>> head = load_model()                                  # doctest: +SKIP
+>>> save_model(head, "/tmp/my-head.xml")                 # writes my-head.xml + my-head.h5
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import h5py
+import numpy as np
+from lxml import etree
+
+from engine.errors import ModelFileError, ParameterError, UserError
+from engine.model.landmarks import FEATURE_POINTS
+from engine.model.model import InfluenceRegion, Model
+from engine.model.parameters import Parameter, ParameterTree
+from engine.formats.xml_io import parse_xml, validate
+
+FORMAT = "artificial-person-model"
+ARRAYS_FORMAT = "artificial-person-arrays"
+VERSION = 1
+SCHEMA_NAME = "model.xsd"
+
+
+# ---------------------------------------------------------------------------
+# Reading
+# ---------------------------------------------------------------------------
+
+def load_model(path: str | Path | None = None) -> Model:
+    """Load a model from its XML description (and the HDF5 file it names).
+
+    ``path=None`` loads the shipped default head.
+    Raises :class:`ModelFileError` naming file and line for anything wrong.
+    """
+    from engine.paths import default_model_path
+
+    path = Path(path) if path is not None else default_model_path()
+    if path.is_dir():
+        candidates = sorted(path.glob("*.xml"))
+        if len(candidates) != 1:
+            raise ModelFileError("a model folder must hold exactly one .xml description", file=path)
+        path = candidates[0]
+    if not path.exists():
+        raise ModelFileError("no such file", file=path)
+    doc = parse_xml(path, ModelFileError)
+    root = doc.getroot()
+    if root.tag != "model":
+        raise ModelFileError(f"not a model description: root element is <{root.tag}>, expected <model>",
+                             file=path, line=root.sourceline)
+    version = _integer(root.get("version"))
+    if version is not None and version > VERSION:
+        raise ModelFileError(f"model format version {version} is newer than this program reads ({VERSION})",
+                             file=path, line=root.sourceline)
+    validate(doc, SCHEMA_NAME, path, ModelFileError)
+
+    parts, colors = [], {}
+    for el in root.find("parts"):
+        if not isinstance(el.tag, str):
+            continue
+        name = el.get("name")
+        if name in parts:
+            raise ModelFileError(f"part '{name}' is defined twice", file=path, line=el.sourceline)
+        parts.append(name)
+        if el.get("color"):
+            colors[name] = el.get("color")
+
+    params: list[Parameter] = []
+    lines: dict[str, int] = {}
+
+    def read_param(el, parent):
+        name = el.get("name")
+        if name in lines:
+            raise ModelFileError(f"parameter '{name}' is defined twice (first on line {lines[name]})",
+                                 file=path, line=el.sourceline)
+        lines[name] = el.sourceline
+        kind = el.get("type")
+        body = el.find(kind)
+        if body is None:
+            other = "translation" if kind == "rotation" else "rotation"
+            raise ModelFileError(f"parameter '{name}' has type=\"{kind}\" but a <{other}> element",
+                                 file=path, line=el.sourceline)
+        desc = el.findtext("description") or ""
+        kw = dict(name=name, kind=kind, parent=parent, minimum=float(el.get("min")),
+                  maximum=float(el.get("max")), default=float(el.get("default", "0")), description=desc.strip())
+        if kind == "rotation":
+            kw.update(axis=_vec(body.get("axis")), pivot=_vec(body.get("pivot")),
+                      degrees_per_unit=float(body.get("degrees-per-unit")))
+        else:
+            is_field = body.get("field", "false").strip() in ("true", "1")
+            if not is_field and body.get("direction") is None:
+                raise ModelFileError(f"translation '{name}' needs a direction or field=\"true\"",
+                                     file=path, line=body.sourceline)
+            kw.update(field=is_field, direction=_vec(body.get("direction") or "0 0 0"))
+        try:
+            params.append(Parameter(**kw))
+        except ParameterError as exc:
+            raise ModelFileError(exc.message, file=path, line=el.sourceline) from None
+        for child in el.findall("parameter"):
+            read_param(child, name)
+
+    for el in root.find("parameters").findall("parameter"):
+        read_param(el, None)
+    try:
+        tree = ParameterTree(params)
+    except ParameterError as exc:
+        raise ModelFileError(exc.message, file=path) from None
+
+    landmarks, landmark_lines = {}, {}
+    lm_root = root.find("landmarks")
+    if lm_root is not None:
+        for el in lm_root.findall("landmark"):
+            key = el.get("id")
+            if key in landmarks:
+                raise ModelFileError(f"landmark {key} is defined twice", file=path, line=el.sourceline)
+            landmarks[key] = int(el.get("vertex"))
+            landmark_lines[key] = el.sourceline
+
+    arrays_path = (path.parent / root.get("arrays")).resolve()
+    vertices, faces, vertex_part, regions, colors_rgb = _read_arrays(arrays_path, tree, len(parts))
+    n = len(vertices)
+    for key, v in landmarks.items():
+        if v >= n:
+            raise ModelFileError(f"landmark {key}: vertex {v} is outside the mesh (0..{n - 1})",
+                                 file=path, line=landmark_lines[key])
+    desc = root.findtext("description") or ""
+    try:
+        return Model(vertices, faces, parts, vertex_part, tree, regions, landmarks,
+                     name=root.get("name"), description=desc.strip(), part_colors=colors,
+                     vertex_colors=colors_rgb)
+    except UserError as exc:
+        raise ModelFileError(exc.message, file=arrays_path) from None
+
+
+def _integer(text: str | None) -> int | None:
+    """An xs:integer attribute as int (whitespace and a leading '+' allowed), or None if it is not one."""
+    try:
+        return int(text.strip()) if text is not None else None
+    except ValueError:
+        return None
+
+
+def _vec(text: str) -> np.ndarray:
+    return np.array([float(t) for t in text.split()])
+
+
+def _read_arrays(path: Path, tree: ParameterTree, n_parts: int):
+    if not path.exists():
+        raise ModelFileError("the arrays file named by the model description does not exist", file=path)
+    try:
+        f = h5py.File(path, "r")
+    except OSError:
+        raise ModelFileError("not a readable HDF5 file", file=path) from None
+    with f:
+        fmt = f.attrs.get("format")
+        if isinstance(fmt, bytes):
+            fmt = fmt.decode()
+        if fmt != ARRAYS_FORMAT:
+            raise ModelFileError(f"not an Artificial Person arrays file (format attribute is {fmt!r})", file=path)
+        version = int(f.attrs.get("version", 0))
+        if version > VERSION or version < 1:
+            raise ModelFileError(f"arrays format version {version} is not one this program reads ({VERSION})",
+                                 file=path)
+
+        def dataset(name, dtype, shape_tail=None):
+            if name not in f:
+                raise ModelFileError(f"missing HDF5 dataset '/{name}'", file=path)
+            data = f[name]
+            if not isinstance(data, h5py.Dataset):
+                raise ModelFileError(f"'/{name}' is not a dataset", file=path)
+            arr = np.asarray(data[()])
+            if shape_tail is not None and (arr.ndim != 1 + len(shape_tail) or arr.shape[1:] != shape_tail):
+                raise ModelFileError(f"dataset '/{name}' has shape {arr.shape}, expected (n, "
+                                     f"{', '.join(map(str, shape_tail))})", file=path)
+            if shape_tail is None and arr.ndim != 1:
+                raise ModelFileError(f"dataset '/{name}' has shape {arr.shape}, expected one dimension", file=path)
+            return arr.astype(dtype)
+
+        vertices = dataset("mesh/vertices", float, (3,))
+        faces = dataset("mesh/faces", np.int64)
+        vertex_part = dataset("mesh/part", np.int64)
+        if len(vertex_part) != len(vertices):
+            raise ModelFileError(f"'/mesh/part' has {len(vertex_part)} entries for {len(vertices)} vertices",
+                                 file=path)
+        if len(vertex_part) and vertex_part.max() >= n_parts:
+            raise ModelFileError(f"'/mesh/part' names part {vertex_part.max()} but the model has {n_parts} parts",
+                                 file=path)
+        colors = None
+        if "mesh/colors" in f:
+            colors = dataset("mesh/colors", np.int64, (3,))
+            if len(colors) != len(vertices) or colors.min() < 0 or colors.max() > 255:
+                raise ModelFileError("'/mesh/colors' must hold one sRGB triple (0-255) per vertex", file=path)
+            colors = colors.astype(np.uint8)
+        regions = {}
+        for p in tree:
+            base = f"parameters/{p.name}"
+            if base not in f:
+                raise ModelFileError(f"missing HDF5 group '/{base}' for parameter '{p.name}'", file=path)
+            idx = dataset(f"{base}/indices", np.int64)
+            w = dataset(f"{base}/weights", float)
+            disp = dataset(f"{base}/displacements", float, (3,)) if p.field else None
+            try:
+                regions[p.name] = InfluenceRegion(idx, w, disp)
+            except UserError as exc:
+                raise ModelFileError(f"parameter '{p.name}': {exc.message}", file=path) from None
+    return vertices, faces, vertex_part, regions, colors
+
+
+# ---------------------------------------------------------------------------
+# Writing
+# ---------------------------------------------------------------------------
+
+def save_model(model: Model, path: str | Path) -> Path:
+    """Save ``model`` as ``path`` (XML) plus ``path`` with suffix ``.h5``; both atomically.
+
+    Returns the XML path.
+    """
+    path = Path(path)
+    if path.suffix.lower() != ".xml":
+        path = path.with_suffix(".xml")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    arrays = path.with_suffix(".h5")
+    model.validate()
+    xml = model_to_xml(model, arrays.name)          # fails (UserError) before anything is touched
+    # Write both files completely under temporary names, then rename them into place: a failure
+    # while writing leaves the previous model as it was.
+    tmp_arrays = _temporary(arrays)
+    tmp_xml = _temporary(path)
+    try:
+        _write_arrays(model, tmp_arrays)
+        Path(tmp_xml).write_bytes(xml)
+        for tmp in (tmp_arrays, tmp_xml):
+            with open(tmp, "rb") as fh:
+                os.fsync(fh.fileno())
+        os.replace(tmp_arrays, arrays)
+        os.replace(tmp_xml, path)
+    except BaseException:
+        for tmp in (tmp_arrays, tmp_xml):
+            try:
+                os.unlink(tmp)
+            except FileNotFoundError:
+                pass
+        raise
+    return path
+
+
+def model_to_xml(model: Model, arrays_name: str) -> bytes:
+    root = etree.Element("model", format=FORMAT, version=str(VERSION), name=_xml_text(model.name, "the model name"),
+                         arrays=arrays_name, units="mm")
+    if model.description:
+        etree.SubElement(root, "description").text = _xml_text(model.description, "the model description")
+    parts = etree.SubElement(root, "parts")
+    for name in model.parts:
+        el = etree.SubElement(parts, "part", name=name)
+        if name in model.part_colors:
+            el.set("color", model.part_colors[name])
+    params = etree.SubElement(root, "parameters")
+    tree = model.parameters
+
+    def write(name, parent_el):
+        p = tree[name]
+        el = etree.SubElement(parent_el, "parameter", name=p.name, type=p.kind, min=_num(p.minimum),
+                              max=_num(p.maximum), default=_num(p.default))
+        if p.description:
+            etree.SubElement(el, "description").text = _xml_text(p.description, f"parameter '{p.name}' description")
+        if p.kind == "rotation":
+            etree.SubElement(el, "rotation", axis=_nums(p.axis), pivot=_nums(p.pivot),
+                             **{"degrees-per-unit": _num(p.degrees_per_unit)})
+        elif p.field:
+            etree.SubElement(el, "translation", field="true")
+        else:
+            etree.SubElement(el, "translation", direction=_nums(p.direction))
+        for child in tree.children(name):
+            write(child, el)
+
+    for name in tree.roots():
+        write(name, params)
+    if model.landmarks:
+        lm = etree.SubElement(root, "landmarks")
+        for key in sorted(model.landmarks, key=_landmark_order):
+            el = etree.SubElement(lm, "landmark", id=key, vertex=str(model.landmarks[key]))
+            if key in FEATURE_POINTS:
+                el.set("description", FEATURE_POINTS[key])
+    etree.indent(root, space="  ")
+    return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
+
+
+def _xml_text(value: str, what: str) -> str:
+    """``value`` if XML can carry it, else a :class:`UserError` naming ``what``."""
+    try:
+        etree.Element("probe").text = value
+    except ValueError:
+        raise UserError(f"{what} contains characters XML cannot hold (control characters or NUL)") from None
+    return value
+
+
+def _landmark_order(key: str):
+    try:
+        return tuple(int(t) for t in key.split(".")), key
+    except ValueError:
+        return (10 ** 6,), key
+
+
+def _num(x: float) -> str:
+    return repr(float(x))
+
+
+def _nums(v) -> str:
+    return " ".join(_num(x) for x in v)
+
+
+def _write_arrays(model: Model, path: str) -> None:
+    with h5py.File(path, "w", track_order=True) as f:
+        f.attrs["format"] = ARRAYS_FORMAT
+        f.attrs["version"] = VERSION
+        f.attrs["units"] = "mm"
+        mesh = f.create_group("mesh")
+        mesh.create_dataset("vertices", data=model.vertices, compression="gzip", shuffle=True)
+        mesh.create_dataset("faces", data=model.faces, compression="gzip", shuffle=True)
+        mesh.create_dataset("part", data=model.vertex_part.astype(np.int32), compression="gzip")
+        if model.vertex_colors is not None:
+            mesh.create_dataset("colors", data=model.vertex_colors, compression="gzip")
+        params = f.create_group("parameters", track_order=True)
+        for p in model.parameters:
+            r = model.regions[p.name]
+            g = params.create_group(p.name)
+            g.create_dataset("indices", data=r.indices.astype(np.int64))
+            g.create_dataset("weights", data=r.weights)
+            if r.displacements is not None:
+                g.create_dataset("displacements", data=r.displacements)
+
+
+def _temporary(path: Path) -> str:
+    """A new empty file next to ``path`` with the permissions a plain ``open`` would give."""
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    os.close(fd)
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o666 & ~umask)      # mkstemp's 0600 would make saved models private
+    return tmp

@@ -1,0 +1,480 @@
+"""Export to glTF 2.0: the rest mesh with the parameters as morph targets (blendshapes).
+
+The file holds one mesh with one primitive per part (skin, eyes, teeth, …),
+each with a material in the part's colour, vertex colours where a part is not
+one colour (``COLOR_0``), smooth normals and triangles. Every morph target is
+a per-vertex displacement: for a parameter, ``model.deform({name: value}) −
+rest`` at one chosen value (:func:`target_value`); for a pose from a file of
+displacement fields (the ARKit-52 set of the default head), the pose itself.
+glTF blends targets linearly, so a rotation's target is its straight-line
+(secant) linearisation through the rest pose and the pose at the chosen value:
+exact at weights 0 and 1, a chord in between (docs/export.md).
+
+With ``skeleton=True`` the rigid group-1 parameters become joints of a glTF
+skin instead (:func:`skeleton_parameters`), which reproduces ``model.deform``
+exactly, leaves riding on the joints as in the engine.
+
+Units: the model is in mm, glTF in metres, so coordinates are scaled by
+0.001; both use +Y up with the face toward +Z, so no axes are swapped.
+
+:func:`engine.formats.gltf_read.read_gltf` reads the files back and checks their
+structure; :func:`export_gltf` runs it on every file before writing it.
+
+>>> from engine import load_model
+>>> head = load_model()                                              # doctest: +SKIP
+>>> targets = parameter_targets(head) + pose_targets(head)           # doctest: +SKIP
+>>> export_gltf(head, "head.glb", targets)                           # doctest: +SKIP
+>>> read_gltf("head.glb").target_names[:2]                           # doctest: +SKIP
+['neck_lean', 'head_turn']
+"""
+
+from __future__ import annotations
+
+import json
+import struct
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Iterable, Mapping
+
+import numpy as np
+
+from engine.errors import UserError
+from engine.formats.gltf_read import (GLB_BIN, GLB_JSON, GLB_MAGIC, METRES_PER_MM, MODEL_VERTEX, _TRIANGLES, GltfMesh,
+                        _parse, _split_glb)
+from engine.formats.gltf_read import GltfFileError, read_gltf
+
+__all__ = ["GltfFileError", "MorphTarget", "export_gltf", "glb_bytes", "gltf_document", "parameter_targets",
+           "pose_targets", "read_gltf", "skeleton_parameters", "target_value"]
+
+SUFFIXES = (".glb", ".gltf")
+POSES_FORMAT = "artificial-person-poses"
+
+_FLOAT, _UBYTE, _USHORT, _UINT = 5126, 5121, 5123, 5125
+_ARRAY_BUFFER, _ELEMENT_ARRAY_BUFFER = 34962, 34963
+
+
+
+
+
+@dataclass
+class MorphTarget:
+    """One blendshape: per-vertex displacements in mm, model vertex order.
+
+    ``source`` is ``"parameter"`` or the pose group (e.g. ``"arkit"``); for a
+    parameter, ``value`` is its value at weight 1 and ``linearised`` says that
+    the parameter is a rotation, so weights between 0 and 1 follow the chord,
+    not the arc; ``chord_error_mm`` is how far the chord's midpoint (weight
+    0.5) lies from the true pose at half the value, at most over the vertices.
+    """
+
+    name: str
+    displacements: np.ndarray
+    source: str = "parameter"
+    value: float | None = None
+    linearised: bool = False
+    chord_error_mm: float = 0.0
+
+    def metadata(self) -> dict:
+        out = {"name": self.name, "source": self.source}
+        if self.value is not None:
+            out.update(value=self.value, linearised=self.linearised, chord_error_mm=round(self.chord_error_mm, 4))
+        return out
+
+
+# -- targets -------------------------------------------------------------------
+
+def target_value(parameter) -> float:
+    """The value a parameter's target shows at weight 1: 1 where 1 is in the parameter's
+    range, else its maximum, else (a range that ends at the default) its minimum."""
+    if parameter.minimum <= 1.0 <= parameter.maximum:
+        return 1.0
+    return parameter.maximum if parameter.maximum != parameter.default else parameter.minimum
+
+
+def parameter_targets(model, names: Iterable[str] | None = None,
+                      values: Mapping[str, float] | None = None) -> list[MorphTarget]:
+    """Morph targets for the named parameters (default: all, in tree order as ``info`` shows them).
+
+    ``values`` overrides :func:`target_value` per parameter (dimensionless,
+    within the parameter's range). Each target is ``model.deform({name: v}) −
+    model.deform()`` in mm, the other parameters at their defaults.
+    """
+    tree = model.parameters
+    names = [n for n, _ in tree.depth_first()] if names is None else list(names)
+    values = dict(values or {})
+    for name in list(names) + list(values):
+        tree[name]                                   # unknown names raise with a suggestion
+    if len(set(names)) != len(names):
+        raise UserError("a parameter is named twice in the selection")
+    stray = sorted(set(values) - set(names))
+    if stray:
+        raise UserError(f"a target value is given for '{stray[0]}', which is not exported")
+    model.check_values(values)
+    rest = model.deform()
+    targets = []
+    for name in names:
+        p = tree[name]
+        value = float(values.get(name, target_value(p)))
+        if value == p.default:
+            raise UserError(f"parameter '{name}': its target value {value:g} is its default, which moves nothing")
+        pose = model.deform({name: value})
+        delta = pose - rest
+        error = 0.0
+        if p.kind == "rotation":
+            middle = model.deform({name: (p.default + value) / 2})
+            error = float(np.max(np.linalg.norm(middle - (rest + delta / 2), axis=1), initial=0.0))
+        targets.append(MorphTarget(name, delta, "parameter", value, p.kind == "rotation", error))
+    return targets
+
+
+def pose_targets(model, path: str | Path | None = None, group: str = "arkit",
+                 names: Iterable[str] | None = None) -> list[MorphTarget]:
+    """Morph targets from a file of displacement fields (format ``artificial-person-poses``,
+    ``/<group>/<name>/{indices, displacements}`` in mm; default: the shipped
+    ``reference-poses.h5``, whose ``arkit`` group is the ARKit-52 set under
+    ARKit's names)."""
+    import h5py
+
+    from engine.paths import reference_poses_path
+
+    path = Path(path) if path is not None else reference_poses_path()
+    n = model.n_vertices
+    try:
+        with h5py.File(path, "r") as f:
+            kind, version = f.attrs.get("format"), f.attrs.get("version")
+            if isinstance(kind, bytes):
+                kind = kind.decode()
+            if kind != POSES_FORMAT:
+                raise UserError(f"not a poses file (format {kind!r}, expected '{POSES_FORMAT}')", file=path)
+            if version != 1:
+                raise UserError(f"poses format version {version} is not known (this program reads version 1)",
+                                file=path)
+            if "source_vertex" in f and len(f["source_vertex"]) != n:
+                raise UserError(f"these poses were made for a model of {len(f['source_vertex'])} vertices, "
+                                f"not this one of {n}", file=path)
+            if group not in f or not isinstance(f[group], h5py.Group):
+                known = ", ".join(k for k in f if isinstance(f[k], h5py.Group))
+                raise UserError(f"no pose group '{group}' (groups: {known})", file=path)
+            wanted = list(f[group]) if names is None else list(names)
+            targets = []
+            for name in wanted:
+                if name not in f[group]:
+                    raise UserError(f"no pose '{name}' in group '{group}'", file=path)
+                g = f[group][name]
+                idx = np.asarray(g["indices"][()], dtype=np.int64).reshape(-1)
+                disp = np.asarray(g["displacements"][()], dtype=float)
+                if disp.shape != (len(idx), 3) or (len(idx) and (idx.min() < 0 or idx.max() >= n)):
+                    raise UserError(f"pose '{group}/{name}': indices and displacements do not fit a model "
+                                    f"of {n} vertices", file=path)
+                delta = np.zeros((n, 3))
+                delta[idx] = disp
+                targets.append(MorphTarget(name, delta, group))
+    except OSError as exc:
+        raise UserError(f"cannot read the poses: {exc}", file=path) from None
+    except KeyError as exc:
+        raise UserError(f"damaged poses file: {exc}", file=path) from None
+    return targets
+
+
+# -- writing ---------------------------------------------------------------------
+
+class _Buffer:
+    """The binary buffer, one bufferView per array, each aligned to 4 bytes."""
+
+    def __init__(self):
+        self.chunks, self.length, self.views, self.accessors = [], 0, [], []
+
+    def add(self, array: np.ndarray, target: int | None, bounds: bool = True, kind: str | None = None) -> int:
+        array = np.ascontiguousarray(array)
+        data = array.astype(array.dtype.newbyteorder("<"), copy=False).tobytes()
+        view = {"buffer": 0, "byteOffset": self.length, "byteLength": len(data)}
+        if target is not None:
+            view["target"] = target
+        self.views.append(view)
+        pad = -len(data) % 4
+        self.chunks.append(data + b"\0" * pad)
+        self.length += len(data) + pad
+        component = {np.dtype(np.float32): _FLOAT, np.dtype(np.uint8): _UBYTE, np.dtype(np.uint16): _USHORT,
+                     np.dtype(np.uint32): _UINT}[array.dtype]
+        accessor = {"bufferView": len(self.views) - 1, "componentType": component, "count": int(array.shape[0]),
+                    "type": kind or ("SCALAR" if array.ndim == 1 else f"VEC{array.shape[1]}")}
+        if bounds and len(array):
+            flat = array.reshape(len(array), -1)
+            # float32 values written as Python floats: the JSON numbers round-trip to the same float32
+            accessor["min"] = [_number(v) for v in flat.min(axis=0)]
+            accessor["max"] = [_number(v) for v in flat.max(axis=0)]
+        self.accessors.append(accessor)
+        return len(self.accessors) - 1
+
+    def data(self) -> bytes:
+        return b"".join(self.chunks)
+
+
+def _number(v):
+    return int(v) if isinstance(v, np.integer) else float(v)
+
+
+def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bool = True,
+                  skeleton: bool = False) -> tuple[dict, bytes]:
+    """The glTF JSON document (without ``buffers[0].uri``) and its binary buffer.
+
+    Positions and displacements are scaled from mm to metres. ``target_normals``
+    adds each target's change of the smooth normals (renderers that shade
+    morphs with them, e.g. three.js and Unity, then light a turned head right).
+    ``skeleton`` exports the rigid group-1 parameters as joints instead (see
+    :func:`skeleton_parameters`); their morph targets must then be left out.
+    """
+    from engine.outputs.render import _PartLayout, part_material
+
+    targets = list(targets)
+    names = [t.name for t in targets]
+    if len(set(names)) != len(names):
+        twice = sorted({n for n in names if names.count(n) > 1})
+        raise UserError(f"two morph targets are both named '{twice[0]}'")
+    for t in targets:
+        if np.shape(t.displacements) != (model.n_vertices, 3) or not np.all(np.isfinite(t.displacements)):
+            raise UserError(f"morph target '{t.name}': expected {model.n_vertices}×3 finite displacements")
+    rig = _Rig(model) if skeleton else None
+    for t in targets:
+        if rig is not None and t.source == "parameter" and t.name in rig.names:
+            raise UserError(f"parameter '{t.name}' is a joint of the skeleton, so it cannot also be a morph target")
+    layout = _PartLayout(model)
+    if not layout.parts:
+        raise UserError("the model has no polygons to export")
+    rest = model.deform()
+    points, normals = layout.points_and_normals(rest)
+    points = points.copy()                  # the layout hands out one buffer, refilled on every call
+    moved = [layout.points_and_normals(rest + t.displacements)[1] for t in targets] if target_normals else []
+    buf = _Buffer()
+    primitives, materials = [], []
+    for k, part in enumerate(layout.parts):
+        start, stop = layout.slices[k]
+        used = layout.used(k)
+        colour, _, _, _, power = part_material(part, model.part_colors)
+        rgb = None if model.vertex_colors is None else model.vertex_colors[used]
+        if rgb is not None and np.all(rgb == rgb[0]):
+            colour, rgb = "#%02x%02x%02x" % tuple(int(c) for c in rgb[0]), None
+        base = [1.0, 1.0, 1.0] if rgb is not None else _srgb_to_linear(_hex_rgb(colour)).tolist()
+        materials.append({"name": part, "doubleSided": True,
+                          "pbrMetallicRoughness": {"baseColorFactor": [round(c, 6) for c in base] + [1.0],
+                                                   "metallicFactor": 0.0,
+                                                   "roughnessFactor": round(float(np.sqrt(2 / (power + 2))), 4)}})
+        attributes = {"POSITION": buf.add((points[start:stop] * METRES_PER_MM).astype(np.float32), _ARRAY_BUFFER),
+                      "NORMAL": buf.add(normals[start:stop].astype(np.float32), _ARRAY_BUFFER)}
+        if rgb is not None:
+            attributes["COLOR_0"] = buf.add(_srgb_to_linear(rgb / 255.0).astype(np.float32), _ARRAY_BUFFER)
+        attributes[MODEL_VERTEX] = buf.add(used.astype(np.float32), _ARRAY_BUFFER)
+        if rig is not None:
+            attributes["JOINTS_0"] = buf.add(rig.joints[used], _ARRAY_BUFFER, bounds=False)
+            attributes["WEIGHTS_0"] = buf.add(rig.weights[used], _ARRAY_BUFFER, bounds=False)
+        triangles = np.asarray(_triangles(layout, k), dtype=np.uint16 if stop - start < 65535 else np.uint32)
+        primitive = {"attributes": attributes, "indices": buf.add(triangles.reshape(-1), _ELEMENT_ARRAY_BUFFER,
+                                                                  bounds=False),
+                     "material": k, "mode": _TRIANGLES, "extras": {"part": part}}
+        if targets:
+            zero = None
+            primitive["targets"] = []
+            for i, t in enumerate(targets):
+                entry = {}
+                arrays = {"POSITION": (t.displacements[used] * METRES_PER_MM).astype(np.float32)}
+                if target_normals:
+                    arrays["NORMAL"] = (moved[i][start:stop] - normals[start:stop]).astype(np.float32)
+                for key, array in arrays.items():
+                    if not array.any():       # parts a target leaves alone share one accessor of zeros
+                        if zero is None:
+                            zero = buf.add(np.zeros((stop - start, 3), dtype=np.float32), _ARRAY_BUFFER)
+                        entry[key] = zero
+                    else:
+                        entry[key] = buf.add(array, _ARRAY_BUFFER)
+                primitive["targets"].append(entry)
+        primitives.append(primitive)
+    mesh = {"name": model.name, "primitives": primitives}
+    if targets:
+        mesh["weights"] = [0.0] * len(targets)
+        mesh["extras"] = {"targetNames": names, "targets": [t.metadata() for t in targets]}
+    from engine import __version__
+
+    nodes, roots = [{"name": model.name, "mesh": 0}], [0]
+    skins = []
+    if rig is not None:
+        nodes[0]["skin"] = 0
+        roots.append(len(nodes))
+        skins.append(rig.skin(nodes, buf))
+    data = buf.data()
+    document = {
+        "asset": {"version": "2.0", "generator": f"Artificial Person {__version__}",
+                  "extras": {"model": model.name, "description": model.description, "units": "metres"}},
+        "scene": 0, "scenes": [{"name": model.name, "nodes": roots}],
+        "nodes": nodes, "meshes": [mesh], "materials": materials,
+        "accessors": buf.accessors, "bufferViews": buf.views, "buffers": [{"byteLength": len(data)}],
+    }
+    if skins:
+        document["skins"] = skins
+    return document, data
+
+
+def skeleton_parameters(model) -> list[str]:
+    """The parameters a skeleton exports as joints: the rigid group-1 (non-leaf) ones, in tree order."""
+    tree = model.parameters
+    return [name for name, _ in tree.depth_first() if tree.group(name) == 1]
+
+
+class _Rig:
+    """Group-1 parameters as glTF joints: a ``root`` joint (vertices no rigid parameter carries),
+    then one joint per parameter, nested as the parameter tree.
+
+    A joint rests at its pivot (translations: at the origin) with its local +X
+    along the rotation axis (translation direction), so a parameter value is a
+    turn about, or a slide along, the joint's own X. Each joint's skinning
+    matrix ``G · G_rest⁻¹`` is then the engine's propagated ``T'`` (column
+    convention ``T'_c = T'_parent · T_c``), and the skin weights are the
+    engine's normalised group-1 weights (at most four per vertex: more are cut
+    to the four largest and renormalised).
+    """
+
+    def __init__(self, model):
+        tree = model.parameters
+        self.names = skeleton_parameters(model)
+        for name in self.names:
+            if tree[name].default != 0:
+                raise UserError(f"parameter '{name}' rests at {tree[name].default:g}: a skeleton needs "
+                                "its rigid parameters to rest at 0")
+        n = model.n_vertices
+        w = np.stack([model.regions[name].dense(n) for name in self.names], axis=1) if self.names \
+            else np.zeros((n, 0))
+        total = w.sum(axis=1)
+        w = np.hstack([(total == 0)[:, None].astype(float), np.divide(w, total[:, None], out=np.zeros_like(w),
+                                                                       where=total[:, None] > 0)])
+        order = np.argsort(-w, axis=1, kind="stable")[:, :4]
+        top = np.take_along_axis(w, order, axis=1)
+        if top.shape[1] < 4:
+            order = np.hstack([order, np.zeros((n, 4 - top.shape[1]), dtype=order.dtype)])
+            top = np.hstack([top, np.zeros((n, 4 - top.shape[1]))])
+        top /= top.sum(axis=1, keepdims=True)
+        order[top == 0] = 0
+        dtype = np.uint8 if len(self.names) < 255 else np.uint16
+        self.joints, self.weights = order.astype(dtype), top.astype(np.float32)
+        self.frames = {name: _joint_frame(tree[name]) for name in self.names}
+        self.tree = tree
+
+    def skin(self, nodes: list[dict], buf: _Buffer) -> dict:
+        """Append the joint nodes to ``nodes``; return the skin."""
+        first = len(nodes)
+        index = {name: first + 1 + i for i, name in enumerate(self.names)}
+        nodes.append({"name": "root", "children": []})
+        ibm = [np.eye(4)]
+        for name in self.names:
+            p = self.tree[name]
+            rotation, origin = self.frames[name]
+            parent_rotation, parent_origin = self.frames.get(p.parent, (np.eye(3), np.zeros(3)))
+            local = parent_rotation.T @ rotation
+            node = {"name": name, "translation": (parent_rotation.T @ (origin - parent_origin)).tolist(),
+                    "rotation": _quaternion(local).tolist(),
+                    "extras": {"parameter": name, "minimum": p.minimum, "maximum": p.maximum}}
+            if p.kind == "rotation":
+                node["extras"].update(motion="rotation about the joint's +X", degrees_per_unit=p.degrees_per_unit)
+            else:
+                node["extras"].update(motion="translation along the joint's +X",
+                                      mm_per_unit=float(np.linalg.norm(p.direction)))
+            nodes[index.get(p.parent, first)].setdefault("children", []).append(len(nodes))
+            nodes.append(node)
+            inverse = np.eye(4)
+            inverse[:3, :3], inverse[:3, 3] = rotation.T, -rotation.T @ origin
+            ibm.append(inverse)
+        matrices = np.stack([m.T.reshape(16) for m in ibm]).astype(np.float32)   # glTF matrices are column-major
+        return {"name": "parameters", "skeleton": first, "joints": list(range(first, len(nodes))),
+                "inverseBindMatrices": buf.add(matrices, None, bounds=False, kind="MAT4")}
+
+
+def _joint_frame(p) -> tuple[np.ndarray, np.ndarray]:
+    """Rest orientation (local +X along the axis or direction) and origin (the pivot, metres) of a joint."""
+    if p.kind == "rotation":
+        return _rotation_from_x(p.axis), p.pivot * METRES_PER_MM
+    length = np.linalg.norm(p.direction)
+    return _rotation_from_x(p.direction / length if length else np.array([1.0, 0, 0])), np.zeros(3)
+
+
+def _rotation_from_x(a: np.ndarray) -> np.ndarray:
+    """The smallest rotation taking +X to the unit vector ``a`` (Rodrigues)."""
+    x = np.array([1.0, 0.0, 0.0])
+    v, c = np.cross(x, a), float(x @ a)
+    s2 = float(v @ v)
+    if s2 < 1e-24:
+        return np.eye(3) if c > 0 else np.diag([-1.0, 1.0, -1.0])
+    k = np.array([[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]])
+    return np.eye(3) + k + k @ k * ((1 - c) / s2)
+
+
+def _quaternion(r: np.ndarray) -> np.ndarray:
+    """Unit quaternion (x, y, z, w), glTF's order, of a rotation matrix (from its largest component)."""
+    t = np.trace(r)
+    options = [1 + t, 1 + r[0, 0] - r[1, 1] - r[2, 2], 1 - r[0, 0] + r[1, 1] - r[2, 2], 1 - r[0, 0] - r[1, 1] + r[2, 2]]
+    k = int(np.argmax(options))
+    s = 2 * np.sqrt(options[k])
+    if k == 0:
+        q = [(r[2, 1] - r[1, 2]) / s, (r[0, 2] - r[2, 0]) / s, (r[1, 0] - r[0, 1]) / s, s / 4]
+    elif k == 1:
+        q = [s / 4, (r[0, 1] + r[1, 0]) / s, (r[0, 2] + r[2, 0]) / s, (r[2, 1] - r[1, 2]) / s]
+    elif k == 2:
+        q = [(r[0, 1] + r[1, 0]) / s, s / 4, (r[1, 2] + r[2, 1]) / s, (r[0, 2] - r[2, 0]) / s]
+    else:
+        q = [(r[0, 2] + r[2, 0]) / s, (r[1, 2] + r[2, 1]) / s, s / 4, (r[1, 0] - r[0, 1]) / s]
+    q = np.array(q)
+    return q / np.linalg.norm(q)
+
+
+
+
+
+def _triangles(layout, k: int) -> np.ndarray:
+    from engine.model.cells import cells_to_triangles
+
+    return cells_to_triangles(layout.cells[k])
+
+
+def _hex_rgb(colour: str) -> np.ndarray:
+    return np.array([int(colour[i:i + 2], 16) for i in (1, 3, 5)]) / 255.0
+
+
+def _srgb_to_linear(c) -> np.ndarray:
+    """sRGB in [0, 1] → linear light, as glTF's colour factors and COLOR_0 are."""
+    c = np.asarray(c, dtype=float)
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def glb_bytes(document: dict, data: bytes) -> bytes:
+    """The binary container: a 12-byte header, the JSON chunk (padded with spaces), the BIN chunk."""
+    text = json.dumps(document, separators=(",", ":")).encode("utf-8")
+    text += b" " * (-len(text) % 4)
+    data += b"\0" * (-len(data) % 4)
+    total = 12 + 8 + len(text) + 8 + len(data)
+    return (struct.pack("<III", GLB_MAGIC, 2, total) + struct.pack("<II", len(text), GLB_JSON) + text
+            + struct.pack("<II", len(data), GLB_BIN) + data)
+
+
+def export_gltf(model, path: str | Path, targets: Iterable[MorphTarget] = (),
+                target_normals: bool = True, skeleton: bool = False) -> GltfMesh:
+    """Write ``model`` with ``targets`` as ``path`` (``.glb``, or ``.gltf`` with a ``.bin`` beside it).
+
+    The file is read back with :func:`read_gltf` before it is written (both
+    atomically), so a file on disk has passed those checks; returns what was read.
+    """
+    from engine.formats.atomic import atomic_write_bytes
+
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in SUFFIXES:
+        raise UserError(f"unknown glTF extension '{path.suffix or path.name}' (use .glb or .gltf)", file=path)
+    document, data = gltf_document(model, targets, target_normals=target_normals, skeleton=skeleton)
+    if suffix == ".glb":
+        blob = glb_bytes(document, data)
+        mesh = _parse(path, *_split_glb(blob, path))
+        atomic_write_bytes(path, blob)
+        return mesh
+    bin_path = path.with_suffix(".bin")
+    document["buffers"][0]["uri"] = bin_path.name
+    text = json.dumps(document, indent=1).encode("utf-8")
+    mesh = _parse(path, json.loads(text), {0: data})
+    atomic_write_bytes(bin_path, data)
+    atomic_write_bytes(path, text)
+    return mesh

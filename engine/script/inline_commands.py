@@ -1,0 +1,146 @@
+"""The user command interpreter (§2): text with inline high-level commands.
+
+    Hyvää päivää <HeadNod amplitude="60" count="2"/> mitä kuuluu?
+
+The text is spoken; every ``<Command …/>`` in it is a high-level command for
+the translator (§2.3), taken out of the text before synthesis. Anchoring:
+
+* a command **without** ``at`` starts when the **next word** starts (here: when
+  "mitä" starts); a command after the last word starts when the last word ends;
+* a command **with** ``at`` starts at that time, in ms from the start of the
+  utterance's audio, wherever it stands in the text;
+* words are matched to the synthesizer's words by their letters, so a number
+  Festival reads as several words ("2" → "kaksi") still anchors correctly at
+  the first of them.
+
+Errors (a malformed tag, an argument that is not a number) name the text's
+file and line, and the column in the message.
+
+>>> script = parse_script('Hyvää päivää <HeadNod amplitude="60" count="2"/> mitä kuuluu?')
+>>> script.text, script.words, script.commands[0].word_index
+('Hyvää päivää mitä kuuluu?', ['Hyvää', 'päivää', 'mitä', 'kuuluu'], 2)
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+import unicodedata
+from dataclasses import dataclass, replace
+
+from engine.commands.command_files import HighLevelCommand, parse_commands_text
+from engine.errors import CommandError
+
+_TAG = re.compile(r"<[^<>]*>")
+_WELL_FORMED = re.compile(r"<\s*[A-Za-z_][A-Za-z0-9_.\-]*(\s+[^<>]*?)?/\s*>$", re.S)
+_WORD = re.compile(r"[^\W_]+(?:['’\-][^\W_]+)*", re.UNICODE)
+
+
+@dataclass
+class InlineCommand:
+    command: HighLevelCommand
+    word_index: int
+    """Index in :attr:`Script.words` of the word the command precedes (== len(words) at the end)."""
+
+
+@dataclass
+class Script:
+    text: str
+    """The text to speak, commands removed."""
+    words: list[str]
+    commands: list[InlineCommand]
+    name: str = "<text>"
+
+
+def parse_script(source: str, name: str = "<text>") -> Script:
+    """Split text with inline commands into the text to speak and the commands."""
+    pieces: list[str] = []
+    words: list[str] = []
+    commands: list[InlineCommand] = []
+    position = 0
+    for match in _TAG.finditer(source):
+        before = source[position:match.start()]
+        _check_no_stray_brackets(source, position, match.start(), name)
+        pieces.append(before + " ")
+        words += _WORD.findall(before)
+        commands.append(InlineCommand(_command(match.group(0), source, match.start(), name), len(words)))
+        position = match.end()
+    _check_no_stray_brackets(source, position, len(source), name)
+    pieces.append(source[position:])
+    words += _WORD.findall(source[position:])
+    text = re.sub(r"[ \t]+", " ", "".join(pieces)).strip()
+    text = re.sub(r" +([,.!?;:])", r"\1", text)
+    return Script(text, words, commands, name)
+
+
+def anchored_commands(script: Script, spoken_words) -> list[HighLevelCommand]:
+    """The script's commands with ``at`` filled in from the synthesizer's word timings.
+
+    ``spoken_words`` are segments with ``label``, ``start_ms``, ``end_ms`` (the
+    synthesizer's words, in order).
+    """
+    starts = word_start_times(script.words, spoken_words)
+    end = spoken_words[-1].end_ms if spoken_words else 0.0
+    out = []
+    for inline in script.commands:
+        command = inline.command
+        if "at" not in command.arguments:
+            at = starts[inline.word_index] if inline.word_index < len(starts) else end
+            command = replace(command, arguments={"at": float(at), **command.arguments})
+        out.append(command)
+    return out
+
+
+def word_start_times(words: list[str], spoken_words) -> list[float]:
+    """Start time of each written word, matched to the spoken words by their letters."""
+    if not spoken_words:
+        return [0.0] * len(words)
+    written = [_letters(w) for w in words]
+    spoken = [_letters(w.label) for w in spoken_words]
+    match_of: dict[int, int] = {}
+    for block in difflib.SequenceMatcher(a=written, b=spoken, autojunk=False).get_matching_blocks():
+        for k in range(block.size):
+            match_of[block.a + k] = block.b + k
+    starts = []
+    next_spoken = 0
+    for i in range(len(words)):
+        j = match_of.get(i)
+        if j is None:                        # e.g. "2" spoken as "kaksi": the next unmatched spoken word
+            j = min(next_spoken, len(spoken_words) - 1)
+        starts.append(float(spoken_words[j].start_ms))
+        next_spoken = max(next_spoken, j + 1)
+    return starts
+
+
+def _letters(word: str) -> str:
+    return "".join(c for c in unicodedata.normalize("NFC", word.lower()) if c.isalnum())
+
+
+def _command(tag: str, source: str, offset: int, name: str) -> HighLevelCommand:
+    line, column = _line_column(source, offset)
+    if not _WELL_FORMED.match(tag):
+        raise CommandError(f"column {column}: '{_short(tag)}' is not an inline command; write "
+                           "<Name argument=\"value\" …/> (self-closing)", file=name, line=line)
+    try:
+        [command] = parse_commands_text(f"<commands>{tag}</commands>", name)
+    except CommandError as exc:
+        raise CommandError(f"column {column}: {exc.message}", file=name, line=line) from None
+    return replace(command, file=name, line=line, column=column)
+
+
+def _check_no_stray_brackets(source: str, start: int, end: int, name: str) -> None:
+    for i in range(start, end):
+        if source[i] in "<>":
+            line, column = _line_column(source, i)
+            raise CommandError(f"column {column}: a '{source[i]}' that does not belong to an inline command "
+                               "<Name …/>", file=name, line=line)
+
+
+def _line_column(source: str, offset: int) -> tuple[int, int]:
+    line = source.count("\n", 0, offset) + 1
+    column = offset - (source.rfind("\n", 0, offset) + 1) + 1
+    return line, column
+
+
+def _short(text: str) -> str:
+    return text if len(text) <= 40 else text[:37] + "…"
