@@ -7,7 +7,7 @@ commands (§2.3) and speech (§2.1).
 >>> import engine
 >>> head = engine.load_model()                    # the default head, mm, facing +Z
 >>> [p.name for p in head.parameters][:3]
-['neck_base', 'head_turn', 'head_nod']
+['neck_lean', 'head_turn', 'head_nod']
 >>> P = head.deform(jaw_open=0.6, head_turn=0.2)  # (N, 3) vertex positions
 """
 

@@ -7,9 +7,12 @@ fields. Both carry a format version; readers refuse versions they do not know.
 Saves are atomic: each file is written to a temporary name and renamed. See
 ``docs/model-format.md``.
 
+>>> import tempfile
 >>> from engine import load_model, save_model
->>> head = load_model()                                  # doctest: +SKIP
->>> save_model(head, "/tmp/my-head.xml")                 # writes my-head.xml + my-head.h5
+>>> head = load_model()                                  # the shipped head; load_model(path) for others
+>>> path = save_model(head, f"{tempfile.mkdtemp()}/my-head.xml")   # writes my-head.xml + my-head.h5
+>>> load_model(path).n_vertices == head.n_vertices
+True
 """
 
 from __future__ import annotations

@@ -1,8 +1,9 @@
 """Opening the versioned HDF5 files of the motion-capture pipeline (sessions, articulation files).
 
->>> from engine.mocap.hdf5_files import open_versioned                 # doctest: +SKIP
+>>> from engine.mocap.errors import SessionFileError
+>>> from engine.mocap.hdf5_files import open_versioned
 >>> with open_versioned("take.h5", "artificial-person-mocap-session", 1, SessionFileError,
-...                     "a motion-capture session", "mocap import") as f: ...
+...                     "a motion-capture session", "mocap import") as f: ...   # doctest: +SKIP
 """
 
 from __future__ import annotations

@@ -11,9 +11,11 @@ normals change between frames).
 
 >>> from engine import load_model
 >>> from engine.outputs.render import FrameRenderer, render_model
->>> head = load_model()                                             # doctest: +SKIP
+>>> head = load_model()
 >>> image = render_model(head, {"jaw_open": 0.5}, view="three-quarter",
-...                      size=(600, 800), path="jaw.png")           # (800, 600, 3) uint8
+...                      size=(300, 400))                  # path="jaw.png" writes it too
+>>> image.shape, image.dtype
+((400, 300, 3), dtype('uint8'))
 >>> with FrameRenderer(head, size=(640, 480)) as renderer:         # doctest: +SKIP
 ...     frames = [renderer.render(head.deform(jaw_open=v)) for v in (0.0, 0.5, 1.0)]
 """

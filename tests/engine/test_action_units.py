@@ -17,7 +17,7 @@ import pytest
 
 import engine
 from engine.fitting import reference_pose
-from test_articulatory_parameters import Lips, assert_lips_apart
+from tests.engine.face_geometry import Lips, assert_lips_apart, eyeball_entry_mm
 
 HEAD_DIR = Path(__file__).resolve().parents[2] / "data" / "default-head"
 
@@ -56,10 +56,6 @@ def mirror_landmark(key):
     pairs.update({b: a for a, b in pairs.items()})
     return pairs.get(key, key)
 
-
-@pytest.fixture(scope="module")
-def head():
-    return engine.load_model()
 
 
 @pytest.fixture(scope="module")
@@ -312,20 +308,7 @@ def test_left_and_right_add_up_to_the_bilateral_pose(head, recipe):
 
 # -- nothing passes through anything -----------------------------------------------------
 
-def eyeball_entry_mm(head, P):
-    """How deep (mm) lid skin or lashes that are outside an eyeball at rest go into it in ``P``."""
-    worst = 0.0
-    for side in ("left", "right"):
-        centre = head.parameters[f"eye_{side}_turn"].pivot
-        radius = np.linalg.norm(head.vertices[head.part_vertices(f"eye_{side}")] - centre, axis=1).max()
-        near = np.flatnonzero(np.isin(head.vertex_part, [head.parts.index("skin"),
-                                                          head.parts.index(f"eyelashes_{side}")]))
-        near = near[head.vertices[near, 2] > centre[2] + 3]
-        before = np.linalg.norm(head.vertices[near] - centre, axis=1) - radius
-        after = np.linalg.norm(P[near] - centre, axis=1) - radius
-        entered = (before > 0) & (after < 0)
-        worst = max(worst, float(-after[entered].min()) if entered.any() else 0.0)
-    return worst
+
 
 
 @pytest.mark.parametrize("values", [

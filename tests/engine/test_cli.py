@@ -21,7 +21,7 @@ import pytest
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, load_model, save_model
 from engine.paths import default_model_path
 
-from cli_runner import assert_user_error, run
+from tests.engine.cli_runner import assert_user_error, run
 
 DEFAULT_HEAD_PARAMETERS = {
     "neck_lean", "head_turn", "head_nod", "head_tilt", "jaw_open", "tongue_raise", "eye_left_turn",

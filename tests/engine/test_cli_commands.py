@@ -8,7 +8,7 @@ import pytest
 
 from engine import load_model
 
-from cli_runner import assert_user_error, run
+from tests.engine.cli_runner import assert_user_error, run
 
 PAPER = '<commands>\n  <HeadNod at="1000" amplitude="60" count="2"/>\n</commands>\n'
 
@@ -52,7 +52,7 @@ def test_tracks_with_a_user_library_folder(tmp_path):
     xml.write_text('<commands><Yes at="0"/></commands>')
     out = tmp_path / "yes.csv"
     assert run("tracks", xml, "-L", folder, "--fps", "10", "-o", out).returncode == 0
-    rows = list(csv.reader(out.open()))
+    rows = list(csv.reader(out.read_text().splitlines()))
     nod = rows[0].index("head_nod")
     assert [float(r[nod]) for r in rows[1:]] == pytest.approx([0, 0.2, 0])
 

@@ -12,15 +12,15 @@ from engine.mocap.readers import Recording
 from engine.mocap.session import save_session
 from engine.mocap.synthetic import synthesize_recording
 
-from cli_runner import assert_user_error, run
-from test_mocap_pca import TRAINING_PHONES, _phones
+from tests.engine.cli_runner import assert_user_error, run
+from tests.engine.mocap_samples import TRAINING_PHONES, parse_phones
 
 pytestmark = pytest.mark.slow
 
 
 @pytest.fixture(scope="module")
 def session_file(tmp_path_factory):
-    rec = synthesize_recording(phones=_phones(TRAINING_PHONES), model=load_model(), seed=21)
+    rec = synthesize_recording(phones=parse_phones(TRAINING_PHONES), model=load_model(), seed=21)
     recording = Recording(labels=list(rec.markers), positions=rec.positions, rate_hz=rec.rate_hz,
                           source="synthetic", format="synthetic")
     path = tmp_path_factory.mktemp("mocap") / "take.h5"

@@ -14,10 +14,6 @@ import engine
 from engine.paths import reference_poses_path
 
 
-@pytest.fixture(scope="module")
-def head():
-    return engine.load_model()
-
 
 @pytest.fixture(scope="module")
 def poses():

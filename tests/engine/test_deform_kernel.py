@@ -23,7 +23,7 @@ import engine.deform.deformer
 from engine.deform.deformer import Deformer, deform_reference, optimise_vertex_order
 from engine.model.model import InfluenceRegion, Model
 from engine.paths import default_model_path
-from synthetic import leaf_names, random_model, random_values
+from tests.engine.synthetic import leaf_names, random_model, random_values
 
 SOURCE = Path(engine.deform.deformer.__file__).with_name("_kernel.c")
 

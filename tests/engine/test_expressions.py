@@ -11,18 +11,13 @@ import numpy as np
 import pytest
 
 import engine
-from cli_runner import run
+from tests.engine.cli_runner import run
 from engine.commands import load_library, parse_commands_text, translate
 from engine.timeline.timeline import Timeline
-from test_action_units import eyeball_entry_mm
-from test_articulatory_parameters import Lips, assert_lips_apart
+from tests.engine.face_geometry import Lips, assert_lips_apart, eyeball_entry_mm
 
 EXPRESSIONS = ["Neutral", "Happy", "Sad", "Surprise", "Fear", "Anger", "Disgust", "Contempt", "HappySurprise"]
 
-
-@pytest.fixture(scope="module")
-def head():
-    return engine.load_model()
 
 
 @pytest.fixture(scope="module")

@@ -312,12 +312,6 @@ def test_mesh_edges_are_unique_and_sorted():
 
 # -- the shipped reference poses on the default head --------------------------------
 
-@pytest.fixture(scope="module")
-def head():
-    import engine
-
-    return engine.load_model()
-
 
 def test_reference_poses_load_by_name():
     names = reference_pose_names()

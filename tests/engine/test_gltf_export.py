@@ -24,7 +24,7 @@ from engine.formats.gltf_read import _quaternion_matrix as _matrix
 from engine.paths import default_model_path, reference_poses_path
 from engine.outputs.render import _PartLayout
 
-from cli_runner import assert_user_error, run
+from tests.engine.cli_runner import assert_user_error, run
 
 ARKIT_SAMPLE = ("jawOpen", "mouthSmileLeft", "eyeBlinkRight", "browInnerUp", "tongueOut")
 
@@ -413,10 +413,7 @@ def test_reader_refuses_broken_containers(model, tmp_path):
 # ---------------------------------------------------------------------------
 
 @pytest.fixture(scope="module")
-def head_export(tmp_path_factory):
-    if not default_model_path().exists():
-        pytest.skip("the default head is not built")
-    head = load_model()
+def head_export(head, tmp_path_factory):
     path = tmp_path_factory.mktemp("head") / "head.glb"
     mesh = export_gltf(head, path, parameter_targets(head) + pose_targets(head))
     return head, path, mesh

@@ -25,7 +25,7 @@ from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
 from engine.paths import default_model_path
 from engine.deform.transforms import apply
-from synthetic import (add_weight, bind, group1_names, leaf_names, own_transform, pairwise_distances,
+from tests.engine.synthetic import (add_weight, bind, group1_names, leaf_names, own_transform, pairwise_distances,
                        propagated_transform, random_model, random_values, strip_faces, zero_values)
 
 TOL = 1e-9  # mm
@@ -532,20 +532,10 @@ def test_deformer_cache_invalidates_after_changed():
 # The shipped default head (skipped until data/default-head/head.xml exists)
 # ---------------------------------------------------------------------------
 
-@pytest.fixture(scope="module")
-def loaded_head():
-    path = default_model_path()
-    if not path.exists():
-        pytest.skip(f"the default head is not built yet ({path})")
-    from engine import load_model
-    return load_model(path)
-
-
 @pytest.fixture
-def head(loaded_head, deform_path):
-    """The default head, its cached deformer dropped so the test's deformation path builds it."""
-    loaded_head.changed()
-    return loaded_head
+def default_head(head_copy, deform_path):
+    """The default head (a copy, so the test's deformation path builds its deformer afresh)."""
+    return head_copy
 
 
 def _head_values(head: Model, rng, names=None, fraction: float = 0.8) -> dict[str, float]:
@@ -562,32 +552,32 @@ def _rigid_check(head: Model, vertices: np.ndarray, values: dict[str, float], wh
     return moved
 
 
-def test_head_invariant1_all_values_zero_give_rest_mesh(head):
+def test_head_invariant1_all_values_zero_give_rest_mesh(default_head):
     """Invariant 1 (§2.2) on the default head."""
-    assert np.array_equal(head.deform(zero_values(head)), head.vertices)
+    assert np.array_equal(default_head.deform(zero_values(default_head)), default_head.vertices)
 
 
-def test_head_invariant2_leaf_at_zero_contributes_nothing(head):
+def test_head_invariant2_leaf_at_zero_contributes_nothing(default_head):
     """Invariant 2 (§2.2) on the default head: each leaf at 0, with its ancestors and every
     other parameter at random values, gives exactly the pose of the head without that leaf."""
     rng = np.random.default_rng(21)
-    for leaf in leaf_names(head):
-        values = _head_values(head, rng)
+    for leaf in leaf_names(default_head):
+        values = _head_values(default_head, rng)
         values[leaf] = 0.0
-        emptied = with_region(head, leaf, InfluenceRegion())
-        assert np.array_equal(head.deform(values), emptied.deform(values)), leaf
+        emptied = with_region(default_head, leaf, InfluenceRegion())
+        assert np.array_equal(default_head.deform(values), emptied.deform(values)), leaf
 
 
-def test_head_invariant3_leaf_motion_is_carried_by_the_parent(head):
+def test_head_invariant3_leaf_motion_is_carried_by_the_parent(default_head):
     """Invariant 3 (§2.2) on the default head: wherever a vertex has group-1 weight only on
     ``p`` and leaf weight exactly 1 on a child ``c`` of ``p`` (and no other leaf), it ends at
     ``P · T_c · T'_p`` — e.g. the eyes under eye_left_turn / eye_left_raise."""
-    tree = head.parameters
-    n = head.n_vertices
-    g1 = group1_names(head)
-    leaves = leaf_names(head)
-    g1_dense = np.array([head.regions[name].dense(n) for name in g1])
-    leaf_dense = np.array([head.regions[name].dense(n) for name in leaves])
+    tree = default_head.parameters
+    n = default_head.n_vertices
+    g1 = group1_names(default_head)
+    leaves = leaf_names(default_head)
+    g1_dense = np.array([default_head.regions[name].dense(n) for name in g1])
+    leaf_dense = np.array([default_head.regions[name].dense(n) for name in leaves])
     rng = np.random.default_rng(22)
     checked = 0
     for j, c in enumerate(leaves):
@@ -600,52 +590,52 @@ def test_head_invariant3_leaf_motion_is_carried_by_the_parent(head):
         if not len(vertices):
             continue
         for _ in range(3):
-            values = _head_values(head, rng)
-            expected = apply(propagated_transform(head, p, values),
-                             apply(own_transform(tree[c], values[c]), head.vertices[vertices]))
-            np.testing.assert_allclose(head.deform(values)[vertices], expected, rtol=0, atol=1e-9, err_msg=c)
+            values = _head_values(default_head, rng)
+            expected = apply(propagated_transform(default_head, p, values),
+                             apply(own_transform(tree[c], values[c]), default_head.vertices[vertices]))
+            np.testing.assert_allclose(default_head.deform(values)[vertices], expected, rtol=0, atol=1e-9, err_msg=c)
         checked += 1
     if not checked:
         pytest.skip("no vertex of the default head has weight 1 on a leaf and only its parent in group 1")
 
 
-def test_head_invariant5_lower_teeth_ride_rigidly_on_the_jaw(head):
+def test_head_invariant5_lower_teeth_ride_rigidly_on_the_jaw(default_head):
     """Invariant 5 (§2.2) on the default head: the lower teeth (part ``teeth_lower``) keep
     their shape under jaw_open, alone and together with the head's other motions, and the jaw
     really carries them."""
     rng = np.random.default_rng(23)
-    teeth = head.part_vertices("teeth_lower")
+    teeth = default_head.part_vertices("teeth_lower")
     assert len(teeth) > 3
-    jaw = head.parameters["jaw_open"]
-    moved = _rigid_check(head, teeth, {"jaw_open": jaw.maximum}, "jaw_open alone")
-    assert np.abs(moved - head.vertices[teeth]).max() > 1.0, "jaw_open moves the lower teeth"
+    jaw = default_head.parameters["jaw_open"]
+    moved = _rigid_check(default_head, teeth, {"jaw_open": jaw.maximum}, "jaw_open alone")
+    assert np.abs(moved - default_head.vertices[teeth]).max() > 1.0, "jaw_open moves the lower teeth"
     for _ in range(3):
-        values = _head_values(head, rng, names=group1_names(head))
+        values = _head_values(default_head, rng, names=group1_names(default_head))
         values["jaw_open"] = float(rng.uniform(jaw.minimum, jaw.maximum))
-        _rigid_check(head, teeth, values, "jaw_open with the head's motion")
+        _rigid_check(default_head, teeth, values, "jaw_open with the head's motion")
 
 
-def test_head_invariant5_left_eye_turns_rigidly_about_its_centre(head):
+def test_head_invariant5_left_eye_turns_rigidly_about_its_centre(default_head):
     """Invariant 5 (§2.2) on the default head: the left eyeball (part ``eye_left``) keeps its
     shape under eye_left_turn and eye_left_raise, alone, together and with the head's motion;
     both rotations pivot on the eyeball's centre (the middle of its bounding box, which a
     cornea bulge may shift a little), so turning the eye leaves the eyeball where it was."""
     rng = np.random.default_rng(24)
-    eye = head.part_vertices("eye_left")
-    rest = head.vertices[eye]
+    eye = default_head.part_vertices("eye_left")
+    rest = default_head.vertices[eye]
     centre = 0.5 * (rest.min(0) + rest.max(0))
     radius = 0.5 * (rest.max(0) - rest.min(0))[:2].mean()
-    turn, raise_ = head.parameters["eye_left_turn"], head.parameters["eye_left_raise"]
+    turn, raise_ = default_head.parameters["eye_left_turn"], default_head.parameters["eye_left_raise"]
     for p in (turn, raise_):
         assert p.kind == "rotation"
         assert np.linalg.norm(p.pivot - centre) < 0.1 * radius, f"{p.name} pivots on the eye's centre"
     for values in ({"eye_left_turn": turn.maximum}, {"eye_left_raise": raise_.minimum},
                    {"eye_left_turn": turn.minimum, "eye_left_raise": raise_.maximum}):
-        moved = _rigid_check(head, eye, values, str(values))
+        moved = _rigid_check(default_head, eye, values, str(values))
         assert np.abs(moved - rest).max() > 1.0, f"{values} turns the eye"
         moved_centre = 0.5 * (moved.min(0) + moved.max(0))
         assert np.linalg.norm(moved_centre - centre) < 0.2 * radius, "the eye turns in place"
     for _ in range(3):
-        values = _head_values(head, rng, names=group1_names(head))
-        values.update(_head_values(head, rng, names=["eye_left_turn", "eye_left_raise"], fraction=1.0))
-        _rigid_check(head, eye, values, "eye with the head's motion")
+        values = _head_values(default_head, rng, names=group1_names(default_head))
+        values.update(_head_values(default_head, rng, names=["eye_left_turn", "eye_left_raise"], fraction=1.0))
+        _rigid_check(default_head, eye, values, "eye with the head's motion")

@@ -32,7 +32,7 @@ from engine.mocap.readers import Recording, detect_format, read_marker_file
 from engine.mocap.session import SESSION_FORMAT, load_session, save_session
 from engine.deform.transforms import rotation_about_axis, translation
 
-from cli_runner import assert_user_error, run
+from tests.engine.cli_runner import assert_user_error, run
 
 DATA = Path(__file__).parent / "data" / "mocap"
 pytestmark = pytest.mark.filterwarnings("ignore:No analog data found in file:UserWarning")  # c3d writer, no analog

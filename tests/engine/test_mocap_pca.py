@@ -27,24 +27,7 @@ from engine.mocap.pca import (ArticulationFileError, Stage, default_stages, load
                               multistage_pca, parse_frame_list, parse_stage, plot_components,
                               save_articulation_file, select_frames)
 from engine.mocap.synthetic import ARTICULATION_MARKERS, synthesize_recording
-
-# Festival's phones for synthetic.DEFAULT_TEXT and for a held-out sentence: label|start_ms|end_ms.
-TRAINING_PHONES = """
-#|0|30 p|30|60 a|60|140.214 p|140.214|224.648 u|224.648|284.158 j|284.158|343.06 a|343.06|393.767
-k|393.767|502.677 a|502.677|624.544 l|624.544|689.967 a|689.967|796.254 #|796.254|996.254 h|996.254|1054.53
-y|1054.53|1128.4 v|1128.4|1176.32 @:|1176.32|1294.82 p|1294.82|1422.04 @|1422.04|1552.39 i|1552.39|1628.1
-v|1628.1|1691.4 @:|1691.4|1883.88 #|1883.88|2083.88 m|2083.88|2140.51 i|2140.51|2185.33 t|2185.33|2257.9
-@|2257.9|2308.39 k|2308.39|2417.3 u:|2417.3|2616.75 l|2616.75|2682.18 u:|2682.18|2860.55 #|2860.55|3060.55
-7|3060.55|3140.73 l|3140.73|3216.93 j|3216.93|3279.65 y|3279.65|3341.83 @|3341.83|3404.89 j|3404.89|3463.79
-a|3463.79|3532.07 s|3532.07|3634.29 y|3634.29|3726.69 7|3726.69|3788.86 t|3788.86|3901.11 @|3901.11|3968.71
-v|3968.71|4032.02 @:|4032.02|4224.5 #|4224.5|4254.5 #|4254.5|4454.5
-"""
-HELD_OUT_PHONES = """
-#|0|30 m|30|86.626 u|86.626|157.633 m:|157.633|252.675 o|252.675|319.535 u|319.535|373.923 i|373.923|420.993
-j|420.993|497.039 o|497.039|577.963 e|577.963|649.371 s:|649.371|822.253 a|822.253|928.539 #|928.539|1128.54
-j|1128.54|1177.17 a|1177.17|1237.73 i|1237.73|1319.79 s|1319.79|1389.86 @|1389.86|1445.76 l|1445.76|1519.82
-u|1519.82|1618.93 k|1618.93|1732.37 e:|1732.37|1870.46 #|1870.46|1900.46 #|1900.46|2100.46
-"""
+from tests.engine.mocap_samples import HELD_OUT_PHONES, TRAINING_PHONES, parse_phones
 
 # Bounds measured on these recordings (values in the comments), with headroom.
 MAX_ANGLE_LINEAR_DEG = 1e-6          # ~1e-13°
@@ -57,29 +40,16 @@ HELD_OUT_RMS_NOISY_MM = 0.55
 HELD_OUT_TRUTH_NOISY_MM = 0.45
 
 
-def _phones(text):
-    out = []
-    for item in text.split():
-        label, start, end = item.rsplit("|", 2)
-        out.append((float(start), float(end), label))
-    return out
-
-
-@pytest.fixture(scope="module")
-def head():
-    return load_model()
-
-
 @pytest.fixture(scope="module")
 def clean(head):
     """Noise-free, head motion already removed, no gaps: the real deformation of the head."""
-    return synthesize_recording(phones=_phones(TRAINING_PHONES), model=head, seed=1, noise_mm=0,
+    return synthesize_recording(phones=parse_phones(TRAINING_PHONES), model=head, seed=1, noise_mm=0,
                                 head_motion=False, gaps=False)
 
 
 @pytest.fixture(scope="module")
 def held_out(head):
-    return synthesize_recording(phones=_phones(HELD_OUT_PHONES), model=head, seed=2, noise_mm=0,
+    return synthesize_recording(phones=parse_phones(HELD_OUT_PHONES), model=head, seed=2, noise_mm=0,
                                 head_motion=False, gaps=False)
 
 
@@ -95,7 +65,7 @@ def _components(art):
 # -- the generating subspace ------------------------------------------------------------------
 
 def test_pca_recovers_the_generating_subspace_exactly_for_linear_data(head):
-    rec = synthesize_recording(phones=_phones(TRAINING_PHONES), model=head, seed=1, noise_mm=0,
+    rec = synthesize_recording(phones=parse_phones(TRAINING_PHONES), model=head, seed=1, noise_mm=0,
                                head_motion=False, gaps=False, linear=True)
     art = multistage_pca(rec.markers, rec.positions)
     truth = _true_basis(rec, art.markers)
@@ -426,9 +396,9 @@ def test_held_out_frames_are_reconstructed_through_the_face(applied, held_out):
 
 
 def test_held_out_reconstruction_with_marker_noise(head):
-    train = synthesize_recording(phones=_phones(TRAINING_PHONES), model=head, seed=4, noise_mm=0.2,
+    train = synthesize_recording(phones=parse_phones(TRAINING_PHONES), model=head, seed=4, noise_mm=0.2,
                                  head_motion=False, gaps=False)
-    test = synthesize_recording(phones=_phones(HELD_OUT_PHONES), model=head, seed=5, noise_mm=0.2,
+    test = synthesize_recording(phones=parse_phones(HELD_OUT_PHONES), model=head, seed=5, noise_mm=0.2,
                                 head_motion=False, gaps=False)
     art = multistage_pca(train.markers, train.positions,
                          frames=select_frames(train.phones, train.n_frames, train.rate_hz, ["V", "C"]))
@@ -454,8 +424,8 @@ def test_the_whole_pipeline_from_an_imported_session(head):
                               source="synthetic", format="synthetic")
         return build_session(recording, phones=rec.phones)
 
-    train = session(synthesize_recording(phones=_phones(TRAINING_PHONES), model=head, seed=11))
-    test = session(synthesize_recording(phones=_phones(HELD_OUT_PHONES), model=head, seed=12))
+    train = session(synthesize_recording(phones=parse_phones(TRAINING_PHONES), model=head, seed=11))
+    test = session(synthesize_recording(phones=parse_phones(HELD_OUT_PHONES), model=head, seed=12))
     assert train.reference == ["9.12", "11.1", "11.2", "11.3"]
     art = multistage_pca(train, frames=select_frames(train.phones, train.n_frames, train.rate_hz, ["V", "C"]))
     assert art.excluded_missing > 0 and art.stages[0] == 1
@@ -518,17 +488,17 @@ def test_synthetic_markers_are_the_heads_own_deformation(head, clean):
 
 
 def test_synthetic_head_motion_noise_and_gaps(head):
-    rec = synthesize_recording(phones=_phones(HELD_OUT_PHONES), model=head, seed=7, noise_mm=0, gaps=False)
+    rec = synthesize_recording(phones=parse_phones(HELD_OUT_PHONES), model=head, seed=7, noise_mm=0, gaps=False)
     # head motion is rigid: distances between markers are those of the clean markers
     d_obs = np.linalg.norm(rec.positions[:, :, None] - rec.positions[:, None], axis=3)
     d_clean = np.linalg.norm(rec.clean[:, :, None] - rec.clean[:, None], axis=3)
     np.testing.assert_allclose(d_obs, d_clean, atol=1e-9)
     assert np.abs(rec.positions - rec.clean).max() > 2                  # and it is there
-    rec = synthesize_recording(phones=_phones(HELD_OUT_PHONES), model=head, seed=7)
+    rec = synthesize_recording(phones=parse_phones(HELD_OUT_PHONES), model=head, seed=7)
     assert np.array_equal(np.isnan(rec.positions).any(axis=2), rec.missing) and rec.missing.any()
     longest = max(_longest_run(rec.missing[:, m]) for m in range(len(rec.markers)))
     assert longest >= 90                                                # one gap too long to fill
-    again = synthesize_recording(phones=_phones(HELD_OUT_PHONES), model=head, seed=7)
+    again = synthesize_recording(phones=parse_phones(HELD_OUT_PHONES), model=head, seed=7)
     np.testing.assert_array_equal(again.positions, rec.positions)       # one seed, one recording
     residual = rec.positions - (rec.head_pivot + np.einsum("fij,fmj->fmi", rec.head_rotation,
                                                            rec.clean - rec.head_pivot)
@@ -538,7 +508,7 @@ def test_synthetic_head_motion_noise_and_gaps(head):
     reference = rec.marker_index(rec.reference)
     assert not np.any(rec.basis[:, reference]) and not np.any(np.ptp(rec.clean[:, reference], axis=0))
     with pytest.raises(UserError, match="no landmark for marker 20.1"):
-        synthesize_recording(phones=_phones(HELD_OUT_PHONES), model=head, markers=["2.1", "20.1"])
+        synthesize_recording(phones=parse_phones(HELD_OUT_PHONES), model=head, markers=["2.1", "20.1"])
 
 
 def _longest_run(mask):

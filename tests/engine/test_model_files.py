@@ -21,7 +21,7 @@ import engine.formats.model_files as model_files
 from engine import ModelFileError, UserError, load_model, save_model
 from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
-from synthetic import assert_models_equal, random_model, random_values
+from tests.engine.synthetic import assert_models_equal, random_model, random_values
 
 # ---------------------------------------------------------------------------
 # Helpers

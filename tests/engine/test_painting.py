@@ -26,7 +26,7 @@ from engine.painting import (FALLOFFS, LEFT_TO_RIGHT, RIGHT_TO_LEFT, WEIGHT_RAMP
                              mirror_weights, mirrored_part_name, normalise_group1, normalise_stack, sample_weight,
                              shrink_weights, smooth_weights)
 
-from synthetic import random_model, random_values
+from tests.engine.synthetic import random_model, random_values
 
 DOWN = (0.0, 0.0, -1.0)        # a camera above the grid looking down −Z sees its front faces
 
@@ -95,9 +95,9 @@ def flat():
 
 
 @pytest.fixture(scope="module")
-def head():
-    m = engine.load_model()
-    return m, PaintContext(m)
+def painted_head(head):
+    """The shared default head and its paint context (tests that edit weights work on copies)."""
+    return head, PaintContext(head)
 
 
 # ---------------------------------------------------------------------------
@@ -282,8 +282,8 @@ def test_mirror_map_of_a_symmetric_grid_is_an_involution(flat):
     assert mm.map[vid(3, 2)] == vid(-3, 2) and mm.map[vid(0, 4)] == vid(0, 4)
 
 
-def test_mirror_map_of_the_default_head(head):
-    m, ctx = head
+def test_mirror_map_of_the_default_head(painted_head):
+    m, ctx = painted_head
     mm = ctx.mirror
     print("\ndefault head:", mm.summary(ctx.parts, ctx.vertex_part))
     assert mm.n_unmatched == 0
@@ -294,12 +294,12 @@ def test_mirror_map_of_the_default_head(head):
     assert np.all(m.vertex_part[mm.map[skin]] == m.parts.index("skin"))
 
 
-def test_topology_fallback_recovers_a_perturbed_side(head):
+def test_topology_fallback_recovers_a_perturbed_side(painted_head):
     """One side of the head moved by random noise (σ = 0.3 mm per axis): no vertex is an exact mirror any more
     except on the mid-plane. The fallback finds every skin vertex's true partner; the only slips are in the
     pupils, whose rings of vertices lie 0.2 mm apart — below the noise — and they pick a vertex of the same
     ring next to the true partner."""
-    m, ctx = head
+    m, ctx = painted_head
     truth = ctx.mirror.map
     V = m.vertices.copy()
     right = V[:, 0] < 0
@@ -530,8 +530,8 @@ def test_normalise_stack_by_hand():
     assert np.allclose(normalise_stack(W, keep=0), [[0.2, 0, 1], [0.8, 0, 0]])
 
 
-def test_normalise_the_default_head(head):
-    m, _ = head
+def test_normalise_the_default_head(painted_head):
+    m, _ = painted_head
     regions = normalise_group1(m, keep="jaw_open")
     assert _normalised_ok(m, regions)
     with pytest.raises(UserError, match="group-1"):
@@ -572,8 +572,8 @@ def test_dense_region_keeps_displacements_while_painted_to_zero():
     assert dense.to_region().displacements[-1].tolist() == [0, 0, 0]
 
 
-def test_stroke_undo_redo_is_bit_exact(head):
-    m, ctx = head
+def test_stroke_undo_redo_is_bit_exact(painted_head):
+    m, ctx = painted_head
     dense = DenseRegion.from_model(m, "jaw_open")
     w = dense.weights
     original = w.copy()

@@ -17,7 +17,7 @@ import pytest
 from engine import load_model
 from engine.speech.say import speak
 
-from cli_runner import run
+from tests.engine.cli_runner import run
 
 pytestmark = pytest.mark.slow
 
@@ -31,10 +31,6 @@ SENTENCES = [
 ]
 TEXT = " ".join(SENTENCES)
 
-
-@pytest.fixture(scope="module")
-def head():
-    return load_model()
 
 
 @pytest.fixture(scope="module", params=["cohen-massaro", "none"])
@@ -125,8 +121,8 @@ def test_say_writes_the_tables_and_low_level_commands(tmp_path):
     result = run("say", text, "--fps", "25", "--tracks", tmp_path / "t.csv", "--landmarks", tmp_path / "l.csv",
                  "-o", tmp_path / "low.xml", "--prosody", "--seed", "3")
     assert result.returncode == 0, result.stderr
-    tracks = list(csv.reader((tmp_path / "t.csv").open()))
-    marks = list(csv.reader((tmp_path / "l.csv").open()))
+    tracks = list(csv.reader((tmp_path / "t.csv").read_text().splitlines()))
+    marks = list(csv.reader((tmp_path / "l.csv").read_text().splitlines()))
     assert tracks[0][0] == "time_ms" and "lower_lip_raise" in tracks[0]
     assert marks[0][:5] == ["frame", "time_ms", "2.1_x", "2.1_y", "2.1_z"]
     assert len(tracks) == len(marks)

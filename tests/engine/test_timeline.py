@@ -13,12 +13,6 @@ from engine.errors import CommandError, UserError
 from engine.timeline.timeline import Timeline
 
 
-@pytest.fixture(scope="module")
-def head():
-    from engine import load_model
-
-    return load_model()
-
 
 # -- interpolation ---------------------------------------------------------------
 

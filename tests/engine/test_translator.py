@@ -24,12 +24,6 @@ PAPER_KEYS = [(1000, 0), (1166.5, 0.09), (1333, 0), (1416.5, -0.015), (1500, 0),
               (1666.5, 0.09), (1833, 0), (1916.5, -0.015), (2000, 0)]
 
 
-@pytest.fixture(scope="module")
-def head():
-    from engine import load_model
-
-    return load_model()
-
 
 @pytest.fixture(scope="module")
 def library():

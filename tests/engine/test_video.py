@@ -41,12 +41,6 @@ POSE_A = [0.0, 0.0]
 POSE_B = [1.0, 0.4]
 
 
-@pytest.fixture(scope="module")
-def head():
-    if not default_model_path().exists():
-        pytest.skip("the default head (data/default-head/head.xml) is not built yet")
-    return engine.load_model()
-
 
 def two_state_values() -> tuple[np.ndarray, np.ndarray]:
     times = np.arange(FRAMES) * (1000.0 / FPS)

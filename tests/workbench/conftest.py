@@ -5,20 +5,16 @@ Run under a display server, e.g. ``xvfb-run -a .venv/bin/pytest tests/workbench`
 
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 import pytest
 
-# The project's own folders come first, as ``pythonpath = ["."]`` would: an
-# editable install made before workbench/__init__.py existed maps
-# ``workbench`` to a namespace package, which would hide the real one.
-PROJECT_ROOT = Path(__file__).resolve().parents[2]
-if str(PROJECT_ROOT) not in sys.path:
-    sys.path.insert(0, str(PROJECT_ROOT))
+import engine
+from tests.engine import conftest as engine_fixtures
+from tests.workbench.synthetic_workbench_model import build_synthetic_model
 
-import engine  # noqa: E402
-from synthetic_workbench_model import build_synthetic_model  # noqa: E402
+#: The shipped default head, loaded once per run and shared with the engine's tests (read-only).
+head = engine_fixtures.head
 
 
 @pytest.fixture(scope="session")

@@ -7,7 +7,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QKeySequence
 
 from workbench.undo_commands import RemoveParameterCommand, RenameParameterCommand, WeightsChangedCommand
-from workbench_model_state import model_state
+from tests.workbench.workbench_model_state import model_state
 
 
 def _paint(window, name="jaw_open", weight=1.0, stroke_id=None):

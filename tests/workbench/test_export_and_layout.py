@@ -13,7 +13,7 @@ from workbench import settings
 from workbench.export_configuration import export_configuration
 from workbench.tool_options import NO_TOOL
 from workbench.undo_commands import WeightsChangedCommand
-from workbench_model_state import model_state
+from tests.workbench.workbench_model_state import model_state
 
 Button = QMessageBox.StandardButton
 MY_JAW = """# A user's own JawOpen: wider.

@@ -4,26 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-import pyvista as pv
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 
 import engine
+from tests.workbench.normals import whole_mesh_normals
 from workbench.local_normals import LocalNormals
-
-
-def whole_mesh_normals(points, cells) -> np.ndarray:
-    normals = vtkPolyDataNormals()
-    normals.SetInputData(pv.PolyData(np.array(points), cells))
-    normals.SplittingOff()
-    normals.ConsistencyOff()
-    normals.ComputeCellNormalsOff()
-    normals.Update()
-    return pv.wrap(normals.GetOutput()).point_data["Normals"].astype(float)
-
-
-@pytest.fixture(scope="module")
-def head():
-    return engine.load_model()            # triangles and quads
 
 
 @pytest.mark.parametrize("seed", range(4))

@@ -9,7 +9,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 from vtkmodules.vtkCommonCore import VTK_COLOR_MODE_DIRECT_SCALARS
 
 import engine
-from synthetic_workbench_model import SYNTHETIC_PARAMETERS, build_synthetic_model
+from tests.workbench.synthetic_workbench_model import SYNTHETIC_PARAMETERS, build_synthetic_model
 
 
 @pytest.fixture

@@ -10,7 +10,7 @@ import pytest
 
 import engine
 import workbench
-from synthetic_workbench_model import build_synthetic_model
+from tests.workbench.synthetic_workbench_model import build_synthetic_model
 from workbench.colors import EYE, EYELASHES, SKIN, TEETH, TONGUE, default_part_color, part_color
 from workbench.document import ModelDocument
 from workbench.view_state import ViewState

@@ -15,7 +15,7 @@ from PySide6.QtCore import QPoint, Qt
 from PySide6.QtTest import QTest
 
 from engine.painting import Brush, DenseRegion, Stroke, compute_dab, compute_gradient
-from workbench_model_state import model_state
+from tests.workbench.workbench_model_state import model_state
 
 
 def dense(window, name):

@@ -16,12 +16,12 @@ from PySide6.QtCore import QSettings
 from PySide6.QtWidgets import QMessageBox
 
 import engine
-from synthetic_workbench_model import build_synthetic_model
+from tests.workbench.synthetic_workbench_model import build_synthetic_model
 from workbench import settings
 from workbench.document import ModelDocument
 from workbench.recovery import RecoverySession, orphaned_entries
 from workbench.undo_commands import WeightsChangedCommand
-from workbench_model_state import model_state
+from tests.workbench.workbench_model_state import model_state
 
 Button = QMessageBox.StandardButton
 PROJECT_ROOT = Path(__file__).resolve().parents[2]

@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QLineEdit, QMessageBox
 import engine
 from workbench.tree_editor import TOOL_ID
 from workbench.tree_editor.tree_model import GROUP_TEXT
-from workbench_model_state import model_state
+from tests.workbench.workbench_model_state import model_state
 
 
 def _select(window, name):
@@ -273,7 +273,7 @@ def test_a_drop_that_would_loop_is_refused_with_a_message(window, monkeypatch):
 
 
 def test_a_displacement_field_cannot_get_children(make_window, tmp_path, monkeypatch):
-    from synthetic_workbench_model import build_synthetic_model
+    from tests.workbench.synthetic_workbench_model import build_synthetic_model
 
     model = build_synthetic_model()
     skin = model.part_vertices("skin")[::9]
@@ -291,7 +291,7 @@ def test_a_displacement_field_cannot_get_children(make_window, tmp_path, monkeyp
 
 
 def test_another_model_replaces_the_tree(window, make_window, tmp_path):
-    from synthetic_workbench_model import build_synthetic_model
+    from tests.workbench.synthetic_workbench_model import build_synthetic_model
 
     other = build_synthetic_model()
     other.add_parameter(engine.Parameter("blink", "translation", direction=(0, -3, 0)))

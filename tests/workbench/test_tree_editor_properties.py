@@ -13,7 +13,7 @@ from PySide6.QtWidgets import QMessageBox
 
 import engine
 from workbench.tree_editor import TOOL_ID
-from workbench_model_state import model_state
+from tests.workbench.workbench_model_state import model_state
 
 SCREENSHOT_NAME = "workbench-tree-editor.png"
 
@@ -143,7 +143,7 @@ def test_invalid_values_are_explained_and_change_nothing(window, monkeypatch, pr
 
 
 def test_a_field_translation_cannot_become_a_rotation(make_window, tmp_path, monkeypatch):
-    from synthetic_workbench_model import build_synthetic_model
+    from tests.workbench.synthetic_workbench_model import build_synthetic_model
 
     model = build_synthetic_model()
     skin = model.part_vertices("skin")[::9]

@@ -6,13 +6,13 @@ import numpy as np
 import pytest
 
 import engine
-from synthetic_workbench_model import build_synthetic_model
+from tests.workbench.synthetic_workbench_model import build_synthetic_model
 from workbench.document import ModelDocument
 from workbench.model_edits import weights_at, with_weights
 from workbench.undo_commands import (AddParameterCommand, MoveParameterCommand, RemoveParameterCommand,
                                      RenameParameterCommand, ReplaceParameterCommand, SetRegionCommand,
                                      WeightsChangedCommand)
-from workbench_model_state import model_state
+from tests.workbench.workbench_model_state import model_state
 
 POSE = {"head_turn": 0.3, "jaw_open": 0.7, "brow_raise": 0.6}
 

@@ -44,7 +44,7 @@ def test_tool_colours_override_and_update_in_part(window):
 
 def _fresh_normals(mesh) -> np.ndarray:
     """Vertex normals computed from scratch from what the mesh holds now."""
-    from test_local_normals import whole_mesh_normals
+    from tests.workbench.normals import whole_mesh_normals
 
     return whole_mesh_normals(mesh.points.copy(), mesh.faces.copy())
 
