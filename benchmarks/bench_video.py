@@ -18,7 +18,7 @@ does. Stages, each timed on its own and then all together:
 * **render** — ``FrameRenderer.render`` for every frame (new points and
   normals, draw, read the picture back);
 * **encode** — the same frames piped into ffmpeg alone (libx264 + AAC, the
-  settings of :mod:`engine.outputs.video`), wall clock and ffmpeg's CPU time;
+  settings of :mod:`engine.outputs.video_writer`), wall clock and ffmpeg's CPU time;
 * **write_video** — the real thing, end to end: drawing and encoding
   overlap (ffmpeg runs in its own process), so its time is less than the sum.
 
@@ -44,7 +44,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import engine  # noqa: E402
-from engine import video  # noqa: E402
+from engine.outputs import video_probe, video_writer  # noqa: E402
 from engine.outputs.render import FrameRenderer  # noqa: E402
 
 MOTION = {  # parameter: (centre, amplitude as a fraction of the half range, frequency Hz)
@@ -108,12 +108,12 @@ def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scra
     renderer.close()
 
     wav = scratch / "tone.wav"
-    video._write_wav(wav, video._fit_audio(audio, 16000, 0.0, frames, fps), 16000)
+    video_writer._write_wav(wav, video_writer._fit_audio(audio, 16000, 0.0, frames, fps), 16000)
     out = scratch / "encode-only.mp4"
     command = ["ffmpeg", "-hide_banner", "-nostdin", "-loglevel", "error", "-y", "-f", "rawvideo",
-               "-pix_fmt", "rgb24", "-s", f"{size[0]}x{size[1]}", "-framerate", video._rate_text(fps),
-               "-i", "pipe:0", "-i", str(wav), "-map", "0:v:0", "-map", "1:a:0", *video.AUDIO_ARGS,
-               *video.VIDEO_ARGS, "-movflags", "+faststart", "-f", "mp4", str(out)]
+               "-pix_fmt", "rgb24", "-s", f"{size[0]}x{size[1]}", "-framerate", video_writer._rate_text(fps),
+               "-i", "pipe:0", "-i", str(wav), "-map", "0:v:0", "-map", "1:a:0", *video_writer.AUDIO_ARGS,
+               *video_writer.VIDEO_ARGS, "-movflags", "+faststart", "-f", "mp4", str(out)]
     cpu = children_cpu()
     t = time.perf_counter()
     process = subprocess.Popen(command, stdin=subprocess.PIPE)
@@ -127,10 +127,10 @@ def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scra
 
     out = scratch / "write_video.mp4"
     cpu, children = time.process_time(), children_cpu()
-    stats = video.write_video(out, model, times, values, names, fps, audio=audio, sample_rate=16000,
+    stats = video_writer.write_video(out, model, times, values, names, fps, audio=audio, sample_rate=16000,
                               size=size, antialias=antialias)
     own_cpu = time.process_time() - cpu
-    info = video.probe(out)
+    info = video_probe.probe(out)
     whole = {
         "seconds": stats.total, "real_time_factor": stats.total / seconds,
         "deform": stats.deform, "render": stats.render,

@@ -26,7 +26,7 @@ arguments. Rendering is offscreen (pyvista); no display is needed. All nine
 shipped commands take under two minutes on two cores and about 2.5 MB.
 
 The eye and brow close-ups are crops of a larger picture; where to crop comes
-from the renderer's own camera placement (``engine.outputs.render._place_camera``),
+from the renderer's own camera placement (``engine.outputs.camera.place_camera``),
 so the box stays on the eyes if the framing there changes.
 """
 
@@ -44,7 +44,8 @@ sys.path.insert(0, str(ROOT))
 
 import engine  # noqa: E402
 from engine.commands import load_library, parse_commands_text, translate  # noqa: E402
-from engine.outputs.render import VIEWS, _framed_points, _place_camera, render_model  # noqa: E402
+from engine.outputs.camera import VIEWS, framed_points, place_camera  # noqa: E402
+from engine.outputs.render import render_model  # noqa: E402
 from engine.timeline.timeline import Timeline  # noqa: E402
 
 # Command → (arguments besides at="0", view, region). A region crops the
@@ -140,7 +141,7 @@ def crop_box(model, view: str, region: str | None, size: tuple[int, int]):
     corners = np.array([[x, y, z] for x in (x0 - mx, x1 + mx) for y in (y0 - my, y1 + my) for z in (z0, z1)])
     width, height = size
     camera = SimpleNamespace()
-    _place_camera(camera, _framed_points(model), VIEWS[view], width, height)
+    place_camera(camera, framed_points(model), VIEWS[view], width, height)
     position, focal = np.array(camera.position), np.array(camera.focal_point)
     forward = (focal - position) / np.linalg.norm(focal - position)
     right = np.cross(forward, camera.up)

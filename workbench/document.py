@@ -10,25 +10,25 @@ change (:meth:`ModelDocument.set_values`): it is not saved and not undone.
 Changing the model (the tree, a region, some weights) goes through an undo
 command from :mod:`workbench.undo_commands`, pushed with
 :meth:`ModelDocument.push`; the commands call the ``apply_*`` methods here,
-which call the engine and announce the change. "Modified" means the undo
-stack is not at its clean index.
+each one engine edit (:mod:`engine.model.edits`,
+:func:`engine.model.apply_weight_change`) whose returned inverse the command
+keeps for undo, and announce the change. "Modified" means the undo stack is
+not at its clean index.
 """
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, Mapping
 
 import numpy as np
 from PySide6.QtCore import QObject, Signal
-from PySide6.QtGui import QUndoStack
+from PySide6.QtGui import QUndoCommand, QUndoStack
 
 import engine
-
-from .model_edits import TreeSnapshot, renamed_parameters, restore_tree, weights_at, with_weights
-
-if TYPE_CHECKING:
-    from .undo_commands import ModelEditCommand
+from engine.model import edits
+from engine.model.edits import TreeState
+from engine.model.weight_changes import WeightChange, apply_weight_change, weights_at
 
 
 class ModelDocument(QObject):
@@ -112,8 +112,7 @@ class ModelDocument(QObject):
     def region_weights(self, name: str, indices) -> np.ndarray:
         """Weights of ``name``'s region at ``indices``; NaN where a vertex is not in the region.
 
-        What a painting tool records as ``before`` for a
-        :class:`~workbench.undo_commands.WeightsChangedCommand`.
+        What a :class:`~engine.model.WeightChange` records as ``before``.
         """
         self._model.parameters[name]
         return weights_at(self._model.regions[name], indices)
@@ -144,14 +143,18 @@ class ModelDocument(QObject):
         self.set_values(self._model.default_values())
 
     # -- model edits (undoable) ----------------------------------------------
-    def push(self, command: "ModelEditCommand") -> None:
+    def push(self, command: QUndoCommand) -> None:
         """Apply an edit and put it on the undo stack.
 
+        ``command`` is a :class:`~workbench.undo_commands.ModelEditCommand`.
         The edit is applied here first, so an edit the engine refuses raises
         its :class:`engine.UserError` with the model unchanged and nothing on
         the stack; the stack's own first ``redo`` is then skipped.
         """
-        command.apply_first()
+        apply_first = getattr(command, "apply_first", None)
+        if apply_first is None:
+            raise TypeError("ModelDocument.push takes a ModelEditCommand (workbench.undo_commands)")
+        apply_first()
         self.undo_stack.push(command)
 
     def mark_modified(self) -> None:
@@ -159,51 +162,64 @@ class ModelDocument(QObject):
         self.undo_stack.resetClean()
 
     # The apply_* methods are the undo commands' access to the model: each
-    # calls one engine operation and announces the change. Call them only
-    # from a command, or the edit escapes the undo stack.
-    def apply_add_parameter(self, parameter: engine.Parameter, region: engine.InfluenceRegion) -> None:
-        self._model.add_parameter(parameter, region)
-        self._tree_edited([parameter.name])
+    # calls one engine edit, announces the change and returns what undoes it.
+    # Call them only from a command, or the edit escapes the undo stack.
+    def apply_add_parameter(self, parameter: engine.Parameter,
+                            region: engine.InfluenceRegion | None = None) -> TreeState:
+        return self._tree_edit_done(edits.add_parameter(self._model, parameter, region))
 
-    def apply_remove_parameter(self, name: str) -> None:
-        self._model.remove_parameter(name)
-        self._tree_edited([name])
+    def apply_add_parameters(
+            self, parameters_and_regions: Iterable[tuple[engine.Parameter, engine.InfluenceRegion | None]]
+    ) -> TreeState:
+        """Add several parameters with their regions at once (all or none)."""
+        return self._tree_edit_done(edits.add_parameters(self._model, parameters_and_regions))
 
-    def apply_replace_parameter(self, parameter: engine.Parameter) -> None:
+    def apply_remove_parameter(self, name: str) -> TreeState:
+        """Remove one parameter; its children move up to its parent."""
+        return self._tree_edit_done(edits.remove_parameter(self._model, name))
+
+    def apply_remove_subtree(self, name: str) -> TreeState:
+        """Remove a parameter and everything below it."""
+        return self._tree_edit_done(edits.remove_subtree(self._model, name))
+
+    def apply_replace_parameter(self, parameter: engine.Parameter) -> TreeState:
         """Replace the parameter of the same name (new properties, or a new parent)."""
-        tree = self._model.parameters
-        old = tree[parameter.name]
-        tree.replace(parameter)
-        try:
-            self._model.validate()          # e.g. a field translation needs displacements
-        except engine.UserError:
-            tree.replace(old)
-            raise
-        self._model.changed()
-        self._tree_edited([parameter.name])
+        return self._tree_edit_done(edits.replace_parameter(self._model, parameter))
 
-    def apply_rename_parameter(self, old: str, new: str) -> None:
-        parameters = renamed_parameters(self._model.parameters, old, new)
-        restore_tree(self._model, TreeSnapshot(tuple(parameters), {new: self._model.regions[old]}),
-                     drop_regions=[old])
-        self._tree_edited([old, new], renamed={old: new})
+    def apply_rename_parameter(self, old: str, new: str) -> TreeState:
+        return self._tree_edit_done(edits.rename_parameter(self._model, old, new))
 
-    def apply_restore_tree(self, snapshot: TreeSnapshot, drop_regions=()) -> None:
-        """Make the tree the snapshot's, its regions put back (undoing a removal)."""
-        before = set(self._model.parameters.names)
-        restore_tree(self._model, snapshot, drop_regions)
-        after = set(self._model.parameters.names)
-        self._tree_edited(sorted(before ^ after) or [p.name for p in snapshot.parameters])
+    def apply_move_parameter(self, name: str, parent: str | None, before: str | None = None) -> TreeState:
+        return self._tree_edit_done(edits.move_parameter(self._model, name, parent, before))
 
-    def apply_set_region(self, name: str, region: engine.InfluenceRegion) -> None:
-        self._model.set_region(name, region)
+    def apply_restore_tree(self, state: TreeState) -> TreeState:
+        """Make the tree ``state``'s (an undo or a redo); returns the state that takes it back."""
+        return self._tree_edit_done(edits.restore_tree(self._model, state))
+
+    def apply_set_region(self, name: str, region: engine.InfluenceRegion) -> engine.InfluenceRegion:
+        """Replace a whole region; returns the one it replaced."""
+        old = edits.set_region(self._model, name, region)
         self._regions_edited([name])
+        return old
 
-    def apply_weights(self, name: str, indices, weights) -> None:
-        """Give the vertices ``indices`` of ``name``'s region these weights (NaN: take them out)."""
-        self._model.parameters[name]
-        self._model.set_region(name, with_weights(self._model.regions[name], indices, weights))
+    def apply_weight_change(self, name: str, change: WeightChange) -> WeightChange:
+        """Write some weights of ``name``'s region (NaN: out of it); returns the change that undoes it."""
+        undo = apply_weight_change(self._model, name, change)
         self._regions_edited([name])
+        return undo
+
+    def _tree_edit_done(self, undo: TreeState) -> TreeState:
+        """Announce a tree edit whose undo state is ``undo`` (its parameters are the tree before)."""
+        renamed = {old: new for new, old in undo.renamed.items()}
+        before, after = set(undo.names), set(self._model.parameters.names)
+        names = sorted((before ^ after) - set(renamed) - set(renamed.values()))      # added or removed
+        if not names and renamed:
+            names = [name for pair in renamed.items() for name in pair]               # [old, new]: views follow
+        if not names:
+            names = (edits.changed_parameters(undo.parameters, list(self._model.parameters))
+                     or self._model.parameters.names)                                  # only the order changed
+        self._tree_edited(names, renamed)
+        return undo
 
     def _tree_edited(self, names: list[str], renamed: Mapping[str, str] | None = None) -> None:
         values = dict(self._values)

@@ -20,10 +20,10 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 import engine
 from engine.formats.mesh_io import import_mesh
+from engine.outputs.configuration_export import export_configuration
 from engine.paths import DATA_DIR
 
 from . import settings
-from .export_configuration import export_configuration
 from .recent_files import add_recent_file
 from .recovery import RecoveryEntry, orphaned_entries
 

@@ -1,10 +1,12 @@
 """Undo commands: every model edit, as a small QUndoCommand around one engine operation.
 
-Each command captures in its constructor what the edit will change (a
-parameter, a region, the tree's order, the weights of some vertices) and its
-``redo``/``undo`` call :class:`~workbench.document.ModelDocument`'s
-``apply_*`` methods, which call the engine and announce the change. Undo puts
-back the captured state itself, so the model returns bit for bit. Push them
+Each command's ``apply`` calls one :class:`~workbench.document.ModelDocument`
+``apply_*`` method, which makes one engine edit (:mod:`engine.model.edits`,
+:func:`engine.model.apply_weight_change`), announces it, and returns what
+undoes it: a :class:`~engine.model.TreeState` for the tree, a
+:class:`~engine.model.WeightChange` for weights, the old region for a whole
+region. The command keeps that and ``revert`` applies it, so the model
+returns bit for bit; undoing returns the redo state in turn. Push commands
 with :meth:`ModelDocument.push`, which applies the edit first and so refuses
 an invalid one (an :class:`engine.UserError`) before it reaches the stack.
 
@@ -20,13 +22,11 @@ from __future__ import annotations
 import weakref
 from typing import TYPE_CHECKING
 
-import numpy as np
 from PySide6.QtGui import QUndoCommand
 
 import engine
-from engine.errors import UserError
-
-from .model_edits import TreeSnapshot, moved_parameters, subtree, without_subtree
+from engine.model.edits import TreeState, subtree
+from engine.model.weight_changes import WeightChange, weight_change
 
 if TYPE_CHECKING:
     from .document import ModelDocument
@@ -41,13 +41,13 @@ class ModelEditCommand(QUndoCommand):
     commands, and a strong reference back would keep the document alive.
     """
 
-    def __init__(self, document: "ModelDocument", text: str):
+    def __init__(self, document: ModelDocument, text: str):
         super().__init__(text)
         self._document_ref = weakref.ref(document)
         self._skip_next_redo = False
 
     @property
-    def document(self) -> "ModelDocument":
+    def document(self) -> ModelDocument:
         document = self._document_ref()
         if document is None:
             raise RuntimeError("the document of this undo command is gone")
@@ -78,79 +78,89 @@ class ModelEditCommand(QUndoCommand):
         raise NotImplementedError
 
 
-class AddParameterCommand(ModelEditCommand):
+class TreeEditCommand(ModelEditCommand):
+    """Base class of the tree edits: :meth:`edit` makes the edit and returns the state that undoes it.
+
+    Undo restores that state and keeps the state it returns, which redo
+    restores: both directions are exact whatever the edit was.
+    """
+
+    def __init__(self, document: ModelDocument, text: str):
+        super().__init__(document, text)
+        self._undo_state: TreeState | None = None
+        self._redo_state: TreeState | None = None
+
+    def edit(self) -> TreeState:
+        raise NotImplementedError
+
+    def apply(self) -> None:
+        if self._redo_state is None:
+            self._undo_state = self.edit()
+        else:
+            self._undo_state = self.document.apply_restore_tree(self._redo_state)
+
+    def revert(self) -> None:
+        if self._undo_state is None:
+            raise RuntimeError("undo before the edit was made")
+        self._redo_state = self.document.apply_restore_tree(self._undo_state)
+
+
+class AddParameterCommand(TreeEditCommand):
     """Add a new parameter (at the end of the order) with its region (empty if none is given)."""
 
-    def __init__(self, document: "ModelDocument", parameter: engine.Parameter,
+    def __init__(self, document: ModelDocument, parameter: engine.Parameter,
                  region: engine.InfluenceRegion | None = None):
         super().__init__(document, f"Add parameter {parameter.name}")
         self._parameter = parameter.copy()
         self._region = region.copy() if region is not None else engine.InfluenceRegion()
 
-    def apply(self) -> None:
-        self.document.apply_add_parameter(self._parameter.copy(), self._region.copy())
-
-    def revert(self) -> None:
-        # A new parameter has no children and sits last, so removing it restores the tree exactly.
-        self.document.apply_remove_parameter(self._parameter.name)
+    def edit(self) -> TreeState:
+        return self.document.apply_add_parameter(self._parameter, self._region)
 
 
-class RemoveParameterCommand(ModelEditCommand):
+class RemoveParameterCommand(TreeEditCommand):
     """Remove a parameter and its region; its children move up to its parent (as the engine does)."""
 
-    def __init__(self, document: "ModelDocument", name: str):
+    def __init__(self, document: ModelDocument, name: str):
+        document.model.parameters[name]
         super().__init__(document, f"Remove parameter {name}")
         self._name = name
-        # The engine re-parents the children and drops the parameter from the order;
-        # undo needs the whole order and the children's parents back, so keep the tree.
-        self._before = TreeSnapshot.of(document.model, [name])
 
-    def apply(self) -> None:
-        self.document.apply_remove_parameter(self._name)
-
-    def revert(self) -> None:
-        self.document.apply_restore_tree(self._before)
+    def edit(self) -> TreeState:
+        return self.document.apply_remove_parameter(self._name)
 
 
-class RemoveSubtreeCommand(ModelEditCommand):
+class RemoveSubtreeCommand(TreeEditCommand):
     """Remove a parameter together with everything below it, and their regions.
 
     Undo puts the whole subtree back in its place in the order, with its
     regions, bit for bit.
     """
 
-    def __init__(self, document: "ModelDocument", name: str):
+    def __init__(self, document: ModelDocument, name: str):
         names = subtree(document.model.parameters, name)
         below = f" and {len(names) - 1} below it" if len(names) > 1 else ""
         super().__init__(document, f"Remove parameter {name}{below}")
         self._name = name
         self.removed = names
-        self._before = TreeSnapshot.of(document.model, names)
 
-    def apply(self) -> None:
-        snapshot, removed = without_subtree(self.model, self._name)
-        self.document.apply_restore_tree(snapshot, drop_regions=removed)
-
-    def revert(self) -> None:
-        self.document.apply_restore_tree(self._before)
+    def edit(self) -> TreeState:
+        return self.document.apply_remove_subtree(self._name)
 
 
-class ReplaceParameterCommand(ModelEditCommand):
+class ReplaceParameterCommand(TreeEditCommand):
     """Give a parameter new properties (type, axis, pivot, range, default, parent, …); same name."""
 
-    def __init__(self, document: "ModelDocument", parameter: engine.Parameter, text: str | None = None):
+    def __init__(self, document: ModelDocument, parameter: engine.Parameter, text: str | None = None):
+        document.model.parameters[parameter.name]
         super().__init__(document, text or f"Edit parameter {parameter.name}")
-        self._old = document.model.parameters[parameter.name].copy()
         self._new = parameter.copy()
 
-    def apply(self) -> None:
-        self.document.apply_replace_parameter(self._new.copy())
-
-    def revert(self) -> None:
-        self.document.apply_replace_parameter(self._old.copy())
+    def edit(self) -> TreeState:
+        return self.document.apply_replace_parameter(self._new)
 
 
-class MoveParameterCommand(ModelEditCommand):
+class MoveParameterCommand(TreeEditCommand):
     """Move a parameter under another one (``None``: to the top), before its new sibling ``before``
     (``None``: after the last one). Its subtree moves with it.
 
@@ -159,90 +169,89 @@ class MoveParameterCommand(ModelEditCommand):
     parameters is the order siblings are shown and saved in.
     """
 
-    def __init__(self, document: "ModelDocument", name: str, parent: str | None, before: str | None = None):
-        self._after = TreeSnapshot(tuple(moved_parameters(document.model.parameters, name, parent, before)), {})
-        self._before = TreeSnapshot.of(document.model)
+    def __init__(self, document: ModelDocument, name: str, parent: str | None, before: str | None = None):
         where = f"under {parent}" if parent is not None else "to the top"
         if before is not None:
-            where = f"before {before}" if document.model.parameters[name].parent == parent else f"{where}, before {before}"
+            same_parent = document.model.parameters[name].parent == parent
+            where = f"before {before}" if same_parent else f"{where}, before {before}"
         super().__init__(document, f"Move {name} {where}")
+        self._move = (name, parent, before)
 
-    def apply(self) -> None:
-        self.document.apply_restore_tree(self._after)
-
-    def revert(self) -> None:
-        self.document.apply_restore_tree(self._before)
+    def edit(self) -> TreeState:
+        return self.document.apply_move_parameter(*self._move)
 
 
-class RenameParameterCommand(ModelEditCommand):
+class RenameParameterCommand(TreeEditCommand):
     """Rename a parameter; its region and its children's ``parent`` follow, the order stays."""
 
-    def __init__(self, document: "ModelDocument", old: str, new: str):
+    def __init__(self, document: ModelDocument, old: str, new: str):
         super().__init__(document, f"Rename {old} to {new}")
         document.model.parameters[old]
         self._old, self._new = old, new
 
-    def apply(self) -> None:
-        self.document.apply_rename_parameter(self._old, self._new)
-
-    def revert(self) -> None:
-        self.document.apply_rename_parameter(self._new, self._old)
+    def edit(self) -> TreeState:
+        return self.document.apply_rename_parameter(self._old, self._new)
 
 
 class SetRegionCommand(ModelEditCommand):
     """Replace a parameter's whole influence region (indices, weights, displacements)."""
 
-    def __init__(self, document: "ModelDocument", name: str, region: engine.InfluenceRegion,
+    def __init__(self, document: ModelDocument, name: str, region: engine.InfluenceRegion,
                  text: str | None = None):
         super().__init__(document, text or f"Set region of {name}")
         document.model.parameters[name]
         self._name = name
-        self._old = document.model.regions[name].copy()
         self._new = region.copy()
+        self._old: engine.InfluenceRegion | None = None
 
     def apply(self) -> None:
-        self.document.apply_set_region(self._name, self._new.copy())
+        self._old = self.document.apply_set_region(self._name, self._new)
 
     def revert(self) -> None:
-        self.document.apply_set_region(self._name, self._old.copy())
+        if self._old is None:
+            raise RuntimeError("undo before the edit was made")
+        self.document.apply_set_region(self._name, self._old)
 
 
 class WeightsChangedCommand(ModelEditCommand):
     """The weights of some vertices of one region changed: a dab, a stroke, a smoothing.
 
-    ``indices`` are model vertex indices, ``before`` and ``after`` their
-    weights, NaN meaning "not in the region" (see
-    :meth:`ModelDocument.region_weights`). Leave ``before`` out to read it
-    from the model now. A tool that already wrote ``after`` into the model
-    (live preview while painting) passes ``before`` and
+    Holds one :class:`~engine.model.WeightChange`: ``indices`` are model
+    vertex indices, ``before`` and ``after`` their weights, NaN meaning "not
+    in the region" (see :meth:`ModelDocument.region_weights`). Leave
+    ``before`` out to read it from the model now; a tool with a
+    :class:`~engine.model.WeightChange` in hand uses :meth:`from_change`. A
+    tool that already wrote ``after`` into the model passes ``before`` and
     ``already_applied=True``.
 
     Commands with the same ``stroke_id`` (not ``None``) on the same
     parameter merge into one undo step: every dab of a brush stroke. The
-    merged step keeps the first ``before`` and the last ``after`` of each vertex.
+    merged step keeps the first ``before`` and the last ``after`` of each
+    vertex (:meth:`WeightChange.followed_by <engine.model.WeightChange.followed_by>`).
     """
 
-    def __init__(self, document: "ModelDocument", name: str, indices, after, before=None, *,
+    def __init__(self, document: ModelDocument, name: str, indices, after, before=None, *,
                  stroke_id: object = None, text: str = "Paint weights", already_applied: bool = False):
         super().__init__(document, text)
-        document.model.parameters[name]
-        indices = np.asarray(indices, dtype=np.int64).reshape(-1)
-        after = np.asarray(after, dtype=float).reshape(-1)
         if before is None:
             if already_applied:
                 raise ValueError("already_applied=True needs the weights from before")
-            before = document.region_weights(name, indices)
-        before = np.asarray(before, dtype=float).reshape(-1)
-        if not (indices.shape == after.shape == before.shape):
-            raise UserError(f"weights: {len(indices)} vertex indices, {len(before)} weights before "
-                            f"and {len(after)} after")
-        order = np.argsort(indices, kind="stable")
+            change = weight_change(document.model, name, indices, after)
+        else:
+            document.model.parameters[name]
+            change = WeightChange(indices, before, after)
         self._name = name
-        self.indices, self.before, self.after = indices[order], before[order], after[order]
-        if len(self.indices) > 1 and np.any(self.indices[1:] == self.indices[:-1]):
-            raise UserError("weights: a vertex index is listed twice")
+        self.change = change
+        self._undo = change.inverse()     # replaced by the inverse the engine returns when it applies it
         self._stroke_id = stroke_id
         self._already_applied = already_applied
+
+    @classmethod
+    def from_change(cls, document: ModelDocument, name: str, change: WeightChange, *, stroke_id: object = None,
+                    text: str = "Paint weights", already_applied: bool = False) -> WeightsChangedCommand:
+        """The command for a :class:`~engine.model.WeightChange` (e.g. :meth:`engine.painting.PaintStroke.finish`)."""
+        return cls(document, name, change.indices, change.after, change.before, stroke_id=stroke_id, text=text,
+                   already_applied=already_applied)
 
     @property
     def parameter(self) -> str:
@@ -255,26 +264,18 @@ class WeightsChangedCommand(ModelEditCommand):
             super().apply_first()
 
     def apply(self) -> None:
-        self.document.apply_weights(self._name, self.indices, self.after)
+        self._undo = self.document.apply_weight_change(self._name, self.change)
 
     def revert(self) -> None:
-        self.document.apply_weights(self._name, self.indices, self.before)
+        self.document.apply_weight_change(self._name, self._undo)
 
-    def id(self) -> int:  # noqa: A003 (Qt's name)
+    def id(self) -> int:
         return WEIGHTS_COMMAND_ID if self._stroke_id is not None else -1
 
-    def mergeWith(self, other: QUndoCommand) -> bool:  # noqa: N802 (Qt's name)
+    def mergeWith(self, other: QUndoCommand) -> bool:
         if (not isinstance(other, WeightsChangedCommand) or other._stroke_id != self._stroke_id
                 or other._name != self._name):
             return False
-        indices = np.union1d(self.indices, other.indices)
-        mine = np.isin(indices, self.indices, assume_unique=True)
-        theirs = np.isin(indices, other.indices, assume_unique=True)
-        before = np.empty(len(indices))
-        before[mine] = self.before
-        before[~mine] = other.before[np.searchsorted(other.indices, indices[~mine])]
-        after = np.empty(len(indices))
-        after[theirs] = other.after
-        after[~theirs] = self.after[np.searchsorted(self.indices, indices[~theirs])]
-        self.indices, self.before, self.after = indices, before, after
+        self.change = self.change.followed_by(other.change)
+        self._undo = other._undo.followed_by(self._undo)
         return True

@@ -1,4 +1,5 @@
-"""The 3-D view of the model: the only workbench module that imports pyvista.
+"""The 3-D view of the model: the viewport widget (with its parts, picking and points modules, the drawing
+modules of the workbench that import pyvista).
 
 Each part of the model is one actor drawing its own :class:`pyvista.PolyData`,
 which holds the points, the polygons, the vertex colours and the vertex
@@ -20,27 +21,20 @@ few vertices fast with :meth:`Viewport.update_colors` (a brush dab).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import NamedTuple
-
 import numpy as np
 import pyvista as pv
-from pyvistaqt import QtInteractor
 from PySide6.QtWidgets import QVBoxLayout, QWidget
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkCommonCore import reference as vtk_reference
-from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkStaticCellLocator
-from vtkmodules.vtkRenderingCore import vtkCellPicker
+from pyvistaqt import QtInteractor
 
 import engine
-from engine.model.cells import cell_sizes, cell_starts
-
 from engine.painting import heat_colors
 
 from .colors import base_vertex_colors
 from .document import ModelDocument
-from .local_normals import LocalNormals
 from .view_state import ViewState
+from .viewport_parts import VERTEX_COLORS, PartView, split_by_part
+from .viewport_picking import SurfacePick, cell_weights, new_cell_picker, pick_surface
+from .viewport_points import PointOverlays
 
 # Direction from the model towards the camera for each preset view. The
 # default head faces +Z with +Y up, so its left side is +X.
@@ -49,85 +43,8 @@ VIEWS: dict[str, tuple[float, float, float]] = {
     "side": (1.0, 0.0, 0.0),
     "three-quarter": (1.0, 0.12, 1.1),
 }
-VERTEX_COLORS = "vertex_colors"  # name of the per-vertex sRGB array on each part mesh
-POINT_SIZE = 11.0                # dots drawn by Viewport.show_points, px
-LABEL_FONT_SIZE = 11
 BACKGROUND_BOTTOM = "#5d6670"
 BACKGROUND_TOP = "#c9ced4"
-
-
-class SurfacePick(NamedTuple):
-    """Where a ray through a pixel meets the drawn surface."""
-
-    point: np.ndarray   # (3,) mm, on the surface as drawn (the current pose)
-    vertex: int         # model index of the vertex of the hit polygon nearest the point
-    part: str
-    normal: np.ndarray  # (3,) unit normal of the hit polygon, towards the camera side
-
-
-@dataclass
-class _PartView:
-    """One part on screen: the mesh its actor draws, the normals filter that shades it, the actor."""
-
-    vertex_indices: np.ndarray  # model vertex index of each mesh point
-    mesh: pv.PolyData           # points, polygons, colours and normals: what the mapper draws
-    normals: vtkPolyDataNormals  # reads the mesh's points and polygons only (not its colours)
-    actor: object
-    locator: vtkStaticCellLocator | None = None    # for picking; rebuilt when the points have moved
-    locator_points_time: int = -1
-    local_normals: LocalNormals | None = None      # for moving a few points (live preview), built on first use
-
-    @classmethod
-    def shading(cls, mesh: pv.PolyData) -> vtkPolyDataNormals:
-        """A normals filter over ``mesh``'s own points and polygons (shared, not copied)."""
-        geometry = vtkPolyData()
-        geometry.SetPoints(mesh.GetPoints())
-        geometry.SetPolys(mesh.GetPolys())
-        normals = vtkPolyDataNormals()
-        normals.SetInputData(geometry)
-        normals.SplittingOff()       # one normal per vertex: smooth, and points stay 1:1
-        normals.ConsistencyOff()     # the model's polygons are already consistently wound
-        normals.ComputePointNormalsOn()
-        normals.ComputeCellNormalsOff()
-        return normals
-
-    def update_normals(self) -> None:
-        """Recompute the vertex normals after the points moved (the filter sees the shared points change)."""
-        self.normals.GetInputDataObject(0, 0).Modified()
-        self.normals.Update()
-        self.mesh.GetPointData().SetNormals(self.normals.GetOutput().GetPointData().GetNormals())
-
-    def update_normals_near(self, moved: np.ndarray) -> None:
-        """Recompute only the normals that moving the mesh points ``moved`` changes (a live-preview dab)."""
-        if self.local_normals is None:
-            self.local_normals = LocalNormals(self.mesh.faces, self.mesh.n_points)
-        array = self.mesh.GetPointData().GetNormals()
-        normals = pv.convert_array(array)
-        self.local_normals.update(np.asarray(self.mesh.points, dtype=float), normals, moved)
-        array.Modified()
-
-    def current_locator(self) -> vtkStaticCellLocator:
-        """A cell locator over the mesh as drawn now: a pick at 94k vertices takes 0.5 ms instead of 30."""
-        points_time = self.mesh.GetPoints().GetMTime()
-        if self.locator is None or self.locator_points_time != points_time:
-            self.locator = vtkStaticCellLocator()
-            self.locator.SetDataSet(self.mesh)
-            # Rebuilt here when the points move; VTK on its own would also rebuild after every
-            # colour change (the mesh's time stamp counts its arrays): 12 ms per dab at 94k.
-            self.locator.UseExistingSearchStructureOn()
-            self.locator.BuildLocator()
-            self.locator_points_time = points_time
-        return self.locator
-
-
-@dataclass
-class _PointSet:
-    """Dots drawn over the model (and their labels): one cloud, its actors, what it was built with."""
-
-    cloud: pv.PolyData
-    actors: list
-    labels: list[str] | None
-    color: str
 
 
 class Viewport(QWidget):
@@ -137,8 +54,7 @@ class Viewport(QWidget):
         super().__init__(parent)
         self._document = document
         self._view_state = view_state
-        self._parts: dict[str, _PartView] = {}
-        self._point_sets: dict[str, _PointSet] = {}
+        self._parts: dict[str, PartView] = {}
         self._view = "front"
         self._base_colors = np.zeros((0, 3), dtype=np.uint8)
         self._overlay: np.ndarray | None = None      # colours a tool asked for, else None
@@ -152,6 +68,7 @@ class Viewport(QWidget):
             # fight the window's shortcuts.
             self.plotter.iren.clear_key_event_callbacks()
         self.plotter.set_background(BACKGROUND_BOTTOM, top=BACKGROUND_TOP)
+        self._points = PointOverlays(self.plotter)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.plotter)
@@ -167,9 +84,7 @@ class Viewport(QWidget):
         view_state.heat_map_changed.connect(self._refresh_colors)
         document.regions_changed.connect(self._on_regions_changed)
         document.parameters_changed.connect(self._on_parameters_edited)
-        self._picker = vtkCellPicker()
-        self._picker.SetTolerance(0.0005)
-        self._picker.PickFromListOn()
+        self._picker = new_cell_picker()
         self._build(document.model)
         self.set_view("front")
 
@@ -214,48 +129,17 @@ class Viewport(QWidget):
         Called again with the same name, labels and colour it moves the dots
         (and labels) in place. Labels of points behind the model are hidden.
         """
-        points = np.asarray(points, dtype=float).reshape(-1, 3)
-        labels = None if labels is None else [str(label) for label in labels]
-        entry = self._point_sets.get(name)
-        if entry is None or entry.labels != labels or entry.color != color or entry.cloud.n_points != len(points):
-            self._remove_points(name)
-            cloud = pv.PolyData(points.copy())
-            actors = [self.plotter.add_mesh(cloud, color=color, point_size=POINT_SIZE, render_points_as_spheres=True,
-                                            lighting=False, name=f"points:{name}", pickable=False,
-                                            reset_camera=False, render=False)]
-            if labels:
-                cloud.point_data["labels"] = np.array(labels)
-                actors.append(self.plotter.add_point_labels(
-                    cloud, "labels", name=f"labels:{name}", font_size=LABEL_FONT_SIZE, text_color="white",
-                    shape_color="#20262c", shape_opacity=0.55, margin=2, show_points=False,
-                    always_visible=False, tolerance=0.01, reset_camera=False, render=False))
-            entry = self._point_sets[name] = _PointSet(cloud, actors, labels, color)
-        else:
-            entry.cloud.points[:] = points
-            entry.cloud.Modified()
-        for actor in entry.actors:
-            actor.SetVisibility(True)
+        self._points.show(name, points, color, labels)
         self._schedule_render()
 
     def hide_points(self, name: str) -> None:
         """Stop drawing the dots (and labels) shown under ``name``, if any."""
-        entry = self._point_sets.get(name)
-        if entry is not None and entry.actors[0].GetVisibility():
-            for actor in entry.actors:
-                actor.SetVisibility(False)
+        if self._points.hide(name):
             self._schedule_render()
 
     def shown_points(self, name: str) -> np.ndarray:
         """(k, 3) mm: the dots drawn now under ``name`` (none while hidden)."""
-        entry = self._point_sets.get(name)
-        if entry is None or not entry.actors[0].GetVisibility():
-            return np.zeros((0, 3))
-        return np.array(entry.cloud.points)
-
-    def _remove_points(self, name: str) -> None:
-        entry = self._point_sets.pop(name, None)
-        for actor in entry.actors if entry is not None else ():
-            self.plotter.remove_actor(actor, render=False)
+        return self._points.shown(name)
 
     def displayed_normals(self, indices) -> np.ndarray:
         """(k, 3) unit normals of the model vertices ``indices`` as drawn now (NaN where not drawn)."""
@@ -350,20 +234,12 @@ class Viewport(QWidget):
         same point on another copy of the mesh — the rest mesh, when the
         drawn one is posed — is ``weights @ other[vertices]``.
         """
-        found = self._pick(x, y)
+        found = pick_surface(self._picker, self.plotter, self._parts, x, y)
         if found is None:
             return None
         hit, view, cell_id = found
-        cell = view.mesh.GetCell(cell_id)
-        n = cell.GetNumberOfPoints()
-        closest, sub_id, pcoords, dist2 = [0.0, 0.0, 0.0], vtk_reference(0), [0.0, 0.0, 0.0], vtk_reference(0.0)
-        weights = [0.0] * n
-        cell.EvaluatePosition(list(hit.point), closest, sub_id, pcoords, dist2, weights)
-        ids = np.array([cell.GetPointId(k) for k in range(n)], dtype=np.int64)
-        weights = np.clip(np.asarray(weights, dtype=float), 0.0, None)
-        total = weights.sum()
-        weights = weights / total if total > 0 else np.full(n, 1.0 / n)
-        return hit, view.vertex_indices[ids], weights
+        vertices, weights = cell_weights(view, cell_id, hit.point)
+        return hit, vertices, weights
 
     def _local_lookup(self) -> dict[str, np.ndarray]:
         if self._local_of is None:
@@ -386,37 +262,8 @@ class Viewport(QWidget):
 
     def pick(self, x: float, y: float) -> SurfacePick | None:
         """The visible surface under widget pixel (``x``, ``y``) (Qt coordinates, y down), or ``None``."""
-        found = self._pick(x, y)
+        found = pick_surface(self._picker, self.plotter, self._parts, x, y)
         return None if found is None else found[0]
-
-    def _pick(self, x: float, y: float):
-        renderer = self.plotter.renderer
-        picker = self._picker
-        picker.InitializePickList()
-        picker.RemoveAllLocators()
-        visible = [part for part, view in self._parts.items() if view.actor.GetVisibility()]
-        for part in visible:
-            picker.AddPickList(self._parts[part].actor)
-            picker.AddLocator(self._parts[part].current_locator())
-        if not visible:
-            return None
-        ratio = self.plotter.devicePixelRatioF() if hasattr(self.plotter, "devicePixelRatioF") else 1.0
-        height = renderer.GetRenderWindow().GetSize()[1]
-        if not picker.Pick(x * ratio, height - 1 - y * ratio, 0.0, renderer):
-            return None
-        actor = picker.GetActor()
-        part = next((name for name in visible if self._parts[name].actor is actor), None)
-        if part is None:
-            return None
-        view = self._parts[part]
-        point = np.array(picker.GetPickPosition())
-        cell_id = picker.GetCellId()
-        cell = view.mesh.get_cell(cell_id)
-        ids = np.asarray(cell.point_ids)
-        drawn = view.mesh.points[ids]
-        nearest = ids[int(np.argmin(np.linalg.norm(drawn - point, axis=1)))]
-        normal = np.array(picker.GetPickNormal())
-        return SurfacePick(point, int(view.vertex_indices[nearest]), part, normal), view, cell_id
 
     def world_to_widget(self, point) -> tuple[float, float]:
         """Widget pixel (x, y; Qt coordinates) where the world point ``point`` (mm) is drawn."""
@@ -461,7 +308,7 @@ class Viewport(QWidget):
     def close_plotter(self) -> None:
         """Release the VTK render window and every actor (call before the widget goes away)."""
         self._parts.clear()
-        self._point_sets.clear()
+        self._points.clear()
         self.plotter.close()
 
     # -- building --------------------------------------------------------
@@ -475,7 +322,7 @@ class Viewport(QWidget):
         # Painted colours (eyebrows, iris, pupil) win over the part colour, as in engine.outputs.render.
         self._base_colors = base_vertex_colors(model)
         colors = self._current_colors()
-        for part, (indices, cells) in _split_by_part(model).items():
+        for part, (indices, cells) in split_by_part(model).items():
             if len(cells) == 0:
                 continue
             mesh = pv.PolyData(np.ascontiguousarray(points[indices]), cells)
@@ -491,7 +338,7 @@ class Viewport(QWidget):
             # between that re-runs (in Python, copying the mesh) on every colour change.
             mesh.point_data.active_scalars_name = VERTEX_COLORS
             actor.GetMapper().SetInputData(mesh)
-            view = _PartView(indices, mesh, _PartView.shading(mesh), actor)
+            view = PartView(indices, mesh, PartView.shading(mesh), actor)
             view.update_normals()
             self._parts[part] = view
 
@@ -547,34 +394,3 @@ class Viewport(QWidget):
         # would render now and then again in the paint it triggers.
         self.plotter.update()
 
-
-def _split_by_part(model: engine.Model) -> dict[str, tuple[np.ndarray, np.ndarray]]:
-    """Per part: (model vertex indices, flat cell array indexing into them).
-
-    A polygon belongs to the part of its first vertex. A part's mesh holds
-    its own vertices plus any other vertex its polygons use, so a polygon
-    that straddles two parts is still drawn whole.
-    """
-    faces = model.faces
-    n_parts = len(model.parts)
-    if len(faces) == 0:
-        return {}
-    sizes = cell_sizes(faces)
-    starts = cell_starts(sizes)
-    cell_part = model.vertex_part[faces[starts + 1]]
-    cell_of_entry = np.repeat(np.arange(len(starts)), sizes + 1)
-    is_count = np.zeros(len(faces), dtype=bool)
-    is_count[starts] = True
-    out = {}
-    for p in range(n_parts):
-        entries = faces[cell_part[cell_of_entry] == p]
-        counts = is_count[cell_part[cell_of_entry] == p]
-        used = entries[~counts]
-        own = np.flatnonzero(model.vertex_part == p)
-        indices = np.union1d(own, used)
-        lookup = np.full(model.n_vertices, -1, dtype=np.int64)
-        lookup[indices] = np.arange(len(indices))
-        cells = entries.copy()
-        cells[~counts] = lookup[used]
-        out[model.parts[p]] = (indices, cells)
-    return out

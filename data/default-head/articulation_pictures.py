@@ -104,16 +104,16 @@ def sheet(rows, column_labels, row_labels, scale=0.5, pad=6, label_height=26, la
 def sections_picture(model, states, xs=(0.0, 6.0, 12.0, 17.0), cell=(330, 200), window=(22.0, 13.0), pad=6):
     """Sagittal sections through the lips (forward = right, up = up), one row per state, one column per x.
 
-    Upper lip blue, lower lip red, as ``derive_default_head.LipContact`` tells them apart; the same
+    Upper lip blue, lower lip red, as ``lip_contact.LipContact`` tells them apart; the same
     scale in every cell, each window following the front of the lips."""
-    import derive_default_head as derive
+    from lip_contact import LipContact
 
     n = model.n_vertices
     jaw = model.regions["jaw_open"].dense(n)
     total = jaw + model.regions["head_tilt"].dense(n) + model.regions["neck_lean"].dense(n)
     share = np.divide(jaw, total, out=np.zeros(n), where=total > 0)
     skin = model.vertex_part == model.parts.index("skin")
-    contact = derive.LipContact(model.vertices, model.triangles(), skin, share, model.landmarks)
+    contact = LipContact(model.vertices, model.triangles(), skin, share, model.landmarks)
     lm = model.landmarks
     label_width, label_height = 170, 24
     W = label_width + len(xs) * (cell[0] + pad) + pad

@@ -6,7 +6,7 @@ end with status 2 and one line on stderr, ``error: <file>:<line>: <what>``,
 never a traceback.
 
 The verbs live in one module each (``model_verbs``, ``command_verbs``,
-``speech_verbs``, ``export_verbs``, ``mocap_verbs``), sharing only
+``speech_verbs``, ``export_verbs``, ``config_verbs``, ``mocap_verbs``), sharing only
 :mod:`engine.cli.common`. Other installed packages add verbs through the
 ``artificial_person.verbs`` entry point group: the workbench adds
 ``workbench`` that way, so the engine never imports the GUI.
@@ -26,7 +26,7 @@ from engine.cli.common import PROG, CliParser, say_error
 from engine.errors import UserError
 
 #: The engine's own verb modules, in the order ``--help`` lists them; each has ``add_verbs(verbs)``.
-VERB_MODULES = ("model_verbs", "command_verbs", "speech_verbs", "export_verbs", "mocap_verbs")
+VERB_MODULES = ("model_verbs", "command_verbs", "speech_verbs", "export_verbs", "config_verbs", "mocap_verbs")
 #: Entry point group through which other packages add verbs (``add_verbs(verbs)`` callables).
 PLUGIN_GROUP = "artificial_person.verbs"
 

@@ -154,8 +154,10 @@ def run_import(args: argparse.Namespace) -> int:
 
 
 def run_pca(args: argparse.Namespace) -> int:
-    from engine.mocap.pca import (default_stages, multistage_pca, parse_frame_list, parse_stage, plot_components,
-                            save_articulation_file, select_frames)
+    from engine.mocap.articulation_file import save_articulation_file
+    from engine.mocap.component_plot import plot_components
+    from engine.mocap.frame_selection import parse_frame_list, select_frames
+    from engine.mocap.pca import default_stages, multistage_pca, parse_stage
     from engine.mocap.session import load_session
 
     out = _suffix(args.output, (".h5", ".hdf5"), "an articulation file")
@@ -184,8 +186,10 @@ def run_apply(args: argparse.Namespace) -> int:
     import numpy as np
 
     from engine.formats.model_files import save_model
-    from engine.mocap.apply import apply_articulation, reconstruct_held_out
-    from engine.mocap.pca import load_articulation_file, reselect_frames
+    from engine.mocap.apply import apply_articulation
+    from engine.mocap.articulation_file import load_articulation_file
+    from engine.mocap.frame_selection import reselect_frames
+    from engine.mocap.held_out import reconstruct_held_out
     from engine.mocap.session import load_session
 
     out = _suffix(args.output, (".xml",), "a model")

@@ -10,10 +10,19 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from engine.cli.common import VIEW_NAMES, add_library_option, add_model_option, load_model_argument, positive_number, size
+from engine.cli.common import (
+    VIEW_NAMES,
+    add_library_option,
+    add_model_option,
+    load_model_argument,
+    positive_number,
+    size,
+)
 from engine.errors import UserError
 
 OUTPUT_SUFFIXES = (".mp4", ".wav", ".xml")
+#: The table options, in the order the old verb checked them: each is a kind of speech file.
+TABLE_KINDS = ("tracks", "phones", "landmarks")
 
 
 def add_verbs(verbs: Any) -> None:
@@ -45,34 +54,35 @@ def add_verbs(verbs: Any) -> None:
 
 
 def run_say(args: argparse.Namespace) -> int:
+    """Speak the text; write every file asked for, all together (:mod:`engine.outputs.speech_files`)."""
     from engine.commands import load_library
+    from engine.outputs.speech_files import write_speech_files
+    from engine.outputs.video_writer import progress_printer
     from engine.speech.articulation import load_articulation
-    from engine.speech.say import speak, write_landmarks
+    from engine.speech.say import speak
 
-    outputs = [args.output, args.tracks, args.phones, args.landmarks]
-    if not any(outputs):
+    if not any(getattr(args, option) for option in ("output", *TABLE_KINDS)):
         raise UserError("nothing to write: give -o OUT.(mp4|wav|xml), --tracks, --phones or --landmarks")
+    targets: dict[str, Path] = {}
     out = _checked_output(args.output)
-    for path, suffix in ((args.tracks, ".csv"), (args.phones, ".csv"), (args.landmarks, ".csv")):
-        if path is not None and Path(path).suffix.lower() != suffix:
-            raise UserError(f"unknown extension '{Path(path).suffix or Path(path).name}' (use {suffix})", file=path)
+    if out is not None:
+        targets[out.suffix.lower().lstrip(".")] = out
+    for kind in TABLE_KINDS:
+        path = getattr(args, kind)
+        if path is not None:
+            if Path(path).suffix.lower() != ".csv":
+                raise UserError(f"unknown extension '{Path(path).suffix or Path(path).name}' (use .csv)", file=path)
+            targets[kind] = Path(path)
     text, name = _text(args)
     model = load_model_argument(args.model)
     library = load_library(args.library)
     table = load_articulation(args.articulation)
     speech = speak(text, model, voice=args.voice, library=library, table=table,
                    coarticulation=args.coarticulation, prosody_seed=args.seed if args.prosody else None, name=name)
-    if args.phones:
-        from engine.speech.synthesis import write_phones_csv
-
-        write_phones_csv(args.phones, speech.utterance)
-    if args.tracks:
-        times = speech.frame_times(args.fps)
-        speech.timeline.write_tracks(args.tracks, fps=args.fps, end=float(times[-1]))
-    if args.landmarks:
-        write_landmarks(args.landmarks, speech, model, args.fps)
-    if out is not None:
-        _write_output(out, speech, model, args)
+    progress = None
+    if "mp4" in targets and not args.quiet:
+        progress = progress_printer("rendering", unit="frames" if len(targets) == 1 else "steps")
+    write_speech_files(speech, model, targets, fps=args.fps, size=args.size, view=args.view, progress=progress)
     return 0
 
 
@@ -86,7 +96,7 @@ def _checked_output(path: str | None) -> Path | None:
     return out
 
 
-def _text(args) -> tuple[str, str]:
+def _text(args: argparse.Namespace) -> tuple[str, str]:
     if args.file is None:
         return args.text, "<text>"
     try:
@@ -96,23 +106,3 @@ def _text(args) -> tuple[str, str]:
     except UnicodeDecodeError:
         raise UserError("the text file is not UTF-8", file=args.file) from None
 
-
-def _write_output(out: Path, speech, model, args) -> None:
-    suffix = out.suffix.lower()
-    if suffix == ".wav":
-        from engine.speech.synthesis import write_wav
-
-        write_wav(out, speech.utterance)
-    elif suffix == ".xml":
-        from engine.commands import write_low_level
-
-        write_low_level(speech.activations, out)
-    else:
-        from engine.outputs.video import write_video, progress_printer
-
-        times = speech.frame_times(args.fps)
-        values = speech.timeline.sample(times)
-        progress = None if args.quiet else progress_printer("rendering")
-        write_video(out, model, times, values, speech.timeline.parameters, args.fps,
-                    audio=speech.utterance.samples, sample_rate=speech.utterance.sample_rate,
-                    size=args.size, view=args.view, progress=progress)

@@ -9,11 +9,12 @@ The timeline that samples the result lives in :mod:`engine.timeline.timeline`.
 See ``docs/commands.md`` for the formats and rules.
 """
 
+from engine.commands.command_definition import CommandDefinition, Curve
 from engine.commands.command_files import (Activation, HighLevelCommand, low_level_xml, parse_commands_text, read_commands,
                             write_low_level)
 from engine.commands.interpolation import INTERPOLATIONS, interpolate
 from engine.commands.library import Library, load_library
-from engine.commands.library_format import CommandDefinition, Curve, load_library_file, parse_library_text
+from engine.commands.library_format import load_library_file, parse_library_text
 from engine.commands.procedures import PROCEDURES, register_procedure
 from engine.commands.translator import translate
 

@@ -33,85 +33,32 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
-from engine.errors import LibraryError
+from engine.commands.command_definition import AMPLITUDE, IMPLICIT_ARGUMENTS, START, CommandDefinition, Curve
 from engine.commands.interpolation import INTERPOLATIONS
+from engine.commands.procedures import check_definition
+from engine.errors import LibraryError
 
-AMPLITUDE = "amplitude"
-"""The paper's name for a command's percentage scale, and for its single line."""
-
-START = "at"
-"""The argument giving a command's start time in ms."""
-
-IMPLICIT_ARGUMENTS = {START: 0.0, AMPLITUDE: 100.0}
-"""Every command accepts these, with these defaults, unless its file says otherwise."""
+# The command types live in engine.commands.command_definition (the procedures need them too);
+# what a library file reads is importable from here as well.
+__all__ = [
+    "AMPLITUDE",
+    "DIRECTIVES",
+    "IMPLICIT_ARGUMENTS",
+    "START",
+    "CommandDefinition",
+    "Curve",
+    "load_library_file",
+    "parse_library_text",
+]
 
 DIRECTIVES = ("command", "mandatory", "optional", "interp", "proc", "parameter", "description")
 
 _NAME = r"[A-Za-z_][A-Za-z0-9_.\-]*"
 _STATEMENT = re.compile(rf"^\s*(\$?)({_NAME})\s*(?:\*\s*({_NAME})\s*)?=(.*)$")
 _IDENTIFIER = re.compile(rf"^{_NAME}$")
-
-
-@dataclass(frozen=True)
-class Curve:
-    """One line of a library file: the activation template of one parameter.
-
-    ``name`` is as written (``amplitude`` or a model parameter); ``scale`` names
-    the command argument that multiplies its values, if any. ``times`` are ms
-    (strictly increasing), ``values`` parameter units. A single value with no
-    time (``brow_raise = 1``) is a *level*, which only ``attack-hold-release``
-    accepts; it is stored as ``times == ()``.
-    """
-
-    name: str
-    times: tuple[float, ...]
-    values: tuple[float, ...]
-    line: int
-    scale: str | None = None
-
-    @property
-    def is_level(self) -> bool:
-        return not self.times
-
-
-@dataclass(frozen=True)
-class CommandDefinition:
-    """One high-level command as a library file defines it (§2.3)."""
-
-    name: str
-    mandatory: tuple[str, ...]
-    optional: dict[str, float]
-    interpolation: str
-    procedure: str
-    curves: tuple[Curve, ...]
-    file: str
-    line: int
-    parameter: str | None = None
-    description: str = ""
-    lines: dict[str, int] = field(default_factory=dict)
-    """Line number of each directive, for messages."""
-
-    def arguments(self) -> dict[str, float | None]:
-        """Every argument the command accepts → its default (``None`` when mandatory)."""
-        args: dict[str, float | None] = dict(IMPLICIT_ARGUMENTS)
-        args.update(self.optional)
-        for name in self.mandatory:
-            args[name] = None
-        return args
-
-    def span(self) -> tuple[float, float]:
-        """First and last key time over all curves (levels have no times)."""
-        timed = [c for c in self.curves if c.times]
-        if not timed:
-            return 0.0, 0.0
-        return min(c.times[0] for c in timed), max(c.times[-1] for c in timed)
-
-    def where(self, directive: str | None = None) -> dict:
-        """``file=`` and ``line=`` keywords for an error about this command or one directive."""
-        return {"file": self.file, "line": self.lines.get(directive, self.line)}
 
 
 # ---------------------------------------------------------------------------
@@ -138,8 +85,6 @@ def parse_library_text(text: str, file: str = "<library>") -> list[CommandDefini
 
     Raises :class:`~engine.errors.LibraryError` with file and line for anything wrong.
     """
-    from engine.commands.procedures import check_definition
-
     definitions = []
     for block in _blocks(_statements(text, file), file):
         definition = _definition(block, file)

@@ -40,8 +40,8 @@ from typing import Callable, Mapping
 
 import numpy as np
 
+from engine.commands.command_definition import IMPLICIT_ARGUMENTS, CommandDefinition
 from engine.errors import LibraryError
-from engine.commands.library_format import IMPLICIT_ARGUMENTS, CommandDefinition
 
 
 class ArgumentProblem(ValueError):

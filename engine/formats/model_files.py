@@ -17,8 +17,6 @@ True
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
 
 import h5py
@@ -26,10 +24,11 @@ import numpy as np
 from lxml import etree
 
 from engine.errors import ModelFileError, ParameterError, UserError
+from engine.formats.atomic import atomic_files
+from engine.formats.xml_io import parse_xml, validate
 from engine.model.landmarks import FEATURE_POINTS
 from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
-from engine.formats.xml_io import parse_xml, validate
 
 FORMAT = "artificial-person-model"
 ARRAYS_FORMAT = "artificial-person-arrays"
@@ -225,40 +224,52 @@ def _read_arrays(path: Path, tree: ParameterTree, n_parts: int):
 # ---------------------------------------------------------------------------
 
 def save_model(model: Model, path: str | Path) -> Path:
-    """Save ``model`` as ``path`` (XML) plus ``path`` with suffix ``.h5``; both atomically.
+    """Save ``model`` as ``path`` (XML) plus ``path`` with suffix ``.h5``; both atomically, together.
 
-    Returns the XML path.
+    A missing folder is created. Returns the XML path. Raises
+    :class:`ModelFileError` naming the file when it cannot be written (the
+    files that were there stay as they were).
+    """
+    path, arrays = model_file_paths(path)
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ModelFileError(f"cannot create the folder: {exc.strerror or exc}", file=path.parent) from None
+    model.validate()
+    # Both files are written completely under temporary names, then renamed into place: a failure
+    # while writing leaves the previous model as it was.
+    with atomic_files([arrays, path], ModelFileError) as temporary:
+        write_model_files(model, temporary[path], temporary[arrays], arrays.name)
+    return path
+
+
+def model_file_paths(path: str | Path) -> tuple[Path, Path]:
+    """The description (``.xml``) and arrays (``.h5``) files :func:`save_model` writes for ``path``.
+
+    >>> model_file_paths("people/anna")
+    (PosixPath('people/anna.xml'), PosixPath('people/anna.h5'))
     """
     path = Path(path)
     if path.suffix.lower() != ".xml":
         path = path.with_suffix(".xml")
-    path.parent.mkdir(parents=True, exist_ok=True)
-    arrays = path.with_suffix(".h5")
-    model.validate()
-    xml = model_to_xml(model, arrays.name)          # fails (UserError) before anything is touched
-    # Write both files completely under temporary names, then rename them into place: a failure
-    # while writing leaves the previous model as it was.
-    tmp_arrays = _temporary(arrays)
-    tmp_xml = _temporary(path)
-    try:
-        _write_arrays(model, tmp_arrays)
-        Path(tmp_xml).write_bytes(xml)
-        for tmp in (tmp_arrays, tmp_xml):
-            with open(tmp, "rb") as fh:
-                os.fsync(fh.fileno())
-        os.replace(tmp_arrays, arrays)
-        os.replace(tmp_xml, path)
-    except BaseException:
-        for tmp in (tmp_arrays, tmp_xml):
-            try:
-                os.unlink(tmp)
-            except FileNotFoundError:
-                pass
-        raise
-    return path
+    return path, path.with_suffix(".h5")
+
+
+def write_model_files(model: Model, description: str | Path, arrays: str | Path, arrays_name: str) -> None:
+    """Write ``model``'s XML to ``description`` and its HDF5 arrays to ``arrays``, directly (not atomically).
+
+    For callers that write a model together with other files through
+    :func:`engine.formats.atomic.atomic_files`; ``arrays_name`` is the name
+    the description gives the arrays file (where it will end up, relative to
+    the description). Use :func:`save_model` otherwise.
+    """
+    xml = model_to_xml(model, arrays_name)          # a UserError here, before the arrays are written
+    _write_arrays(model, arrays)
+    Path(description).write_bytes(xml)
 
 
 def model_to_xml(model: Model, arrays_name: str) -> bytes:
+    """The model description (format version :data:`VERSION`) naming ``arrays_name`` as its arrays file."""
     root = etree.Element("model", format=FORMAT, version=str(VERSION), name=_xml_text(model.name, "the model name"),
                          arrays=arrays_name, units="mm")
     if model.description:
@@ -323,7 +334,7 @@ def _nums(v) -> str:
     return " ".join(_num(x) for x in v)
 
 
-def _write_arrays(model: Model, path: str) -> None:
+def _write_arrays(model: Model, path: str | Path) -> None:
     with h5py.File(path, "w", track_order=True) as f:
         f.attrs["format"] = ARRAYS_FORMAT
         f.attrs["version"] = VERSION
@@ -343,12 +354,3 @@ def _write_arrays(model: Model, path: str) -> None:
             if r.displacements is not None:
                 g.create_dataset("displacements", data=r.displacements)
 
-
-def _temporary(path: Path) -> str:
-    """A new empty file next to ``path`` with the permissions a plain ``open`` would give."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    os.close(fd)
-    umask = os.umask(0)
-    os.umask(umask)
-    os.chmod(tmp, 0o666 & ~umask)      # mkstemp's 0600 would make saved models private
-    return tmp

@@ -17,8 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.readers import Recording, unit_scale, zero_triplets_to_nan
-
+from engine.mocap.recording import Recording, unit_scale, zero_triplets_to_nan
 
 
 def read_c3d(path: str | Path) -> Recording:

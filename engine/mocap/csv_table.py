@@ -29,7 +29,8 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.readers import Recording, nan_partial_samples, parse_rows, read_text_lines, unit_scale
+from engine.mocap.recording import Recording, nan_partial_samples, unit_scale
+from engine.mocap.text_tables import parse_rows, read_text_lines
 
 DEFAULT_PATTERNS = ("{marker}_{axis}", "{marker}.{axis}", "{marker} {axis}", "{marker}:{axis}")
 TIME_COLUMNS = {"time_ms": "ms", "time_s": "s", "time": "s", "t": "s"}

@@ -17,13 +17,14 @@ from pathlib import Path
 
 import numpy as np
 
-from engine.model.landmarks import landmark_sort_key
 from engine.mocap.errors import MocapError
 from engine.mocap.gaps import fill_gaps, max_gap_frames
 from engine.mocap.head_motion import MIN_REFERENCE, remove_head_motion
 from engine.mocap.naming import default_reference, marker_names, read_mapping
-from engine.mocap.readers import FORMAT_NAMES, Recording, read_marker_file
+from engine.mocap.readers import FORMAT_NAMES, read_marker_file
+from engine.mocap.recording import Recording
 from engine.mocap.session import Session
+from engine.model.landmarks import landmark_sort_key
 
 DEFAULT_MAX_GAP_MS = 100.0
 
@@ -68,7 +69,7 @@ def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str |
 def build_session(recording: Recording, *, mapping: dict | None = None, max_gap_ms: float = DEFAULT_MAX_GAP_MS,
                   reference: list[str] | None = None, reference_frame: str | int = "first",
                   phones: list | None = None) -> Session:
-    """Name, gap-fill and head-align a :class:`~engine.mocap.readers.Recording` (positions in mm)."""
+    """Name, gap-fill and head-align a :class:`~engine.mocap.recording.Recording` (positions in mm)."""
     if not (np.isfinite(max_gap_ms) and max_gap_ms >= 0):
         raise MocapError(f"the longest gap to fill must be 0 ms or more, not {max_gap_ms}")
     names, naming = marker_names(recording.labels, mapping)

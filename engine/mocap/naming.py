@@ -10,7 +10,8 @@ A label becomes an id by, in order:
 
 1. the mapping file, lines ``label = id`` (``#`` starts a comment; the label
    is everything before the last ``=``, so labels may hold spaces; an id of
-   ``-`` drops the marker);
+   ``-`` drops the marker), read by :func:`read_mapping` and written by
+   :func:`write_mapping`;
 2. a label that already spells an id, optionally prefixed: ``8.3``, ``FP8.3``,
    ``fp8_3``, ``FP_8_3``, ``MPEG4_8.3`` all become ``8.3``;
 3. otherwise the label is kept as it is.
@@ -28,8 +29,9 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from engine.model.landmarks import landmark_sort_key
+from engine.formats.atomic import atomic_write_text
 from engine.mocap.errors import LabelFileError, MocapError
+from engine.model.landmarks import landmark_sort_key
 
 DROP = "-"
 
@@ -114,6 +116,33 @@ def read_mapping(path: str | Path) -> dict[str, str]:
     return mapping
 
 
+def write_mapping(path: str | Path, mapping: dict[str, str]) -> Path:
+    """Write ``{label: id}`` (``-`` drops the marker) as a mapping file, one ``label = id`` a line, atomically.
+
+    What :func:`read_mapping` reads back. A label holding ``#`` (a comment)
+    or a line break, or an empty label or id, cannot be written:
+    :class:`LabelFileError`.
+
+    >>> import tempfile
+    >>> path = write_mapping(f"{tempfile.mkdtemp()}/face.map", {"Lip Corner L": "8.3", "Marker17": "-"})
+    >>> read_mapping(path)
+    {'Lip Corner L': '8.3', 'Marker17': '-'}
+    """
+    path = Path(path)
+    for label, target in mapping.items():
+        for text in (label, target):
+            if not text.strip() or "#" in text or "\n" in text or "\r" in text or text != text.strip():
+                raise LabelFileError(f"cannot write the mapping '{label} = {target}': labels and ids must be "
+                                     "non-empty, without '#', line breaks or spaces at either end", file=path)
+        if "=" in target:
+            raise LabelFileError(f"cannot write the mapping '{label} = {target}': an id holds no '='", file=path)
+    width = max((len(label) for label in mapping), default=0)
+    lines = ["# marker label = MPEG-4 feature point id ('-' drops the marker)"]
+    lines += [f"{label:<{width}} = {target}" for label, target in mapping.items()]
+    atomic_write_text(path, "\n".join(lines) + "\n", LabelFileError)
+    return path
+
+
 def marker_names(labels: list[str], mapping: dict[str, str] | None = None) -> tuple[list[str | None], dict]:
     """The session name of every file label (None: dropped), and what was renamed and dropped.
 
@@ -134,7 +163,7 @@ def marker_names(labels: list[str], mapping: dict[str, str] | None = None) -> tu
             renamed[label] = name
         names.append(name)
     taken: dict[str, str] = {}
-    for label, name in zip(labels, names):
+    for label, name in zip(labels, names, strict=True):
         if name is None:
             continue
         if name in taken:

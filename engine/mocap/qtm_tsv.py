@@ -26,7 +26,8 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.readers import Recording, parse_number, parse_rows, read_text_lines, zero_triplets_to_nan
+from engine.mocap.recording import Recording, zero_triplets_to_nan
+from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines
 
 REQUIRED_KEYS = ("NO_OF_FRAMES", "NO_OF_MARKERS", "FREQUENCY", "MARKER_NAMES")
 

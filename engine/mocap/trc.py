@@ -20,7 +20,8 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.readers import Recording, nan_partial_samples, parse_number, parse_rows, read_text_lines, unit_scale
+from engine.mocap.recording import Recording, nan_partial_samples, unit_scale
+from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines
 
 REQUIRED_KEYS = ("DataRate", "NumFrames", "NumMarkers", "Units")
 

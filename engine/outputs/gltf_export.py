@@ -224,7 +224,8 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
     ``skeleton`` exports the rigid group-1 parameters as joints instead (see
     :func:`skeleton_parameters`); their morph targets must then be left out.
     """
-    from engine.outputs.render import _PartLayout, part_material
+    from engine.outputs.part_layout import PartLayout
+    from engine.outputs.part_materials import part_material
 
     targets = list(targets)
     names = [t.name for t in targets]
@@ -238,7 +239,7 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
     for t in targets:
         if rig is not None and t.source == "parameter" and t.name in rig.names:
             raise UserError(f"parameter '{t.name}' is a joint of the skeleton, so it cannot also be a morph target")
-    layout = _PartLayout(model)
+    layout = PartLayout(model)
     if not layout.parts:
         raise UserError("the model has no polygons to export")
     rest = model.deform()
@@ -456,10 +457,11 @@ def export_gltf(model, path: str | Path, targets: Iterable[MorphTarget] = (),
                 target_normals: bool = True, skeleton: bool = False) -> GltfMesh:
     """Write ``model`` with ``targets`` as ``path`` (``.glb``, or ``.gltf`` with a ``.bin`` beside it).
 
-    The file is read back with :func:`read_gltf` before it is written (both
-    atomically), so a file on disk has passed those checks; returns what was read.
+    The file is read back with :func:`read_gltf` before it is written (a
+    ``.gltf`` and its ``.bin`` together, atomically), so a file on disk has
+    passed those checks; returns what was read.
     """
-    from engine.formats.atomic import atomic_write_bytes
+    from engine.formats.atomic import atomic_files, atomic_write_bytes
 
     path = Path(path)
     suffix = path.suffix.lower()
@@ -475,6 +477,7 @@ def export_gltf(model, path: str | Path, targets: Iterable[MorphTarget] = (),
     document["buffers"][0]["uri"] = bin_path.name
     text = json.dumps(document, indent=1).encode("utf-8")
     mesh = _parse(path, json.loads(text), {0: data})
-    atomic_write_bytes(bin_path, data)
-    atomic_write_bytes(path, text)
+    with atomic_files([bin_path, path]) as temporary:
+        temporary[bin_path].write_bytes(data)
+        temporary[path].write_bytes(text)
     return mesh

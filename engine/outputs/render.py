@@ -7,7 +7,10 @@ prints no warning about a missing one.
 
 :func:`render_model` draws one pose; :class:`FrameRenderer` keeps one scene
 and draws pose after pose into it (video frames: only the vertex positions and
-normals change between frames).
+normals change between frames). The camera's placement is
+:mod:`engine.outputs.camera`, the parts' meshes :mod:`engine.outputs.part_layout`,
+their colours :mod:`engine.outputs.part_materials` and the PNG writer
+:mod:`engine.outputs.png_file`.
 
 >>> from engine import load_model
 >>> from engine.outputs.render import FrameRenderer, render_model
@@ -24,46 +27,25 @@ from __future__ import annotations
 
 import ctypes.util
 import os
-import struct
 import sys
-import zlib
 from pathlib import Path
 from typing import Mapping
 
 import numpy as np
 
 from engine.errors import UserError
+from engine.outputs.camera import VIEW_ANGLE, VIEWS, camera_pose, framed_points
+from engine.outputs.part_layout import PartLayout
+from engine.outputs.part_materials import colour_rgb, eye_colours, hex_rgb, is_eyeball, part_material
+from engine.outputs.png_file import write_png
 
-VIEWS = {
-    # direction from the head towards the camera; the head faces +Z, +Y up,
-    # and the subject's left is +X
-    "front": (0.0, 0.0, 1.0),
-    "side": (1.0, 0.0, 0.0),
-    "three-quarter": (np.sqrt(0.5), 0.0, np.sqrt(0.5)),
-}
+# VIEWS (engine.outputs.camera) and write_png (engine.outputs.png_file) are importable from here too.
+__all__ = ["BACKGROUND", "DEFAULT_SIZE", "MAX_SIZE", "VIEWS", "FrameRenderer", "check_size", "render_model",
+           "write_png"]
+
 DEFAULT_SIZE = (600, 800)
 MAX_SIZE = 8192
 BACKGROUND = ("#cfd1d4", "#eef0f2")   # bottom, top of a faint vertical gradient
-VIEW_ANGLE = 20.0                      # degrees, vertical; a portrait lens
-MARGIN = 0.06                          # fraction of the picture kept free around the model
-NECK_SHOWN = 0.10                      # neck shown below the chin, as a fraction of chin-to-crown height
-
-# (colour, ambient, diffuse, specular, specular power) by the start of a part's name
-_MATERIALS = [
-    ("eyelash", ("#2a211d", 0.20, 0.80, 0.05, 5.0)),
-    ("eyebrow", ("#3b2c24", 0.20, 0.80, 0.05, 5.0)),
-    ("brow", ("#3b2c24", 0.20, 0.80, 0.05, 5.0)),
-    ("hair", ("#3b2c24", 0.20, 0.80, 0.10, 10.0)),
-    ("eye", ("#f3efe8", 0.25, 0.75, 0.60, 60.0)),
-    ("teeth", ("#eee4c8", 0.25, 0.75, 0.35, 30.0)),
-    ("tooth", ("#eee4c8", 0.25, 0.75, 0.35, 30.0)),
-    ("tongue", ("#c4525c", 0.20, 0.80, 0.30, 25.0)),
-    ("gum", ("#b85c66", 0.20, 0.80, 0.25, 20.0)),
-    ("mouth", ("#9c3f4a", 0.20, 0.80, 0.20, 20.0)),
-]
-_SKIN = ("#e2ad8f", 0.18, 0.85, 0.12, 12.0)
-_PUPIL, _IRIS, _IRIS_RIM = "#141110", "#5b7a8f", "#2e3e49"
-_PUPIL_DEGREES, _IRIS_DEGREES = 11.0, 30.0   # half-angles on the eyeball, seen from its centre
 
 
 def render_model(model, values: Mapping[str, float] | None = None, view: str = "front",
@@ -139,7 +121,7 @@ class FrameRenderer:
         self.model = model
         self.view = view
         self.antialias = bool(antialias)
-        self._layout = _PartLayout(model)
+        self._layout = PartLayout(model)
         self._window = None
         self._meshes = []
         _choose_offscreen_backend()
@@ -210,92 +192,7 @@ def check_size(size) -> tuple[int, int]:
     return width, height
 
 
-def part_material(name: str, colors: Mapping[str, str] | None = None):
-    """(hex colour, ambient, diffuse, specular, specular power) for a part, by its name."""
-    lowered = name.lower()
-    material = _SKIN
-    for prefix, candidate in _MATERIALS:
-        if lowered.startswith(prefix):
-            material = candidate
-            break
-    if colors and name in colors:
-        material = (colors[name],) + material[1:]
-    return material
-
-
-# ---------------------------------------------------------------------------
-
-class _PartLayout:
-    """Where each part's mesh takes its points from, and how normals are summed.
-
-    Every part is drawn as its own mesh over the model vertices its polygons
-    use (a vertex used by two parts appears in both, with each part's own
-    normal). The meshes' points, stacked part after part, are ``positions[gather]``;
-    part ``k`` is rows ``slices[k]`` of that stack. Smooth normals are the
-    area-weighted sum of the fan triangles' normals around each point, one
-    sparse product for all parts at once.
-    """
-
-    def __init__(self, model):
-        from scipy import sparse
-
-        from engine.model.cells import cell_sizes, cell_starts, cells_to_triangles, index_mask
-
-        faces = model.faces
-        counts = cell_sizes(faces)
-        starts = cell_starts(counts)
-        face_part = model.vertex_part[faces[starts + 1]] if len(counts) else counts
-        self.parts, self.slices, self.cells = [], [], []
-        gather, triangles, offset = [], [], 0
-        for part_index, part in enumerate(model.parts):
-            keep = face_part == part_index
-            if not keep.any():
-                continue
-            cells = faces[np.repeat(keep, counts + 1)].copy()
-            mask = index_mask(cells, counts[keep])
-            used = np.unique(cells[mask])
-            remap = np.full(model.n_vertices, -1, dtype=np.int64)
-            remap[used] = np.arange(len(used))
-            cells[mask] = remap[cells[mask]]
-            self.parts.append(part)
-            self.slices.append((offset, offset + len(used)))
-            self.cells.append(cells)
-            gather.append(used)
-            triangles.append(cells_to_triangles(cells) + offset)
-            offset += len(used)
-        self.gather = np.concatenate(gather) if gather else np.zeros(0, dtype=np.int64)
-        tris = np.concatenate(triangles) if triangles else np.zeros((0, 3), dtype=np.int64)
-        self.n_triangles = n_tris = tris.shape[0]
-        self._corners = np.ascontiguousarray(tris.T).ravel()   # corner 0 of every triangle, then 1, then 2
-        # point × triangle incidence: normals = incidence @ triangle normals
-        self.incidence = sparse.csr_matrix(
-            (np.ones(3 * n_tris), (self._corners, np.tile(np.arange(n_tris), 3))), shape=(offset, n_tris))
-        self._points = np.empty((offset, 3))
-        self._cross = np.empty((3, n_tris))
-
-    def used(self, k: int) -> np.ndarray:
-        """Model vertex indices of part ``k``'s mesh points."""
-        start, stop = self.slices[k]
-        return self.gather[start:stop]
-
-    def points_and_normals(self, positions: np.ndarray):
-        """The stacked mesh points for ``positions`` and their unit normals (zero where undefined)."""
-        points = np.take(positions, self.gather, axis=0, out=self._points)
-        # one gather of every corner's coordinates, laid out (xyz, corner, triangle)
-        corners = points.T[:, self._corners].reshape(3, 3, self.n_triangles)
-        a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
-        b -= a                                              # edge vectors, in place
-        c -= a
-        cross = self._cross                                 # (b − a) × (c − a), by component
-        for i, j, k in ((0, 1, 2), (1, 2, 0), (2, 0, 1)):
-            np.multiply(b[j], c[k], out=cross[i])
-            cross[i] -= b[k] * c[j]
-        normals = self.incidence @ cross.T
-        length = np.sqrt(np.einsum("ij,ij->i", normals, normals))[:, None]
-        return points, np.divide(normals, length, out=np.zeros_like(normals), where=length > 0)
-
-
-def _build_scene(model, layout: _PartLayout, view: str, width: int, height: int, antialias: bool):
+def _build_scene(model, layout: PartLayout, view: str, width: int, height: int, antialias: bool):
     """Render window with the background, one actor per part (at the rest pose),
     lights, camera and anti-aliasing.
 
@@ -314,8 +211,8 @@ def _build_scene(model, layout: _PartLayout, view: str, width: int, height: int,
     from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
 
     renderer = vtkRenderer()
-    renderer.SetBackground(*_hex_rgb(BACKGROUND[0]))
-    renderer.SetBackground2(*_hex_rgb(BACKGROUND[1]))
+    renderer.SetBackground(*hex_rgb(BACKGROUND[0]))
+    renderer.SetBackground2(*hex_rgb(BACKGROUND[1]))
     renderer.GradientBackgroundOn()
     renderer.AutomaticLightCreationOff()
     points, normals = layout.points_and_normals(model.vertices)
@@ -324,7 +221,7 @@ def _build_scene(model, layout: _PartLayout, view: str, width: int, height: int,
         start, stop = layout.slices[k]
         used = layout.used(k)
         colour, ambient, diffuse, specular, power = part_material(part, model.part_colors)
-        colour = _colour_rgb(colour, part_material(part)[0])
+        colour = colour_rgb(colour, part_material(part)[0])
         mesh = vtkPolyData()
         point_array = numpy_to_vtk(points[start:stop], deep=True)
         vtk_points = vtkPoints()
@@ -338,8 +235,8 @@ def _build_scene(model, layout: _PartLayout, view: str, width: int, height: int,
         mesh.GetPointData().SetNormals(normal_array)
         if model.vertex_colors is not None:
             rgb = model.vertex_colors[used]
-        elif _is_eyeball(part):
-            rgb = _eye_colours(model.vertices[used], colour)
+        elif is_eyeball(part):
+            rgb = eye_colours(model.vertices[used], colour)
         else:
             rgb = None
         mapper = vtkPolyDataMapper()
@@ -374,7 +271,7 @@ def _build_scene(model, layout: _PartLayout, view: str, width: int, height: int,
         light.SetIntensity(intensity)
         renderer.AddLight(light)
     camera = renderer.GetActiveCamera()
-    focal, position, up, near_far = _camera_pose(_framed_points(model), VIEWS[view], width, height)
+    focal, position, up, near_far = camera_pose(framed_points(model), VIEWS[view], width, height)
     camera.SetFocalPoint(*focal)
     camera.SetPosition(*position)
     camera.SetViewUp(*up)
@@ -388,14 +285,6 @@ def _build_scene(model, layout: _PartLayout, view: str, width: int, height: int,
     return window, meshes
 
 
-def _colour_rgb(colour: str, fallback: str) -> np.ndarray:
-    """A ``#rrggbb`` colour as RGB floats in [0, 1]; the fallback's if it is not one."""
-    try:
-        return _hex_rgb(colour)
-    except (ValueError, TypeError, AttributeError, IndexError):
-        return _hex_rgb(fallback)
-
-
 def _choose_offscreen_backend() -> None:
     """Without a display, ask VTK for EGL (or OSMesa) instead of letting it fail on X first."""
     if not sys.platform.startswith("linux") or os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"):
@@ -406,101 +295,7 @@ def _choose_offscreen_backend() -> None:
         os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkOSOpenGLRenderWindow")
 
 
-def _is_eyeball(part: str) -> bool:
-    lowered = part.lower()
-    return lowered.startswith("eye") and not lowered.startswith(("eyelash", "eyebrow", "eyelid"))
-
-
-def _eye_colours(rest: np.ndarray, sclera: np.ndarray) -> np.ndarray:
-    """Per-vertex RGB for an eyeball: pupil and iris around the forward (+Z) pole of the rest pose."""
-    centre = (rest.min(axis=0) + rest.max(axis=0)) / 2
-    offset = rest - centre
-    length = np.linalg.norm(offset, axis=1)
-    cos = np.divide(offset[:, 2], length, out=np.zeros(len(rest)), where=length > 0)
-    angle = np.degrees(np.arccos(np.clip(cos, -1, 1)))
-    colours = np.tile(sclera, (len(rest), 1))
-    iris = angle < _IRIS_DEGREES
-    # the iris darkens towards its rim, as real irises do
-    t = np.clip((angle - _PUPIL_DEGREES) / (_IRIS_DEGREES - _PUPIL_DEGREES), 0, 1)[:, None]
-    ring = (1 - t ** 2) * _hex_rgb(_IRIS) + t ** 2 * _hex_rgb(_IRIS_RIM)
-    colours[iris] = ring[iris]
-    colours[angle < _PUPIL_DEGREES] = _hex_rgb(_PUPIL)
-    return np.round(colours * 255).astype(np.uint8)
-
-
-def _hex_rgb(colour: str) -> np.ndarray:
-    colour = colour.lstrip("#")
-    return np.array([int(colour[i:i + 2], 16) for i in (0, 2, 4)]) / 255.0
-
-
 # A three-point set-up in camera space (camera at +Z looking at the origin, +Y up):
 # (position, intensity) of the key, fill and rim lights, all aimed at the origin
 _LIGHTS = [((-1.0, 0.9, 1.2), 0.78), ((1.3, 0.1, 1.0), 0.42), ((0.4, 1.2, -1.4), 0.45)]
 _PYVISTA_DEFAULT_COLOUR = (173 / 255, 216 / 255, 230 / 255)   # "lightblue"; see _build_scene
-
-
-def _framed_points(model) -> np.ndarray:
-    """Rest-pose points the camera must show: the head down to a little below the chin.
-
-    With a chin landmark (MPEG-4 2.1) the neck below it is left to be cropped, so
-    the face fills more of the picture; without one the whole model is framed.
-    """
-    points = model.vertices
-    chin = model.landmarks.get("2.1")
-    if chin is None:
-        return points
-    chin_y = points[chin, 1]
-    top = points[:, 1].max()
-    if top <= chin_y:
-        return points
-    keep = points[:, 1] >= chin_y - NECK_SHOWN * (top - chin_y)
-    return points[keep]
-
-
-def _place_camera(camera, points: np.ndarray, toward_camera, width: int, height: int) -> None:
-    """Set a pyvista camera to :func:`_camera_pose` (perspective, fits every point with a margin)."""
-    focal, position, up, near_far = _camera_pose(points, toward_camera, width, height)
-    camera.focal_point = tuple(focal)
-    camera.position = tuple(position)
-    camera.up = tuple(up)
-    camera.view_angle = VIEW_ANGLE
-    camera.clipping_range = near_far
-
-
-def _camera_pose(points: np.ndarray, toward_camera, width: int, height: int):
-    """Focal point, position, view-up and clipping range (mm) of a perspective camera
-    looking along ``-toward_camera`` that fits every point with a margin."""
-    back = np.asarray(toward_camera, dtype=float)
-    back /= np.linalg.norm(back)
-    up = np.array([0.0, 1.0, 0.0])
-    right = np.cross(up, back)
-    right /= np.linalg.norm(right)
-    u, v, w = points @ right, points @ up, points @ back
-    cu, cv, cw = (u.min() + u.max()) / 2, (v.min() + v.max()) / 2, (w.min() + w.max()) / 2
-    tan_y = np.tan(np.radians(VIEW_ANGLE) / 2) * (1 - 2 * MARGIN)
-    tan_x = tan_y * width / height
-    # distance from the focal plane such that every point projects inside the picture
-    distance = max(np.max((w - cw) + np.abs(u - cu) / tan_x), np.max((w - cw) + np.abs(v - cv) / tan_y), 1.0)
-    focal = cu * right + cv * up + cw * back
-    near = max(distance - (w.max() - cw) - 10.0, distance * 0.01)
-    return focal, focal + distance * back, up, (near, distance + (cw - w.min()) + 10.0)
-
-
-def write_png(path: str | Path, image: np.ndarray) -> Path:
-    """Write an (H, W, 3) uint8 RGB array as an 8-bit PNG, atomically."""
-    from engine.formats.atomic import atomic_write_bytes
-
-    image = np.ascontiguousarray(image, dtype=np.uint8)
-    if image.ndim != 3 or image.shape[2] != 3:
-        raise ValueError(f"expected an (H, W, 3) image, got shape {image.shape}")
-    h, w = image.shape[:2]
-    raw = np.concatenate([np.zeros((h, 1), dtype=np.uint8), image.reshape(h, w * 3)], axis=1).tobytes()
-
-    def chunk(kind: bytes, data: bytes) -> bytes:
-        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data) & 0xFFFFFFFF)
-
-    png = (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0))
-           + chunk(b"IDAT", zlib.compress(raw, 6)) + chunk(b"IEND", b""))
-    path = Path(path)
-    atomic_write_bytes(path, png)
-    return path

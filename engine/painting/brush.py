@@ -1,9 +1,9 @@
 """Brushes: one dab of add / subtract / set / smooth at a 3-D point, the gradient tool, sampling.
 
 A dab is computed, not applied: :func:`compute_dab` returns a
-:class:`~engine.painting.changes.Change` (indices, before, after) for the
+:class:`~engine.painting.change.Change` (indices, before, after) for the
 caller to apply (``change.redo(weights)``) or gather into a
-:class:`~engine.painting.changes.Stroke`. All positions are rest-mesh
+:class:`~engine.painting.strokes.Stroke`. All positions are rest-mesh
 coordinates in mm; the workbench maps a pick on a posed mesh back to the
 rest mesh before calling.
 
@@ -31,37 +31,38 @@ clipped to [0, 1].
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable, Union
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import UserError
-from engine.painting.changes import Change
+from engine.painting.change import Change
 from engine.painting.mirror import mirrored_points, mirrored_vectors
-from engine.painting.topology import _point
+from engine.painting.topology import PaintContext, _point
 from engine.painting.weights import clip01
 
 MODES = ("add", "subtract", "set", "smooth")
 
 
-def _smooth(t):
+def _smooth(t: np.ndarray) -> np.ndarray:
     return 1.0 - t * t * (3.0 - 2.0 * t)
 
 
-def _linear(t):
+def _linear(t: np.ndarray) -> np.ndarray:
     return 1.0 - t
 
 
-def _constant(t):
+def _constant(t: np.ndarray) -> np.ndarray:
     return np.ones_like(t)
 
 
-def _sharp(t):
+def _sharp(t: np.ndarray) -> np.ndarray:
     return (1.0 - t) ** 2
 
 
-def _sphere(t):
+def _sphere(t: np.ndarray) -> np.ndarray:
     return np.sqrt(np.maximum(1.0 - t * t, 0.0))
 
 
@@ -70,7 +71,7 @@ FALLOFFS: dict[str, Callable[[np.ndarray], np.ndarray]] = {
 }
 """Falloff curves ``f(t)``, ``t = distance / radius`` in [0, 1]; 1 at the centre."""
 
-Falloff = Union[str, Callable[[np.ndarray], np.ndarray]]
+Falloff = str | Callable[[np.ndarray], np.ndarray]
 
 
 @dataclass(frozen=True)
@@ -111,7 +112,7 @@ class Brush:
     mirror: bool = False
     connected: bool = True
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         if self.mode not in MODES:
             raise UserError(f"unknown brush mode '{self.mode}' (modes: {', '.join(MODES)})")
         if not (np.isfinite(self.radius) and self.radius > 0):
@@ -134,7 +135,8 @@ class Brush:
         return np.clip(v, 0.0, 1.0)
 
 
-def _facing(ctx, idx, view_direction, camera_position):
+def _facing(ctx: PaintContext, idx: np.ndarray, view_direction: npt.ArrayLike | None,
+            camera_position: npt.ArrayLike | None) -> np.ndarray:
     """True where the vertex normal faces the viewer."""
     n = ctx.normals[idx]
     if camera_position is not None:
@@ -144,7 +146,9 @@ def _facing(ctx, idx, view_direction, camera_position):
     return n[:, 0] * v[0] + n[:, 1] * v[1] + n[:, 2] * v[2] < 0     # not n @ v: BLAS set-up costs more here
 
 
-def paintable_mask(ctx, part=None, front_faces_only=False, view_direction=None, camera_position=None):
+def paintable_mask(ctx: PaintContext, part: str | None = None, front_faces_only: bool = False,
+                   view_direction: npt.ArrayLike | None = None,
+                   camera_position: npt.ArrayLike | None = None) -> np.ndarray | None:
     """(N,) bool: vertices of ``part`` facing the viewer, or None when nothing is excluded.
 
     Cached on the context for the last few (part, view) combinations: the
@@ -171,7 +175,8 @@ def paintable_mask(ctx, part=None, front_faces_only=False, view_direction=None, 
     return mask
 
 
-def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_position=None,
+def brush_footprint(ctx: PaintContext, brush: Brush, point: npt.ArrayLike,
+                    view_direction: npt.ArrayLike | None = None, *, camera_position: npt.ArrayLike | None = None,
                     pressure: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
     """The vertices a dab reaches and the strength it has at each: ``(indices, a)``, indices sorted.
 
@@ -203,7 +208,7 @@ def brush_footprint(ctx, brush: Brush, point, view_direction=None, *, camera_pos
     return idx[nz], a[nz]
 
 
-def _sorted_unique(ctx, idx):
+def _sorted_unique(ctx: PaintContext, idx: np.ndarray) -> np.ndarray:
     """Sorted distinct indices: a scan of an N-byte mask beats sorting once a dab reaches a few thousand vertices."""
     if len(idx) < 2048:
         return np.unique(idx)
@@ -212,7 +217,7 @@ def _sorted_unique(ctx, idx):
     return np.flatnonzero(mark)
 
 
-def _with_mirror(ctx, idx, a):
+def _with_mirror(ctx: PaintContext, idx: np.ndarray, a: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The footprint and its mirror image; where they overlap, the stronger of the two strengths."""
     m = ctx.mirror.map[idx]
     ok = m >= 0
@@ -224,7 +229,8 @@ def _with_mirror(ctx, idx, a):
     return both, strength[both]
 
 
-def _blend(ctx, weights, mode, idx, a, target):
+def _blend(ctx: PaintContext, weights: np.ndarray, mode: str, idx: np.ndarray, a: np.ndarray,
+           target: np.ndarray | float) -> tuple[np.ndarray, np.ndarray]:
     """New weights of ``idx`` for strengths ``a`` and the mode's target (value or neighbour mean)."""
     w = weights[idx]
     if mode == "add":
@@ -236,8 +242,9 @@ def _blend(ctx, weights, mode, idx, a, target):
     return w, clip01(new)
 
 
-def compute_dab(ctx, weights: np.ndarray, brush: Brush, point, view_direction=None, *,
-                camera_position=None, pressure: float = 1.0) -> Change:
+def compute_dab(ctx: PaintContext, weights: np.ndarray, brush: Brush, point: npt.ArrayLike,
+                view_direction: npt.ArrayLike | None = None, *,
+                camera_position: npt.ArrayLike | None = None, pressure: float = 1.0) -> Change:
     """One dab of ``brush`` at ``point`` (mm) on dense ``weights`` (not modified).
 
     Returns the vertices whose weight changes with their old and new values.
@@ -254,10 +261,11 @@ def compute_dab(ctx, weights: np.ndarray, brush: Brush, point, view_direction=No
     return Change(idx[moved], before[moved], after[moved])
 
 
-def compute_gradient(ctx, weights: np.ndarray, start, end, *, start_value: float = 1.0, end_value: float = 0.0,
-                     mode: str = "set", strength: float = 1.0, part: str | None = None,
-                     front_faces_only: bool = False, view_direction=None, camera_position=None,
-                     connected: bool = False, mirror: bool = False, mask=None) -> Change:
+def compute_gradient(ctx: PaintContext, weights: np.ndarray, start: npt.ArrayLike, end: npt.ArrayLike, *,
+                     start_value: float = 1.0, end_value: float = 0.0, mode: str = "set", strength: float = 1.0,
+                     part: str | None = None, front_faces_only: bool = False,
+                     view_direction: npt.ArrayLike | None = None, camera_position: npt.ArrayLike | None = None,
+                     connected: bool = False, mirror: bool = False, mask: npt.ArrayLike | None = None) -> Change:
     """A linear weight ramp from ``start`` to ``end`` (points in mm), flat beyond both ends.
 
     The ramp value at vertex ``P`` is ``start_value`` before ``start``,
@@ -313,7 +321,8 @@ def compute_gradient(ctx, weights: np.ndarray, start, end, *, start_value: float
     return Change(idx[moved], before[moved].copy(), new[moved])
 
 
-def sample_weight(ctx, weights: np.ndarray, point, *, part: str | None = None, radius: float | None = None) -> float:
+def sample_weight(ctx: PaintContext, weights: np.ndarray, point: npt.ArrayLike, *, part: str | None = None,
+                  radius: float | None = None) -> float:
     """The weight under ``point`` (mm): the nearest vertex's, or with ``radius`` the mean within it
     weighted by the smooth falloff (the eyedropper)."""
     p = _point(point)
@@ -332,7 +341,8 @@ def sample_weight(ctx, weights: np.ndarray, point, *, part: str | None = None, r
     return float(weights[idx] @ f / f.sum())
 
 
-def mirrored_dab_point(ctx, point, view_direction=None):
+def mirrored_dab_point(ctx: PaintContext, point: npt.ArrayLike,
+                       view_direction: npt.ArrayLike | None = None) -> tuple[np.ndarray, np.ndarray | None]:
     """The mirror image of a hit point and view direction (for drawing the second brush cursor)."""
     p = mirrored_points(_point(point), ctx.mirror.center)
     return p, None if view_direction is None else mirrored_vectors(_point(view_direction))

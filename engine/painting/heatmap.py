@@ -17,6 +17,7 @@ edge is visible.
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import UserError
 
@@ -36,7 +37,8 @@ WEIGHT_RAMP = np.stack([np.interp(_s, _t, _TURBO_17[:, c]) for c in range(3)], a
 DEFAULT_BASE = (205, 205, 205)
 
 
-def heat_colors(weights, base=DEFAULT_BASE, out: np.ndarray | None = None) -> np.ndarray:
+def heat_colors(weights: npt.ArrayLike, base: npt.ArrayLike = DEFAULT_BASE,
+                out: np.ndarray | None = None) -> np.ndarray:
     """(N, 3) uint8 colours for N weights in [0, 1]; weight 0 takes ``base``.
 
     ``base`` is one colour (3,) or one per weight (N, 3) — e.g. the model's

@@ -41,8 +41,13 @@ vertices on the plane map to themselves.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+import numpy.typing as npt
+
+if TYPE_CHECKING:
+    from engine.painting.topology import PaintContext
 
 
 @dataclass
@@ -90,7 +95,7 @@ class MirrorMap:
     def n_unmatched(self) -> int:
         return int((self.map < 0).sum())
 
-    def summary(self, parts=None, vertex_part=None) -> str:
+    def summary(self, parts: list[str] | None = None, vertex_part: np.ndarray | None = None) -> str:
         """One line of statistics, with unmatched counts per part when parts are given."""
         n = len(self.map)
         text = (f"{n} vertices: {self.n_exact} mirrored exactly, {self.n_fallback} by topology, "
@@ -100,26 +105,26 @@ class MirrorMap:
             text += f" (topology matches: median error {np.median(err):.3g} mm, max {err.max():.3g} mm)"
         if parts is not None and vertex_part is not None and self.n_unmatched:
             per = np.bincount(vertex_part[self.map < 0], minlength=len(parts))
-            text += "; unmatched per part: " + ", ".join(f"{p} {c}" for p, c in zip(parts, per) if c)
+            text += "; unmatched per part: " + ", ".join(f"{p} {c}" for p, c in zip(parts, per, strict=True) if c)
         return text
 
 
-def mirrored_points(points: np.ndarray, center: float = 0.0) -> np.ndarray:
+def mirrored_points(points: npt.ArrayLike, center: float = 0.0) -> np.ndarray:
     """Points reflected across the plane x = ``center`` (mm)."""
     m = np.array(points, dtype=float, copy=True)
     m[..., 0] = 2.0 * center - m[..., 0]
     return m
 
 
-def mirrored_vectors(vectors: np.ndarray) -> np.ndarray:
+def mirrored_vectors(vectors: npt.ArrayLike) -> np.ndarray:
     """Directions (normals, displacements, view directions) reflected across an x = const plane."""
     m = np.array(vectors, dtype=float, copy=True)
     m[..., 0] = -m[..., 0]
     return m
 
 
-def mirror_map(ctx, *, tolerance: float = 1e-3, center: float = 0.0, search_radius: float | None = None,
-               candidates: int = 8, max_rounds: int = 500) -> MirrorMap:
+def mirror_map(ctx: PaintContext, *, tolerance: float = 1e-3, center: float = 0.0,
+               search_radius: float | None = None, candidates: int = 8, max_rounds: int = 500) -> MirrorMap:
     """Find every vertex's mirror partner across x = ``center`` (see the module docstring).
 
     Parameters
@@ -160,7 +165,8 @@ def mirror_map(ctx, *, tolerance: float = 1e-3, center: float = 0.0, search_radi
     return MirrorMap(mapping, exact, error, float(center), float(tolerance), rounds)
 
 
-def _topology_fallback(ctx, M, mapping, radius, candidates, max_rounds, passes=2) -> int:
+def _topology_fallback(ctx: PaintContext, M: np.ndarray, mapping: np.ndarray, radius: float, candidates: int,
+                       max_rounds: int, passes: int = 2) -> int:
     """Grow the matching outward from the matched vertices; see the module docstring."""
     n = len(mapping)
     exact = mapping >= 0
@@ -186,7 +192,8 @@ def _topology_fallback(ctx, M, mapping, radius, candidates, max_rounds, passes=2
     return rounds
 
 
-def _refine(m, mapping, exact, gi, gj, max_rounds) -> int:
+def _refine(m: _Matcher, mapping: np.ndarray, exact: np.ndarray, gi: np.ndarray, gj: np.ndarray,
+            max_rounds: int) -> int:
     """Undo pairs whose neighbourhood now clearly supports another partner, and match them again."""
     n, rounds = len(mapping), 0
     for _ in range(3):
@@ -212,12 +219,13 @@ def _refine(m, mapping, exact, gi, gj, max_rounds) -> int:
     return rounds
 
 
-def _predicted_mirrors(ctx, M, anchors, ring, radius, partners=None, iterations=4, smoothing=10):
+def _predicted_mirrors(ctx: PaintContext, M: np.ndarray, anchors: np.ndarray, ring: Any, radius: float,
+                       partners: np.ndarray | None = None, iterations: int = 4, smoothing: int = 10) -> np.ndarray:
     """Mirrored positions corrected by a smooth offset field (ICP-like), so a smoothly warped side still
     predicts its partners: offsets to the nearest vertex (or to the partner found by an earlier pass)
     are averaged over the polygon ring, exact matches pinned at zero offset, and the lookup repeated
     with the corrected positions."""
-    from scipy import sparse        # here, not at import: the workbench loads this module at start
+    from scipy import sparse  # here, not at import: the workbench loads this module at start
 
     V = ctx.vertices
     deg = np.diff(ring.indptr)
@@ -238,7 +246,7 @@ def _predicted_mirrors(ctx, M, anchors, ring, radius, partners=None, iterations=
     return P
 
 
-def _ring_graph(faces, n):
+def _ring_graph(faces: np.ndarray, n: int) -> Any:
     """Symmetric CSR graph joining every two vertices of a polygon (sorted column indices)."""
     from scipy import sparse
 
@@ -265,7 +273,7 @@ def _ring_graph(faces, n):
 class _Matcher:
     """Candidate pairs, their scores and the round-by-round acceptance of the fallback."""
 
-    def __init__(self, ctx, M, mapping, local, ring):
+    def __init__(self, ctx: PaintContext, M: np.ndarray, mapping: np.ndarray, local: np.ndarray, ring: Any):
         self.ctx, self.M, self.mapping, self.local = ctx, M, mapping, local
         self.n = len(mapping)
         self.indptr, self.indices = ring.indptr.astype(np.int64), ring.indices.astype(np.int64)
@@ -273,21 +281,21 @@ class _Matcher:
         rows = np.repeat(np.arange(self.n), self.degree)
         self.edge_keys = rows * self.n + self.indices          # sorted: CSR rows in order, columns sorted
 
-    def _gather(self, vertices):
+    def _gather(self, vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(owner position, neighbour) for every neighbour of every vertex in ``vertices``."""
         counts = self.degree[vertices]
         total = int(counts.sum())
         offsets = np.repeat(self.indptr[vertices] - np.cumsum(counts) + counts, counts) + np.arange(total)
         return np.repeat(np.arange(len(vertices)), counts), self.indices[offsets]
 
-    def _valid(self, pi, pj):
+    def _valid(self, pi: np.ndarray, pj: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         ctx = self.ctx
         keep = ctx.part_mirror[ctx.vertex_part[pi]] == ctx.vertex_part[pj]
         pi, pj = pi[keep], pj[keep]
         key = np.unique(np.concatenate([pi * self.n + pj, pj * self.n + pi]))    # symmetric candidate sets
         return key // self.n, key % self.n
 
-    def geometric_pairs(self, U, radius, k):
+    def geometric_pairs(self, U: np.ndarray, radius: float, k: int) -> tuple[np.ndarray, np.ndarray]:
         """Each left-over vertex with its ``k`` nearest left-over vertices to its mirrored position."""
         k = min(k, len(U))
         if k == 0:
@@ -299,7 +307,7 @@ class _Matcher:
         valid = loc < len(U)
         return self._valid(np.repeat(U, k)[valid.ravel()], U[loc[valid]])
 
-    def topological_pairs(self, vertices, free_only=True):
+    def topological_pairs(self, vertices: np.ndarray, free_only: bool = True) -> tuple[np.ndarray, np.ndarray]:
         """(i, j): j a neighbour of the mirror of a matched neighbour of i — where topology predicts i's mirror."""
         owner, nb = self._gather(vertices)
         img = self.mapping[nb]
@@ -312,17 +320,17 @@ class _Matcher:
             pi, pj = pi[keep], pj[keep]
         return self._valid(pi, pj)
 
-    def distance(self, pi, pj):
+    def distance(self, pi: np.ndarray, pj: np.ndarray) -> np.ndarray:
         """Position error of the pair in local edge lengths (symmetric in i and j)."""
         V = self.ctx.vertices
         d = 0.5 * (np.linalg.norm(self.M[pi] - V[pj], axis=1) + np.linalg.norm(self.M[pj] - V[pi], axis=1))
         return d / (0.5 * (self.local[pi] + self.local[pj]))
 
-    def matched_neighbours(self, vertices):
+    def matched_neighbours(self, vertices: np.ndarray) -> np.ndarray:
         owner, nb = self._gather(vertices)
         return np.bincount(owner[self.mapping[nb] >= 0], minlength=len(vertices)).astype(float)
 
-    def consistency(self, pi, pj):
+    def consistency(self, pi: np.ndarray, pj: np.ndarray) -> np.ndarray:
         """How many neighbours of i are mirrored onto a neighbour of j (symmetric in i and j)."""
         owner, nb = self._gather(pi)
         img = self.mapping[nb]
@@ -335,7 +343,8 @@ class _Matcher:
         return np.bincount(owner[ok][ek[pos] == key], minlength=len(pi)).astype(float)
 
     @staticmethod
-    def _best(pi, pj, score, n):
+    def _best(pi: np.ndarray, pj: np.ndarray, score: np.ndarray,
+              n: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Each i's best-scoring partner; returns (i, j, position in the pair arrays) of mutual bests."""
         order = np.lexsort((-score, pi))
         head = np.ones(len(order), dtype=bool)
@@ -346,7 +355,7 @@ class _Matcher:
         mutual = best[bj] == bi
         return bi[mutual], bj[mutual], order[head][mutual]
 
-    def grow(self, gi, gj, max_rounds) -> int:
+    def grow(self, gi: np.ndarray, gj: np.ndarray, max_rounds: int) -> int:
         """Accept pairs round by round: well-supported first, then weakly supported, then position seeds.
 
         ``gi``/``gj`` are the geometric candidate pairs, sorted by ``gi``. The

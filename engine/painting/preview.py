@@ -25,11 +25,14 @@ True
 
 from __future__ import annotations
 
-from typing import Mapping
+from collections.abc import Mapping
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import UserError
+from engine.model.model import Model
 from engine.painting.weights import DenseRegion
 
 
@@ -51,7 +54,7 @@ class LivePreview:
         The pose held while painting (defaults for the rest).
     """
 
-    def __init__(self, model, name: str, region: DenseRegion, values: Mapping[str, float] | None = None):
+    def __init__(self, model: Model, name: str, region: DenseRegion, values: Mapping[str, float] | None = None):
         tree = model.parameters
         tree[name]
         names = tree.names
@@ -64,7 +67,8 @@ class LivePreview:
         local, world = model.deformer().transforms(vals)
         self.rest = np.hstack([model.vertices, np.ones((n, 1))])
         eye = np.eye(4)
-        self.leaves = []                   # (k, dense weights or None if painted, delta matrix or None, field or None)
+        # (k, dense weights or None if painted, delta matrix or None, (value, field or None) or None)
+        self.leaves: list[tuple[int, np.ndarray | None, np.ndarray | None, Any]] = []
         for k, nm in enumerate(names):
             if not tree.is_leaf(nm) or vals[k] == 0.0:
                 continue                   # a leaf at 0 contributes nothing (invariant 2)
@@ -90,7 +94,7 @@ class LivePreview:
         P = self.rest[S]
         P1 = P.copy()
         live = self.region.weights[S]
-        for k, W, delta, field in self.leaves:
+        for _, W, delta, field in self.leaves:
             w = live if W is None else W[S]
             if field is not None:
                 value, D = field
@@ -112,7 +116,7 @@ class LivePreview:
             out = P1[:, :3]
         return out
 
-    def update(self, indices) -> np.ndarray:
+    def update(self, indices: npt.ArrayLike) -> np.ndarray:
         """Recompute the vertices ``indices`` (e.g. ``change.indices``); returns their new positions."""
         S = np.asarray(indices, dtype=np.int64)
         pos = self._compute(S)

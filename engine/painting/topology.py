@@ -17,11 +17,17 @@ True
 from __future__ import annotations
 
 import re
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
-from engine.model.cells import cell_sizes, cell_starts
 from engine.errors import UserError
+from engine.model.cells import cell_sizes, cell_starts
+from engine.model.model import Model
+
+if TYPE_CHECKING:
+    from engine.painting.mirror import MirrorMap
 
 _SIDE_WORDS = [("left", "right"), ("Left", "Right"), ("LEFT", "RIGHT")]
 
@@ -34,7 +40,7 @@ def mirrored_part_name(name: str) -> str:
     """
     for a, b in _SIDE_WORDS:
         if a in name or b in name:
-            return re.sub(f"{a}|{b}", lambda m: b if m.group(0) == a else a, name)
+            return _swap_words(name, a, b)
     for a, b in ((".L", ".R"), ("_L", "_R"), ("_l", "_r")):
         if name.endswith(a):
             return name[:-2] + b
@@ -43,7 +49,12 @@ def mirrored_part_name(name: str) -> str:
     return name
 
 
-def polygon_edges(faces, n_vertices: int) -> np.ndarray:
+def _swap_words(name: str, a: str, b: str) -> str:
+    swap = {a: b, b: a}
+    return re.sub(f"{a}|{b}", lambda m: swap[m.group(0)], name)
+
+
+def polygon_edges(faces: npt.ArrayLike, n_vertices: int) -> np.ndarray:
     """Unique undirected edges (E, 2), ``a < b``, of the polygons' boundaries (no fan diagonals)."""
     faces = np.asarray(faces, dtype=np.int64).reshape(-1)
     sizes = cell_sizes(faces)
@@ -106,7 +117,7 @@ class PaintContext:
         Median edge length, mm (a scale for tolerances).
     """
 
-    def __init__(self, model, *, mirror_tolerance: float = 1e-3):
+    def __init__(self, model: Model, *, mirror_tolerance: float = 1e-3):
         from scipy import sparse  # here, not at import: the workbench loads this module at start
 
         self.vertices = model.vertices
@@ -143,7 +154,7 @@ class PaintContext:
         from scipy.sparse import csgraph  # imported when needed: 0.2 s at launch
         self.n_components, self.components = csgraph.connected_components(self.adjacency, directed=False)
         self.mirror_tolerance = float(mirror_tolerance)
-        self._mirror = None
+        self._mirror: MirrorMap | None = None
         self._paintable: dict = {}        # (part, view) → mask, filled by brush.paintable_mask
 
     # -- queries -----------------------------------------------------------------
@@ -163,7 +174,7 @@ class PaintContext:
         return self.vertex_part == self.part_index(part)
 
     @property
-    def mirror(self):
+    def mirror(self) -> MirrorMap:
         """The X-mirror :class:`~engine.painting.mirror.MirrorMap` (computed on first use, then cached)."""
         if self._mirror is None:
             from engine.painting.mirror import mirror_map
@@ -171,10 +182,10 @@ class PaintContext:
         return self._mirror
 
     @mirror.setter
-    def mirror(self, value) -> None:
+    def mirror(self, value: MirrorMap) -> None:
         self._mirror = value
 
-    def nearest_vertex(self, point, candidates: np.ndarray | None = None) -> int:
+    def nearest_vertex(self, point: npt.ArrayLike, candidates: np.ndarray | None = None) -> int:
         """The vertex nearest to ``point`` (mm), among ``candidates`` (indices) if given; −1 if none."""
         p = _point(point)
         if candidates is None:
@@ -202,7 +213,8 @@ class PaintContext:
         return inside[np.sort(order)]
 
 
-def _point(point) -> np.ndarray:
+def _point(point: npt.ArrayLike | None) -> np.ndarray:
+    """``point`` as a (3,) float array (mm); a :class:`~engine.errors.UserError` for anything else (``None`` too)."""
     try:
         p = np.asarray(point, dtype=float).reshape(3)
     except (TypeError, ValueError):

@@ -5,7 +5,7 @@ vertex, 0 outside the region); :class:`DenseRegion` converts to and from the
 model's sparse :class:`~engine.model.InfluenceRegion` and carries a field
 translation's displacements along. Every operation here is pure: it takes
 arrays and returns new ones (wrap the difference in
-:meth:`Change.between <engine.painting.changes.Change.between>` for undo).
+:meth:`Change.between <engine.painting.change.Change.between>` for undo).
 
 >>> from engine import load_model
 >>> from engine.painting import PaintContext, DenseRegion, grow_weights
@@ -20,12 +20,17 @@ True
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import UserError
-from engine.model.model import InfluenceRegion
+from engine.model.model import InfluenceRegion, Model
 from engine.painting.mirror import mirrored_vectors
+
+if TYPE_CHECKING:
+    from engine.painting.topology import PaintContext
 
 LEFT_TO_RIGHT = "left_to_right"
 RIGHT_TO_LEFT = "right_to_left"
@@ -53,7 +58,7 @@ class DenseRegion:
     listed_zero: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
 
     @classmethod
-    def from_region(cls, region: InfluenceRegion, n_vertices: int) -> "DenseRegion":
+    def from_region(cls, region: InfluenceRegion, n_vertices: int) -> DenseRegion:
         w = np.zeros(n_vertices)
         w[region.indices] = region.weights
         d = None
@@ -63,7 +68,7 @@ class DenseRegion:
         return cls(w, d, region.indices[region.weights == 0].copy())
 
     @classmethod
-    def from_model(cls, model, name: str) -> "DenseRegion":
+    def from_model(cls, model: Model, name: str) -> DenseRegion:
         """The region of parameter ``name``; a field translation gets a displacement array even when empty."""
         model.parameters[name]
         dense = cls.from_region(model.regions[name], model.n_vertices)
@@ -71,7 +76,7 @@ class DenseRegion:
             dense.displacements = np.zeros((model.n_vertices, 3))
         return dense
 
-    def with_weights(self, weights: np.ndarray) -> "DenseRegion":
+    def with_weights(self, weights: np.ndarray) -> DenseRegion:
         """The same region with other weights (displacements shared, not copied)."""
         return DenseRegion(_checked(weights, len(self.weights)), self.displacements, self.listed_zero)
 
@@ -85,19 +90,19 @@ class DenseRegion:
         d = None if self.displacements is None else self.displacements[idx].copy()
         return InfluenceRegion(idx, w[idx].copy(), d)
 
-    def copy(self) -> "DenseRegion":
+    def copy(self) -> DenseRegion:
         return DenseRegion(self.weights.copy(), None if self.displacements is None else self.displacements.copy(),
                            self.listed_zero.copy())
 
 
-def _checked(weights, n: int) -> np.ndarray:
+def _checked(weights: npt.ArrayLike, n: int) -> np.ndarray:
     w = np.asarray(weights, dtype=float)
     if w.shape != (n,):
         raise UserError(f"expected {n} weights (one per vertex), got an array of shape {w.shape}")
     return w
 
 
-def _mask(ctx, mask, part) -> np.ndarray:
+def _mask(ctx: PaintContext, mask: npt.ArrayLike | None, part: str | None) -> np.ndarray:
     m = ctx.part_mask(part)
     if mask is not None:
         m = m & np.asarray(mask, dtype=bool)
@@ -112,7 +117,8 @@ def clip01(w: np.ndarray) -> np.ndarray:
 
 
 # -- simple operations -------------------------------------------------------------
-def invert_weights(ctx, weights, *, part: str | None = None, mask=None) -> np.ndarray:
+def invert_weights(ctx: PaintContext, weights: npt.ArrayLike, *, part: str | None = None,
+                   mask: npt.ArrayLike | None = None) -> np.ndarray:
     """``1 − w`` on the vertices of ``part`` (all by default) and ``mask``; others unchanged."""
     w = _checked(weights, ctx.n_vertices).copy()
     m = _mask(ctx, mask, part)
@@ -120,15 +126,16 @@ def invert_weights(ctx, weights, *, part: str | None = None, mask=None) -> np.nd
     return clip01(w)
 
 
-def clear_weights(ctx, weights, *, part: str | None = None, mask=None) -> np.ndarray:
+def clear_weights(ctx: PaintContext, weights: npt.ArrayLike, *, part: str | None = None,
+                  mask: npt.ArrayLike | None = None) -> np.ndarray:
     """Weights set to 0 on ``part`` (all by default) and ``mask``."""
     w = _checked(weights, ctx.n_vertices).copy()
     w[_mask(ctx, mask, part)] = 0.0
     return w
 
 
-def smooth_weights(ctx, weights, iterations: int = 1, factor: float = 0.5, *, part: str | None = None,
-                   mask=None) -> np.ndarray:
+def smooth_weights(ctx: PaintContext, weights: npt.ArrayLike, iterations: int = 1, factor: float = 0.5, *,
+                   part: str | None = None, mask: npt.ArrayLike | None = None) -> np.ndarray:
     """Blur towards the neighbours' mean: ``w ← w + factor · (mean(neighbours) − w)``, ``iterations`` times.
 
     Only vertices of ``part``/``mask`` change (their neighbours outside are
@@ -146,7 +153,7 @@ def smooth_weights(ctx, weights, iterations: int = 1, factor: float = 0.5, *, pa
 
 
 # -- mirror ----------------------------------------------------------------------------
-def mirror_targets(ctx, direction: str = LEFT_TO_RIGHT) -> tuple[np.ndarray, np.ndarray]:
+def mirror_targets(ctx: PaintContext, direction: str = LEFT_TO_RIGHT) -> tuple[np.ndarray, np.ndarray]:
     """(target, source) vertex pairs for copying one side onto the other.
 
     ``left_to_right`` copies the subject's left (+X) onto the right (−X).
@@ -163,7 +170,7 @@ def mirror_targets(ctx, direction: str = LEFT_TO_RIGHT) -> tuple[np.ndarray, np.
     return target[ok], source[ok]
 
 
-def mirror_weights(ctx, weights, direction: str = LEFT_TO_RIGHT) -> np.ndarray:
+def mirror_weights(ctx: PaintContext, weights: npt.ArrayLike, direction: str = LEFT_TO_RIGHT) -> np.ndarray:
     """Weights with one side copied onto the other through the mirror map (see :func:`mirror_targets`)."""
     w = _checked(weights, ctx.n_vertices).copy()
     target, source = mirror_targets(ctx, direction)
@@ -171,18 +178,18 @@ def mirror_weights(ctx, weights, direction: str = LEFT_TO_RIGHT) -> np.ndarray:
     return w
 
 
-def mirror_region(ctx, dense: DenseRegion, direction: str = LEFT_TO_RIGHT) -> DenseRegion:
+def mirror_region(ctx: PaintContext, dense: DenseRegion, direction: str = LEFT_TO_RIGHT) -> DenseRegion:
     """A dense region mirrored side to side; a field's displacements are reflected too (x negated)."""
     out = dense.copy()
     target, source = mirror_targets(ctx, direction)
     out.weights[target] = dense.weights[source]
-    if out.displacements is not None:
+    if out.displacements is not None and dense.displacements is not None:
         out.displacements[target] = mirrored_vectors(dense.displacements[source])
     return out
 
 
 # -- grow / shrink ---------------------------------------------------------------------
-def _neighbour_stats(ctx, w, rows):
+def _neighbour_stats(ctx: PaintContext, w: np.ndarray, rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """For each vertex in ``rows``: the mean of its neighbours' non-zero weights, and their count."""
     counts = ctx.degree[rows]
     total = int(counts.sum())
@@ -195,8 +202,8 @@ def _neighbour_stats(ctx, w, rows):
     return np.divide(s, n_on, out=np.zeros(len(rows)), where=n_on > 0), n_on
 
 
-def grow_weights(ctx, weights, rings: int = 1, *, distance: float | None = None, value: float | None = None,
-                 part: str | None = None, mask=None) -> np.ndarray:
+def grow_weights(ctx: PaintContext, weights: npt.ArrayLike, rings: int = 1, *, distance: float | None = None,
+                 value: float | None = None, part: str | None = None, mask: npt.ArrayLike | None = None) -> np.ndarray:
     """Extend the region (weight > 0) by ``rings`` rings of neighbours, or by geodesic ``distance`` mm.
 
     Existing weights are not changed. A new vertex takes ``value`` if given,
@@ -229,8 +236,8 @@ def grow_weights(ctx, weights, rings: int = 1, *, distance: float | None = None,
     return w
 
 
-def shrink_weights(ctx, weights, rings: int = 1, *, distance: float | None = None, part: str | None = None,
-                   mask=None) -> np.ndarray:
+def shrink_weights(ctx: PaintContext, weights: npt.ArrayLike, rings: int = 1, *, distance: float | None = None,
+                   part: str | None = None, mask: npt.ArrayLike | None = None) -> np.ndarray:
     """Pull the region's edge in: zero the region vertices within ``rings`` rings (or ``distance`` mm over
     the surface) of a vertex outside it. Only vertices of ``part``/``mask`` change."""
     w = _checked(weights, ctx.n_vertices).copy()
@@ -255,7 +262,7 @@ def shrink_weights(ctx, weights, rings: int = 1, *, distance: float | None = Non
 
 
 # -- normalisation of group 1 ------------------------------------------------------------
-def group1_names(model) -> list[str]:
+def group1_names(model: Model) -> list[str]:
     """The non-leaf (group-1, rigid) parameters, in tree order."""
     tree = model.parameters
     return [n for n in tree.names if tree.group(n) == 1]
@@ -285,7 +292,8 @@ def normalise_stack(W: np.ndarray, keep: int | None = None) -> np.ndarray:
     return np.clip(W, 0.0, 1.0, out=W)
 
 
-def normalise_group1(model, keep: str | None = None, weights: dict | None = None) -> dict[str, InfluenceRegion]:
+def normalise_group1(model: Model, keep: str | None = None,
+                     weights: dict[str, npt.ArrayLike] | None = None) -> dict[str, InfluenceRegion]:
     """New regions for every group-1 parameter with weights summing to 1 per vertex (where any).
 
     The engine normalises group-1 weights itself when it deforms (§2.2);
@@ -308,7 +316,8 @@ def normalise_group1(model, keep: str | None = None, weights: dict | None = None
     out = {}
     for k, name in enumerate(names):
         if name in weights:
-            out[name] = DenseRegion(W[k], None, model.regions[name].indices[model.regions[name].weights == 0]).to_region()
+            listed_zero = model.regions[name].indices[model.regions[name].weights == 0]
+            out[name] = DenseRegion(W[k], None, listed_zero).to_region()
         else:
             r = model.regions[name]
             out[name] = InfluenceRegion(r.indices.copy(), W[k][r.indices], None)

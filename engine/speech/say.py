@@ -18,17 +18,17 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from engine.commands import load_library, translate
-from engine.commands.command_files import Activation, format_number
+from engine.commands import Library, load_library, translate
+from engine.commands.command_files import Activation
 from engine.errors import CommandError
-from engine.formats.atomic import atomic_write_text
-from engine.model.landmarks import landmark_sort_key
+from engine.model.model import Model
 from engine.script.inline_commands import Script, anchored_commands, parse_script
-from engine.timeline.timeline import Timeline
 from engine.speech.articulation import ArticulationTable, load_articulation
 from engine.speech.coarticulation import articulate
 from engine.speech.festival import prepare_text
 from engine.speech.prosody import prosody_commands
+from engine.speech.synthesis import Synthesizer, Utterance
+from engine.timeline.timeline import Timeline
 
 
 @dataclass
@@ -36,7 +36,7 @@ class Speech:
     """Everything one utterance produced."""
 
     script: Script
-    utterance: object          # engine.speech.synthesis.Utterance
+    utterance: Utterance
     activations: list[Activation]
     timeline: Timeline
 
@@ -56,14 +56,21 @@ class Speech:
     def frame_times(self, fps: float) -> np.ndarray:
         """Frame n at n·1000/fps ms, covering the audio and every command (the last frame starts before
         :attr:`end_ms`). A video pads the audio with silence to its length."""
-        count = max(1, int(math.ceil(self.end_ms * fps / 1000.0 - 1e-9)))
+        count = max(1, math.ceil(self.end_ms * fps / 1000.0 - 1e-9))
         return np.arange(count) * (1000.0 / fps)
 
 
-def speak(text: str, model, synthesizer=None, voice: str | None = None, library=None,
-          table: ArticulationTable | None = None, coarticulation: str = "cohen-massaro",
-          prosody_seed: int | None = None, name: str = "<text>") -> Speech:
-    """Synthesize ``text`` (with inline commands) and build the timeline that animates it."""
+def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice: str | None = None,
+          library: Library | None = None, table: ArticulationTable | None = None,
+          coarticulation: str = "cohen-massaro", prosody_seed: int | None = None, name: str = "<text>") -> Speech:
+    """Synthesize ``text`` (with inline commands) and build the timeline that animates it.
+
+    ``synthesizer`` defaults to Festival (:class:`engine.speech.festival.FestivalSynthesizer`),
+    ``library`` to the shipped command library, ``table`` to the Finnish
+    articulation table; ``name`` is what errors call the text. The files an
+    utterance becomes (video, audio, tables) are written by
+    :func:`engine.outputs.speech_files.write_speech_files`.
+    """
     script = parse_script(text, name)
     if not script.text.strip():
         raise CommandError("there is no text to speak (only commands?)", file=name)
@@ -88,21 +95,3 @@ def speak(text: str, model, synthesizer=None, voice: str | None = None, library=
     activations += translate(commands, library, model)
     return Speech(script, utterance, activations, Timeline(activations, model))
 
-
-def landmarks_csv(speech: Speech, model, fps: float) -> str:
-    """DESIGN.md's landmarks table: ``frame,time_ms,<id>_x,<id>_y,<id>_z,…``, one row per frame."""
-    ids = sorted(model.landmarks, key=landmark_sort_key)
-    header = ["frame", "time_ms"] + [f"{i}_{axis}" for i in ids for axis in "xyz"]
-    lines = [",".join(header)]
-    times = speech.frame_times(fps)
-    values = speech.timeline.sample(times)
-    names = speech.timeline.parameters
-    for n, (t, row) in enumerate(zip(times, values)):
-        points = model.landmark_positions(dict(zip(names, row)))
-        cells = [str(n), format_number(t)] + [format_number(c) for i in ids for c in points[i]]
-        lines.append(",".join(cells))
-    return "\n".join(lines) + "\n"
-
-
-def write_landmarks(path, speech: Speech, model, fps: float) -> None:
-    atomic_write_text(path, landmarks_csv(speech, model, fps))

@@ -25,20 +25,24 @@ True
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 import numpy as np
+from numpy.typing import ArrayLike
 
-from engine.commands.command_files import Activation, format_number
+from engine.commands.command_files import Activation
 from engine.commands.interpolation import interpolate
 from engine.commands.translator import check_activation
 from engine.errors import UserError
 from engine.formats.atomic import atomic_write_text
+from engine.model.model import Model
+from engine.timeline.tracks import tracks_csv_text
 
 
 class Timeline:
     """Every parameter of ``model`` over time, from a list of activations."""
 
-    def __init__(self, activations: list[Activation], model):
+    def __init__(self, activations: list[Activation], model: Model):
         for activation in activations:
             check_activation(activation, model)
         self.model = model
@@ -61,14 +65,14 @@ class Timeline:
         """Time of the last key (0 when there are none)."""
         return max((a.end for a in self.activations), default=0.0)
 
-    def sample(self, times) -> np.ndarray:
+    def sample(self, times: ArrayLike) -> np.ndarray:
         """Values (len(times) × parameters, in ``self.parameters`` order) at the given times (ms)."""
         times = np.atleast_1d(np.asarray(times, dtype=float))
         order = np.argsort(times, kind="stable")
         sorted_times = times[order]
         total = np.zeros((times.size, len(self.parameters)))
         total += self._default
-        for activation, column in zip(self.activations, self._column):
+        for activation, column in zip(self.activations, self._column, strict=True):
             lo = np.searchsorted(sorted_times, activation.start, side="left")
             hi = np.searchsorted(sorted_times, activation.end, side="right")
             if hi <= lo:
@@ -80,7 +84,7 @@ class Timeline:
 
     def values_at(self, time: float) -> dict[str, float]:
         """Every parameter's value at one time, as a dict ready for ``Model.deform``."""
-        return dict(zip(self.parameters, self.sample([time])[0].tolist()))
+        return dict(zip(self.parameters, self.sample([time])[0].tolist(), strict=True))
 
     def frame_times(self, fps: float, start: float = 0.0, end: float | None = None) -> np.ndarray:
         """Frame times ``start, start + 1000/fps, …`` up to and including ``end`` (default: the last key)."""
@@ -89,10 +93,11 @@ class Timeline:
         end = self.end if end is None else end
         if end < start:
             raise UserError(f"the end time {end:g} ms comes before the start time {start:g} ms")
-        count = int(math.floor((end - start) * fps / 1000.0 + 1e-9)) + 1
+        count = math.floor((end - start) * fps / 1000.0 + 1e-9) + 1
         return start + np.arange(count) * (1000.0 / fps)
 
-    def sample_frames(self, fps: float = 60.0, start: float = 0.0, end: float | None = None):
+    def sample_frames(self, fps: float = 60.0, start: float = 0.0,
+                      end: float | None = None) -> tuple[np.ndarray, np.ndarray]:
         """``(times, values)`` at every frame from ``start`` to ``end``."""
         times = self.frame_times(fps, start, end)
         return times, self.sample(times)
@@ -100,11 +105,9 @@ class Timeline:
     def tracks_csv(self, fps: float = 60.0, start: float = 0.0, end: float | None = None) -> str:
         """The tracks table (DESIGN.md): header ``time_ms,<parameter>,…``, one row per frame."""
         times, values = self.sample_frames(fps, start, end)
-        lines = [",".join(["time_ms"] + self.parameters)]
-        for t, row in zip(times, values):
-            lines.append(",".join([format_number(t)] + [format_number(v) for v in row]))
-        return "\n".join(lines) + "\n"
+        return tracks_csv_text(self.parameters, times, values)
 
-    def write_tracks(self, path, fps: float = 60.0, start: float = 0.0, end: float | None = None) -> None:
-        """Write the tracks CSV atomically."""
+    def write_tracks(self, path: str | Path, fps: float = 60.0, start: float = 0.0,
+                     end: float | None = None) -> None:
+        """Write the tracks CSV (:meth:`tracks_csv`) to ``path`` atomically."""
         atomic_write_text(path, self.tracks_csv(fps, start, end))

@@ -8,7 +8,7 @@ import pytest
 
 from engine import load_model
 from engine.mocap.importer import build_session
-from engine.mocap.readers import Recording
+from engine.mocap.recording import Recording
 from engine.mocap.session import save_session
 from engine.mocap.synthetic import synthesize_recording
 

@@ -22,7 +22,7 @@ from engine.outputs.gltf_export import (
 )
 from engine.formats.gltf_read import _quaternion_matrix as _matrix
 from engine.paths import default_model_path, reference_poses_path
-from engine.outputs.render import _PartLayout
+from engine.outputs.part_layout import PartLayout
 
 from tests.engine.cli_runner import assert_user_error, run
 
@@ -111,7 +111,7 @@ def test_round_trip(model, targets, tmp_path, suffix):
     assert mesh.target_names == written.target_names == ["head_turn", "brow", "slide", "smile", "eyeForward"]
     assert mesh.document["meshes"][0]["extras"]["targetNames"] == mesh.target_names
     assert np.array_equal(mesh.weights, np.zeros(5))
-    layout = _PartLayout(model)
+    layout = PartLayout(model)
     rest = model.deform()
     _, normals = layout.points_and_normals(rest)
     assert [p.name for p in mesh.primitives] == ["skin", "eye_left"]

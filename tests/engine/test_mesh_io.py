@@ -175,7 +175,7 @@ def _write_points_only(path):
 
 
 def _write_png(path):
-    from engine.outputs.render import write_png
+    from engine.outputs.png_file import write_png
 
     write_png(path, np.zeros((4, 4, 3), dtype=np.uint8))
 

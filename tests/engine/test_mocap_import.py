@@ -28,7 +28,8 @@ from engine.mocap.head_motion import apply_alignment, kabsch, remove_head_motion
 from engine.mocap.importer import build_session, format_report, import_marker_file
 from engine.mocap.labels import festival_phones, read_labels
 from engine.mocap.naming import default_reference, marker_names, read_mapping
-from engine.mocap.readers import Recording, detect_format, read_marker_file
+from engine.mocap.readers import detect_format, read_marker_file
+from engine.mocap.recording import Recording
 from engine.mocap.session import SESSION_FORMAT, load_session, save_session
 from engine.deform.transforms import rotation_about_axis, translation
 

@@ -17,11 +17,11 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.mocap import head_motion, readers
+from engine.mocap import head_motion, text_tables
 from engine.deform.transforms import apply, rotation_about_axis, translation
 
 KERNELS = Path(engine.__file__).parent / "mocap"
-text_table = readers._text_table
+text_table = text_tables._text_table
 rigid_fit = head_motion._rigid_fit
 needs_parser = pytest.mark.skipif(text_table is None, reason="engine.mocap._text_table is not built")
 needs_rigid = pytest.mark.skipif(rigid_fit is None, reason="engine.mocap._rigid_fit is not built")
@@ -107,9 +107,9 @@ def test_readers_fall_back_to_numpy_with_the_same_result(monkeypatch):
     rng = np.random.default_rng(5)
     table = np.round(rng.normal(0, 300, (200, 12)), 3)
     lines = ["\t".join(f"{x:.3f}" for x in row) for row in table]
-    fast = readers.parse_rows(lines, 1, 12, Path("x.tsv"))
-    monkeypatch.setattr(readers, "_text_table", None)
-    slow = readers.parse_rows(lines, 1, 12, Path("x.tsv"))
+    fast = text_tables.parse_rows(lines, 1, 12, Path("x.tsv"))
+    monkeypatch.setattr(text_tables, "_text_table", None)
+    slow = text_tables.parse_rows(lines, 1, 12, Path("x.tsv"))
     assert np.array_equal(fast, slow) and np.array_equal(fast, table)
 
 
@@ -117,7 +117,7 @@ def test_readers_fall_back_to_numpy_with_the_same_result(monkeypatch):
 def test_a_bad_cell_still_names_its_line(cell):
     lines = ["1\t2", "3\t4", f"5\t{cell}"]
     with pytest.raises(engine.UserError, match=rf"x\.tsv:12.*'{cell}' is not a number"):
-        readers.parse_rows(lines, 10, 2, Path("x.tsv"))
+        text_tables.parse_rows(lines, 10, 2, Path("x.tsv"))
 
 
 # -- Kabsch rotations ------------------------------------------------------------------

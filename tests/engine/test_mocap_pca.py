@@ -19,13 +19,21 @@ from scipy.linalg import subspace_angles
 from engine import load_model
 from engine.errors import ParameterError, UserError
 from engine.mocap import apply as apply_mod
+from engine.mocap import articulation_file as articulation_file_mod
+from engine.mocap import component_plot as plot_mod
+from engine.mocap import frame_selection as frame_selection_mod
+from engine.mocap import held_out as held_out_mod
+from engine.mocap import marker_alignment as marker_alignment_mod
 from engine.mocap import pca as pca_mod
+from engine.mocap import surface_interpolation as surface_interpolation_mod
 from engine.mocap import synthetic as synthetic_mod
-from engine.mocap.apply import apply_articulation, component_names, reconstruct_held_out
+from engine.mocap.apply import apply_articulation, component_names
+from engine.mocap.articulation_file import ArticulationFileError, load_articulation_file, save_articulation_file
+from engine.mocap.component_plot import plot_components
 from engine.mocap.errors import MocapError
-from engine.mocap.pca import (ArticulationFileError, Stage, default_stages, load_articulation_file,
-                              multistage_pca, parse_frame_list, parse_stage, plot_components,
-                              save_articulation_file, select_frames)
+from engine.mocap.frame_selection import parse_frame_list, select_frames
+from engine.mocap.held_out import reconstruct_held_out
+from engine.mocap.pca import Stage, default_stages, multistage_pca, parse_stage
 from engine.mocap.synthetic import ARTICULATION_MARKERS, synthesize_recording
 from tests.engine.mocap_samples import HELD_OUT_PHONES, TRAINING_PHONES, parse_phones
 
@@ -193,11 +201,11 @@ def test_the_analysed_frames_can_be_chosen_again_from_the_selection_text(clean):
     for frames in (select_frames(*args, ["V", "a/p_p"]), select_frames(*args, "C", position=0.25),
                    parse_frame_list("0-50:5,99", clean.n_frames), [7, 3, 40, 41, 42, 43]):
         art = multistage_pca(clean.markers, clean.positions, frames=frames)
-        np.testing.assert_array_equal(pca_mod.reselect_frames(art.selection, *args), art.frames)
+        np.testing.assert_array_equal(frame_selection_mod.reselect_frames(art.selection, *args), art.frames)
     art = multistage_pca(clean.markers, clean.positions)
-    assert art.selection == "" and len(pca_mod.reselect_frames(art.selection, *args)) == clean.n_frames
+    assert art.selection == "" and len(frame_selection_mod.reselect_frames(art.selection, *args)) == clean.n_frames
     with pytest.raises(MocapError, match="cannot tell"):
-        pca_mod.reselect_frames("magic", *args)
+        frame_selection_mod.reselect_frames("magic", *args)
 
 
 def test_frames_with_missing_markers_are_excluded_and_counted(clean):
@@ -312,11 +320,11 @@ def test_report_and_picture(clean, tmp_path):
         assert f"{100 * ratio:.1f} %" in text.splitlines()[7 + k]
     image = plot_components(art, tmp_path / "components.png")
     assert (tmp_path / "components.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert image.shape == (2 * pca_mod.HEADER + art.n_components * (pca_mod.PANEL + pca_mod.HEADER),
-                           2 * pca_mod.PANEL, 3)
-    top = 2 * pca_mod.HEADER
+    assert image.shape == (2 * plot_mod.HEADER + art.n_components * (plot_mod.PANEL + plot_mod.HEADER),
+                           2 * plot_mod.PANEL, 3)
+    top = 2 * plot_mod.HEADER
     for k in range(art.n_components):                              # every row shows red (+) and blue (−) shapes
-        row = image[top + k * (pca_mod.PANEL + pca_mod.HEADER): top + (k + 1) * (pca_mod.PANEL + pca_mod.HEADER)]
+        row = image[top + k * (plot_mod.PANEL + plot_mod.HEADER): top + (k + 1) * (plot_mod.PANEL + plot_mod.HEADER)]
         assert np.any(np.all(row == (210, 30, 30), axis=2)) and np.any(np.all(row == (30, 60, 210), axis=2))
 
 
@@ -417,7 +425,7 @@ def test_held_out_reconstruction_with_marker_noise(head):
 def test_the_whole_pipeline_from_an_imported_session(head):
     """Synthetic capture with head motion, noise and gaps → mocap import's session → PCA → face → held-out error."""
     from engine.mocap.importer import build_session
-    from engine.mocap.readers import Recording
+    from engine.mocap.recording import Recording
 
     def session(rec):
         recording = Recording(labels=list(rec.markers), positions=rec.positions, rate_hz=rec.rate_hz,
@@ -531,7 +539,9 @@ def test_with_real_festival_phones(head):
     assert angles.max() < MAX_BASIS_ANGLE_REAL_DEG                      # the jaw direction is found
 
 
-@pytest.mark.parametrize("module", [pca_mod, apply_mod, synthetic_mod])
+@pytest.mark.parametrize("module", [pca_mod, frame_selection_mod, articulation_file_mod, plot_mod,
+                                    apply_mod, marker_alignment_mod, surface_interpolation_mod, held_out_mod,
+                                    synthetic_mod])
 def test_docstring_examples(module):
     result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert result.failed == 0

@@ -17,6 +17,7 @@ import h5py
 import numpy as np
 import pytest
 
+import engine.formats.atomic as atomic
 import engine.formats.model_files as model_files
 from engine import ModelFileError, UserError, load_model, save_model
 from engine.model.model import InfluenceRegion, Model
@@ -217,7 +218,7 @@ def test_failed_rename_leaves_previous_files_and_no_temporaries(saved, monkeypat
     def refuse(src, dst):
         raise Boom("rename refused")
 
-    monkeypatch.setattr(model_files.os, "replace", refuse)
+    monkeypatch.setattr(atomic.os, "replace", refuse)
     with pytest.raises(Boom):
         save_model(small_model(), saved)
     monkeypatch.undo()
@@ -237,7 +238,7 @@ def test_failed_xml_write_leaves_the_previous_model_loadable(saved, monkeypatch)
     monkeypatch.setattr(Path, "write_bytes", half_then_fail)
     changed = small_model()
     changed.vertices[:] += 1.0
-    with pytest.raises(OSError):
+    with pytest.raises(ModelFileError, match="No space left on device"):   # the OSError, naming the file
         save_model(changed, saved)
     monkeypatch.undo()
     assert_models_equal(load_model(saved), small_model())

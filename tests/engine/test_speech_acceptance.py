@@ -146,7 +146,7 @@ def test_say_errors_are_one_line(tmp_path, args, words):
 
 
 def test_say_mp4_has_audio_and_video_that_agree_within_one_frame(tmp_path):
-    from engine.outputs.video import probe, read_frames
+    from engine.outputs.video_probe import probe, read_frames
 
     text_file = tmp_path / "talk.txt"
     text_file.write_text("Pappa ja mummo <BrowRaise/> ostivat omenoita.\n", encoding="utf-8")

@@ -22,7 +22,8 @@ import engine
 from engine.errors import ParameterError, UserError
 from engine.paths import default_model_path
 
-video = pytest.importorskip("engine.outputs.video")
+video_writer = pytest.importorskip("engine.outputs.video_writer")
+video_probe = pytest.importorskip("engine.outputs.video_probe")
 
 pytestmark = [
     pytest.mark.slow,
@@ -63,7 +64,7 @@ def two_state(head, tmp_path_factory):
     out = tmp_path_factory.mktemp("video") / "two-state.mp4"
     times, values = two_state_values()
     calls = []
-    stats = video.write_video(out, head, times, values, NAMES, FPS, audio=silence_then_tone(0.6),
+    stats = video_writer.write_video(out, head, times, values, NAMES, FPS, audio=silence_then_tone(0.6),
                               sample_rate=RATE, size=SIZE, progress=lambda done, total: calls.append((done, total)))
     from engine.outputs.render import FrameRenderer
 
@@ -83,7 +84,7 @@ def leftovers(folder: Path) -> list[str]:
 
 def test_one_frame_per_time_and_the_stream_facts(two_state):
     out, stats, _, _ = two_state
-    info = video.probe(out)
+    info = video_probe.probe(out)
     assert info.frames == FRAMES == stats.frames
     assert (info.width, info.height) == SIZE
     assert info.fps == pytest.approx(FPS)
@@ -92,7 +93,7 @@ def test_one_frame_per_time_and_the_stream_facts(two_state):
 
 
 def test_audio_and_video_start_together_and_end_within_one_frame(two_state):
-    info = video.probe(two_state[0])
+    info = video_probe.probe(two_state[0])
     assert info.video_start == pytest.approx(0.0, abs=1e-3)
     assert info.audio_start == pytest.approx(0.0, abs=1e-3)
     assert abs(info.audio_duration - info.video_duration) <= 1.0 / FPS
@@ -100,7 +101,7 @@ def test_audio_and_video_start_together_and_end_within_one_frame(two_state):
 
 def test_frame_n_shows_the_face_at_time_n_over_fps(two_state):
     out, _, (first, second), _ = two_state
-    frames = video.read_frames(out).astype(float)
+    frames = video_probe.read_frames(out).astype(float)
     assert len(frames) == FRAMES
     to_first = np.abs(frames - first).mean(axis=(1, 2, 3))
     to_second = np.abs(frames - second).mean(axis=(1, 2, 3))
@@ -116,7 +117,7 @@ def test_frame_n_shows_the_face_at_time_n_over_fps(two_state):
 
 
 def test_the_tone_survives_and_starts_with_the_second_pose(two_state):
-    samples, rate = video.read_audio(two_state[0])
+    samples, rate = video_probe.read_audio(two_state[0])
     assert rate == RATE
     assert abs(len(samples) / rate - FRAMES / FPS) <= 1.0 / FPS     # padded to the video's length
     tone = samples[int(0.45 * rate):int(0.6 * rate)]
@@ -149,9 +150,9 @@ def test_stats_account_for_the_stages(two_state):
 def test_audio_longer_than_the_video_is_cut(head, tmp_path):
     out = tmp_path / "cut.mp4"
     times = np.arange(6) * (1000.0 / FPS)
-    video.write_video(out, head, times, np.zeros((6, 1)), ["jaw_open"], FPS,
+    video_writer.write_video(out, head, times, np.zeros((6, 1)), ["jaw_open"], FPS,
                       audio=np.full(RATE * 2, 0.1, dtype=np.float32), sample_rate=RATE, size=(64, 48))
-    info = video.probe(out)
+    info = video_probe.probe(out)
     assert info.frames == 6
     assert abs(info.audio_duration - 6 / FPS) <= 1.0 / FPS
 
@@ -160,8 +161,8 @@ def test_video_without_audio_and_at_an_odd_frame_rate(head, tmp_path):
     out = tmp_path / "silent.mp4"
     fps = 29.97
     times = np.arange(5) * (1000.0 / fps)
-    video.write_video(out, head, times, np.zeros((5, 1)), ["jaw_open"], fps, size=(64, 48))
-    info = video.probe(out)
+    video_writer.write_video(out, head, times, np.zeros((5, 1)), ["jaw_open"], fps, size=(64, 48))
+    info = video_probe.probe(out)
     assert info.frames == 5 and info.audio_duration is None
     assert info.fps == pytest.approx(fps, abs=1e-3)
 
@@ -170,17 +171,17 @@ def test_the_video_starts_at_the_first_frame_time_on_the_audio_clock(head, tmp_p
     """Frames from 500 ms: the audio is taken from 500 ms on, so the tone (from 333 ms) is on at once."""
     out = tmp_path / "late.mp4"
     times = 500.0 + np.arange(6) * (1000.0 / FPS)
-    video.write_video(out, head, times, np.zeros((6, 1)), ["jaw_open"], FPS,
+    video_writer.write_video(out, head, times, np.zeros((6, 1)), ["jaw_open"], FPS,
                       audio=silence_then_tone(1.0), sample_rate=RATE, size=(64, 48))
-    samples, _ = video.read_audio(out)
+    samples, _ = video_probe.read_audio(out)
     assert np.sqrt(np.mean(samples[int(0.02 * RATE):int(0.15 * RATE)] ** 2)) > 0.25
 
 
 def test_an_existing_file_is_replaced_whole(head, tmp_path):
     out = tmp_path / "again.mp4"
     out.write_bytes(b"old")
-    video.write_video(out, head, [0.0, 1000 / FPS], np.zeros((2, 1)), ["jaw_open"], FPS, size=(64, 48))
-    assert video.probe(out).frames == 2
+    video_writer.write_video(out, head, [0.0, 1000 / FPS], np.zeros((2, 1)), ["jaw_open"], FPS, size=(64, 48))
+    assert video_probe.probe(out).frames == 2
     assert leftovers(tmp_path) == []
 
 
@@ -192,27 +193,27 @@ def write_small(head, out, **options):
     times, values = two_state_values()
     arguments = dict(size=(64, 48))
     arguments.update(options)
-    return video.write_video(out, head, times[:4], values[:4], NAMES, FPS, **arguments)
+    return video_writer.write_video(out, head, times[:4], values[:4], NAMES, FPS, **arguments)
 
 
 def test_ffmpeg_missing_names_the_debian_package(head, tmp_path, monkeypatch):
     monkeypatch.setenv("PATH", str(tmp_path / "empty"))
-    with pytest.raises(video.FFmpegMissing) as caught:
+    with pytest.raises(video_writer.FFmpegMissing) as caught:
         write_small(head, tmp_path / "out.mp4")
     assert isinstance(caught.value, UserError)
     assert "apt-get install ffmpeg" in str(caught.value)
     assert list(tmp_path.iterdir()) == []
-    with pytest.raises(video.FFmpegMissing, match="ffprobe"):
-        video.probe(__file__)
+    with pytest.raises(video_writer.FFmpegMissing, match="ffprobe"):
+        video_probe.probe(__file__)
 
 
 def test_ffmpeg_failing_reports_its_last_words_and_leaves_nothing(head, tmp_path, monkeypatch):
     out = tmp_path / "out.mp4"
     out.write_bytes(b"keep me")
-    arguments = list(video.VIDEO_ARGS)
+    arguments = list(video_writer.VIDEO_ARGS)
     arguments[arguments.index("-preset") + 1] = "nonsense"
-    monkeypatch.setattr(video, "VIDEO_ARGS", arguments)
-    with pytest.raises(video.VideoError) as caught:
+    monkeypatch.setattr(video_writer, "VIDEO_ARGS", arguments)
+    with pytest.raises(video_writer.VideoError) as caught:
         write_small(head, out)
     message = str(caught.value)
     assert "ffmpeg failed" in message and "invalid preset 'nonsense'" in message
@@ -263,13 +264,13 @@ def test_bad_input_is_a_user_error_before_anything_is_written(head, tmp_path, mo
     arguments.update(options)
     path, times, values, fps = (arguments.pop(k) for k in ("path", "times", "values", "fps"))
     with pytest.raises(UserError, match=message):
-        video.write_video(path, head, times, values, NAMES, fps, **arguments)
+        video_writer.write_video(path, head, times, values, NAMES, fps, **arguments)
     assert list(tmp_path.iterdir()) == []
 
 
 def test_unknown_parameter_is_a_parameter_error(head, tmp_path):
     with pytest.raises(ParameterError):
-        video.write_video(tmp_path / "out.mp4", head, [0.0], [[0.5]], ["jaw_opne"], FPS, size=(64, 48))
+        video_writer.write_video(tmp_path / "out.mp4", head, [0.0], [[0.5]], ["jaw_opne"], FPS, size=(64, 48))
 
 
 # ---------------------------------------------------------------------------
@@ -278,7 +279,7 @@ def test_unknown_parameter_is_a_parameter_error(head, tmp_path):
 
 def test_contact_sheet_of_the_video_shows_every_picked_frame(two_state, tmp_path):
     out = two_state[0]
-    sheet = video.contact_sheet(out, columns=4, count=8, width=120, path=tmp_path / "sheet.png")
+    sheet = video_probe.contact_sheet(out, columns=4, count=8, width=120, path=tmp_path / "sheet.png")
     assert sheet.dtype == np.uint8 and sheet.ndim == 3
     assert (tmp_path / "sheet.png").stat().st_size > 1000
     # 8 thumbnails of 120 × 90 in 2 rows of 4, each with a label strip under it
@@ -292,15 +293,15 @@ def test_contact_sheet_of_the_video_shows_every_picked_frame(two_state, tmp_path
 def test_contact_sheet_of_frames_in_memory(two_state):
     _, _, pictures, _ = two_state
     frames = np.stack([pictures[0]] * 3 + [pictures[1]] * 3)
-    sheet = video.contact_sheet(frames, columns=3, count=6, width=80, fps=FPS)
+    sheet = video_probe.contact_sheet(frames, columns=3, count=6, width=80, fps=FPS)
     assert sheet.shape[1] == 6 + 3 * (80 + 6)
     with pytest.raises(UserError):
-        video.contact_sheet(np.zeros((2, 5, 5)), columns=2)
+        video_probe.contact_sheet(np.zeros((2, 5, 5)), columns=2)
 
 
 def test_progress_printer_on_a_log_writes_quarters():
     log = io.StringIO()
-    report = video.progress_printer("rendering", stream=log)
+    report = video_writer.progress_printer("rendering", stream=log)
     for done in range(101):
         report(done, 100)
     assert log.getvalue().splitlines() == [f"rendering: {q}% ({q}/100 frames)" for q in (25, 50, 75, 100)]
@@ -312,7 +313,7 @@ def test_progress_printer_on_a_terminal_redraws_one_line():
             return True
 
     screen = Terminal()
-    report = video.progress_printer("rendering", stream=screen, interval=0.0)
+    report = video_writer.progress_printer("rendering", stream=screen, interval=0.0)
     for done in range(11):
         report(done, 10)
     text = screen.getvalue()

@@ -6,8 +6,8 @@ import numpy as np
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QKeySequence
 
-from workbench.undo_commands import RemoveParameterCommand, RenameParameterCommand, WeightsChangedCommand
 from tests.workbench.workbench_model_state import model_state
+from workbench.undo_commands import RemoveParameterCommand, RenameParameterCommand, WeightsChangedCommand
 
 
 def _paint(window, name="jaw_open", weight=1.0, stroke_id=None):

@@ -9,8 +9,8 @@ from PySide6.QtWidgets import QFileDialog, QLabel, QMessageBox
 
 import engine
 from engine.commands import load_library
+from engine.outputs.configuration_export import export_configuration
 from workbench import settings
-from workbench.export_configuration import export_configuration
 from workbench.tool_options import NO_TOOL
 from workbench.undo_commands import WeightsChangedCommand
 from tests.workbench.workbench_model_state import model_state

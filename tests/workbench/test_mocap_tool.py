@@ -18,9 +18,12 @@ from PySide6.QtCore import QPoint, Qt
 from PySide6.QtWidgets import QDockWidget, QMessageBox
 
 import engine
-from engine.mocap.pca import load_articulation_file, multistage_pca, select_frames
+from engine.mocap.articulation_file import load_articulation_file
+from engine.mocap.frame_selection import select_frames
+from engine.mocap.naming import write_mapping
+from engine.mocap.pca import multistage_pca
+from engine.mocap.sample_files import write_sample_recording
 from engine.mocap.session import load_session
-from workbench.mocap.files import write_mapping, write_sample_recording
 from workbench.mocap.import_dialog import EXCLUDED, FILLED, GAPS, LONGEST, MISSING, POINT
 from workbench.mocap.marker_overlay import error_colors
 from workbench.mocap.worker import running_jobs

@@ -1,10 +1,12 @@
-"""Weight painting in the real window: strokes, brushes, restrictions, undo, live preview (issue 7).
+"""Weight painting in the real window: strokes, brushes, restrictions, undo, live preview (§2.2.2).
 
 Strokes are driven through the same methods the viewport's mouse events call
 (``press``/``drag``/``release`` with widget pixels from
 ``viewport.world_to_widget``); one test goes through real Qt mouse events.
 Expected weights come from the engine functions themselves
-(:func:`engine.painting.compute_dab`, :class:`~engine.painting.Stroke`).
+(:func:`engine.painting.compute_dab`, :class:`~engine.painting.Stroke`), and
+a stroke scripted with :class:`~engine.painting.PaintStroke` gives the mouse's
+weights bit for bit.
 """
 
 from __future__ import annotations
@@ -14,7 +16,17 @@ import pytest
 from PySide6.QtCore import QPoint, Qt
 from PySide6.QtTest import QTest
 
-from engine.painting import Brush, DenseRegion, Stroke, compute_dab, compute_gradient
+from engine.model import apply_weight_change
+from engine.painting import (
+    Brush,
+    DenseRegion,
+    PaintContext,
+    PaintStroke,
+    Stroke,
+    compute_dab,
+    compute_gradient,
+    rest_point,
+)
 from tests.workbench.workbench_model_state import model_state
 
 
@@ -44,16 +56,16 @@ def start_painting(window, name="jaw_open", **brush):
     return paint
 
 
-def record_dabs(monkeypatch, paint):
-    """Wrap ``paint.dab`` so the test knows each dab's rest point."""
+def record_dabs(monkeypatch):
+    """Wrap the engine's ``PaintStroke.dab`` so the test knows each dab's rest point."""
     points = []
-    original = paint.dab
+    original = PaintStroke.dab
 
-    def dab(point):
+    def dab(self, point, **view):
         points.append(np.array(point, dtype=float))
-        return original(point)
+        return original(self, point, **view)
 
-    monkeypatch.setattr(paint, "dab", dab)
+    monkeypatch.setattr(PaintStroke, "dab", dab)
     return points
 
 
@@ -79,7 +91,7 @@ def test_one_dab_changes_exactly_what_compute_dab_predicts(window):
     x, y = pixel_of(window, target)
     hit = paint._hit(x, y)
     assert hit is not None
-    expected = compute_dab(paint.context(), before, paint.brush, hit[1], **paint._view())
+    expected = compute_dab(paint.context(), before, paint.brush, hit[1], **paint.view())
     assert len(expected) > 3
     stack = window.document.undo_stack
     count = stack.count()
@@ -97,7 +109,7 @@ def test_a_stroke_is_the_engine_stroke_and_one_undo_step_restored_bit_for_bit(wi
     model = window.document.model
     before_state = model_state(model)
     before = dense(window, "jaw_open")
-    points = record_dabs(monkeypatch, paint)
+    points = record_dabs(monkeypatch)
     a = model.vertices[rest_vertex(window, (-35, -40, 70))]
     b = model.vertices[rest_vertex(window, (35, -40, 70))]
     (xa, ya), (xb, yb) = pixel_of(window, a), pixel_of(window, b)
@@ -114,7 +126,7 @@ def test_a_stroke_is_the_engine_stroke_and_one_undo_step_restored_bit_for_bit(wi
     replay = before.copy()
     stroke = Stroke(replay)
     for p in points:
-        stroke.dab(paint.context(), paint.brush, p, **paint._view())
+        stroke.dab(paint.context(), paint.brush, p, **paint.view())
     after = dense(window, "jaw_open")
     assert after.tobytes() == replay.tobytes()
     painted_state = model_state(model)
@@ -125,6 +137,43 @@ def test_a_stroke_is_the_engine_stroke_and_one_undo_step_restored_bit_for_bit(wi
     assert model_state(model) == painted_state
     # The viewport shows the model's weights again after undo/redo.
     assert np.array_equal(window.viewport.displayed_colors(), window.viewport.heat_map_colors("jaw_open"))
+
+
+@pytest.mark.parametrize("tool, hold", [("add", False), ("add", True), ("gradient", False)],
+                         ids=["dabs", "dabs-on-the-posed-mesh", "gradient"])
+def test_a_stroke_scripted_from_python_gives_the_mouse_weights_bit_for_bit(window, tool, hold):
+    """The mouse stroke and the same stroke through engine.painting.PaintStroke (same rest points, brush, view)."""
+    paint = start_painting(window, name="jaw_open", radius=10.0, strength=0.35, falloff="linear", mode="add",
+                           value=0.9, front_faces_only=True, mirror=True, connected=True)
+    if tool == "gradient":
+        paint.set_tool("gradient")
+    if hold:
+        paint.set_hold(True, 0.8)                  # the mouse picks the posed mesh; painting is on the rest mesh
+    window.viewport.render_now()
+    document, viewport = window.document, window.viewport
+    model = document.model
+    scripted = model.copy()                        # the Python prompt's own model, as it was before the stroke
+    (xa, ya), (xb, yb) = pixel_of(window, (-30, -35, 75)), pixel_of(window, (30, -45, 75))
+    pixels = [(xa + t * (xb - xa), ya + t * (yb - ya)) for t in np.linspace(0, 1, 9)]
+    rest_points = []
+    for k, (x, y) in enumerate(pixels):
+        _, vertices, weights = viewport.pick_cell(x, y)      # what the controller will pick at this pixel
+        rest_points.append(rest_point(model, vertices, weights))
+        (paint.press if k == 0 else paint.drag)(x, y)
+    view, brush = paint.view(), paint.brush
+    count = document.undo_stack.count()
+    paint.release(*pixels[-1])
+    assert document.undo_stack.count() == count + 1
+    assert not np.array_equal(model.regions["jaw_open"].dense(model.n_vertices),
+                              scripted.regions["jaw_open"].dense(model.n_vertices))
+
+    stroke = PaintStroke(scripted, "jaw_open", brush, PaintContext(scripted), **view)
+    for point in rest_points:
+        (stroke.gradient_to if tool == "gradient" else stroke.to)(point)
+    apply_weight_change(scripted, "jaw_open", stroke.finish())
+    assert model_state(scripted) == model_state(model)        # every bit of every region
+    region, mouse = scripted.regions["jaw_open"], model.regions["jaw_open"]
+    assert region.indices.tobytes() == mouse.indices.tobytes() and region.weights.tobytes() == mouse.weights.tobytes()
 
 
 def test_real_mouse_events_paint_and_alt_drag_does_not(window):
@@ -220,7 +269,7 @@ def test_gradient_and_sample(window):
     (xb, yb) = pixel_of(window, model.vertices[rest_vertex(window, (0, -40, 80))])
     start, end = paint._hit(xa, ya)[1], paint._hit(xb, yb)[1]
     expected = compute_gradient(paint.context(), before, start, end, start_value=1.0, end_value=0.0, strength=1.0,
-                                front_faces_only=True, connected=True, **paint._view())
+                                front_faces_only=True, connected=True, **paint.view())
     count = window.document.undo_stack.count()
     paint.press(xa, ya)
     paint.drag((xa + xb) / 2, (ya + yb) / 2)

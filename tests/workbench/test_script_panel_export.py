@@ -28,7 +28,7 @@ pytestmark = [
 
 @pytest.fixture(scope="module")
 def spoken(tmp_path_factory):
-    from workbench.script_panel.speech_run import SayRequest, run_say
+    from engine.speech.requests import SayRequest, run_say
 
     # With visual prosody (seeded): its brows and nods go into the files too.
     return run_say(SayRequest(SENTENCE, engine.load_model(), prosody_seed=3), tmp_path_factory.mktemp("said"))
@@ -62,7 +62,7 @@ def export_through_dialog(qtbot, window, folder, *, base="hello", fps=15.0, size
 
 def test_export_writes_a_playable_video_with_audio_and_the_tables(said_window, spoken, qtbot, tmp_path):
     from engine.speech.synthesis import read_wav
-    from engine.outputs.video import probe, read_frames
+    from engine.outputs.video_probe import probe, read_frames
 
     window = said_window
     with qtbot.waitSignal(window.speech_exporter.ended, timeout=120000) as ended:
@@ -132,7 +132,7 @@ def test_an_impossible_export_is_a_dialog_and_writes_nothing(said_window, qtbot,
 
 
 def test_export_plan_checks():
-    from workbench.script_panel.export_files import ExportPlan
+    from engine.outputs.speech_files import ExportPlan
 
     plan = ExportPlan(DEFAULT_HEAD.parent, "x", {"mp4"}, size=(161, 120))
     with pytest.raises(UserError, match="even"):

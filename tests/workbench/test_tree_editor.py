@@ -9,9 +9,9 @@ from PySide6.QtGui import QDropEvent
 from PySide6.QtWidgets import QLineEdit, QMessageBox
 
 import engine
+from tests.workbench.workbench_model_state import model_state
 from workbench.tree_editor import TOOL_ID
 from workbench.tree_editor.tree_model import GROUP_TEXT
-from tests.workbench.workbench_model_state import model_state
 
 
 def _select(window, name):

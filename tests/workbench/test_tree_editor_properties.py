@@ -12,8 +12,8 @@ from PySide6.QtGui import QImage
 from PySide6.QtWidgets import QMessageBox
 
 import engine
-from workbench.tree_editor import TOOL_ID
 from tests.workbench.workbench_model_state import model_state
+from workbench.tree_editor import TOOL_ID
 
 SCREENSHOT_NAME = "workbench-tree-editor.png"
 
@@ -51,7 +51,7 @@ def test_typing_a_new_pivot_moves_the_rotated_vertices_as_the_rotation_formula_s
     before = model_state(document.model)
 
     # Type x, y and z, then Enter: one commit for the whole vector.
-    for edit, text in zip(sheet.pivot.edits, ("5", "-25", "-40")):
+    for edit, text in zip(sheet.pivot.edits, ("5", "-25", "-40"), strict=True):
         edit.selectAll()
         qtbot.keyClicks(edit, text)
     qtbot.keyClick(sheet.pivot.edits[-1], Qt.Key.Key_Return)

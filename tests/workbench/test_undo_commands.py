@@ -6,13 +6,19 @@ import numpy as np
 import pytest
 
 import engine
+from engine.model.weight_changes import WeightChange
 from tests.workbench.synthetic_workbench_model import build_synthetic_model
-from workbench.document import ModelDocument
-from workbench.model_edits import weights_at, with_weights
-from workbench.undo_commands import (AddParameterCommand, MoveParameterCommand, RemoveParameterCommand,
-                                     RenameParameterCommand, ReplaceParameterCommand, SetRegionCommand,
-                                     WeightsChangedCommand)
 from tests.workbench.workbench_model_state import model_state
+from workbench.document import ModelDocument
+from workbench.undo_commands import (
+    AddParameterCommand,
+    MoveParameterCommand,
+    RemoveParameterCommand,
+    RenameParameterCommand,
+    ReplaceParameterCommand,
+    SetRegionCommand,
+    WeightsChangedCommand,
+)
 
 POSE = {"head_turn": 0.3, "jaw_open": 0.7, "brow_raise": 0.6}
 
@@ -76,7 +82,7 @@ def test_undo_restores_the_model_bit_for_bit_and_redo_reapplies_it(document, qtb
     model = document.model
     pristine = model_with_field()
     before = model_state(model)
-    values = {k: v for k, v in POSE.items()}
+    values = dict(POSE)
     document.set_values(values)
     deformed_before = document.vertices().copy()
 
@@ -135,7 +141,7 @@ def test_one_stroke_is_one_undo_step(document):
     before = model_state(model)
     skin = model.part_vertices("skin")
     dabs = [skin[0:40], skin[20:60], skin[50:90]]
-    for k, dab in enumerate(dabs):
+    for dab in dabs:
         weights = document.region_weights("brow_raise", dab)
         new = np.clip(np.nan_to_num(weights) + 0.3, 0, 1)
         document.push(WeightsChangedCommand(document, "brow_raise", dab, new, stroke_id="stroke-1"))
@@ -169,7 +175,7 @@ def test_a_tool_that_already_wrote_the_weights_pushes_before_and_after(document)
     dab = model.part_vertices("skin")[100:130]
     before = document.region_weights("jaw_open", dab)
     after = np.full(len(dab), 0.75)
-    document.apply_weights("jaw_open", dab, after)          # what the tool does while the mouse moves
+    document.apply_weight_change("jaw_open", WeightChange(dab, before, after))   # what a tool may do while painting
     painted = model_state(model)
     revision = model.revision
     document.push(WeightsChangedCommand(document, "jaw_open", dab, after, before, already_applied=True))
@@ -238,14 +244,3 @@ def test_modified_follows_the_clean_index(document, tmp_path, qtbot):
     assert document.undo_stack.count() == 0 and not document.is_modified
     document.mark_modified()                       # e.g. a recovered autosave
     assert document.is_modified and not document.undo_stack.canUndo()
-
-
-def test_with_weights_and_weights_at_mark_absent_vertices_with_nan():
-    region = engine.InfluenceRegion([2, 5, 9], [0.5, 0.0, 1.0])
-    np.testing.assert_array_equal(weights_at(region, [9, 4, 5]), [1.0, np.nan, 0.0])
-    new = with_weights(region, [5, 4, 9], [np.nan, 0.0, 0.25])
-    assert new.indices.tolist() == [2, 4, 9]            # 5 taken out, 4 added with weight 0
-    assert new.weights.tolist() == [0.5, 0.0, 0.25]
-    again = with_weights(new, [5, 4, 9], weights_at(region, [5, 4, 9]))
-    assert again.indices.tolist() == region.indices.tolist()
-    assert again.weights.tobytes() == region.weights.tobytes()

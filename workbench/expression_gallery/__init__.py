@@ -4,7 +4,7 @@
 Expression gallery, Ctrl+G; hidden until opened) as ``window.expression_gallery``.
 Clicking a face plays it through ``window.player`` with its onset, apex and
 offset; the intensity slider scales it (``amplitude`` in percent). What is
-listed comes from :mod:`.entries`; the pictures from :mod:`.thumbnails`.
+listed comes from :mod:`engine.timeline.expressions`; the pictures from :mod:`.thumbnails`.
 """
 
 from __future__ import annotations
@@ -15,10 +15,10 @@ from PySide6.QtWidgets import (QDockWidget, QHBoxLayout, QLabel, QListView, QLis
                                QVBoxLayout, QWidget)
 
 from engine.errors import UserError
+from engine.timeline.expressions import GalleryEntry, gallery_entries
 
 from ..icons import icon
 from ..library_editor import library_sources
-from .entries import GalleryEntry, gallery_entries
 from .thumbnails import THUMBNAIL_SIZE, ThumbnailCache
 
 DOCK_NAME = "dock:expression-gallery"

@@ -21,11 +21,12 @@ from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtWidgets import (QComboBox, QFileDialog, QHBoxLayout, QLabel, QMessageBox, QPushButton, QSplitter,
                                QToolBar, QVBoxLayout, QWidget)
 
+from engine.commands.analysis import CheckResult, Problem, check_library_text
 from engine.errors import UserError
 from engine.formats.atomic import atomic_write_text
+from engine.timeline.command_curves import CommandCurves, command_curves
 
 from ..icons import icon
-from .analysis import CheckResult, CommandCurves, Problem, check_library_text, command_curves
 from .arguments_form import ArgumentsForm
 from .code_editor import CodeEditor
 from .command_list import CommandList

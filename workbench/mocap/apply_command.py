@@ -2,10 +2,10 @@
 
 :func:`engine.mocap.apply.apply_articulation` runs on a copy of the model in
 the background; the parameters and influence regions it made are then added
-to the open model by :class:`AddArticulationCommand`, through
-:meth:`~workbench.document.ModelDocument.apply_add_parameter` like any added
-parameter. Undo removes them last-first, which restores the tree exactly
-(new leaves, appended at the end of the order).
+to the open model by :class:`AddArticulationCommand`, in one engine edit
+(:func:`engine.model.edits.add_parameters`, all or none, through
+:meth:`~workbench.document.ModelDocument.apply_add_parameters`). Undo
+restores the tree the edit returned, exactly.
 
 >>> document.push(AddArticulationCommand(document, [(parameter, region), ...]))   # doctest: +SKIP
 >>> document.undo_stack.undoText()                                                # doctest: +SKIP
@@ -14,12 +14,12 @@ parameter. Undo removes them last-first, which restores the tree exactly
 
 from __future__ import annotations
 
-from engine.errors import UserError
+from engine.model.edits import TreeState
 
-from ..undo_commands import ModelEditCommand
+from ..undo_commands import TreeEditCommand
 
 
-class AddArticulationCommand(ModelEditCommand):
+class AddArticulationCommand(TreeEditCommand):
     """Add several parameters with their regions as one undoable edit (all or none)."""
 
     def __init__(self, document, parameters_and_regions, text: str | None = None):
@@ -33,17 +33,5 @@ class AddArticulationCommand(ModelEditCommand):
     def names(self) -> list[str]:
         return [p.name for p, _ in self._items]
 
-    def apply(self) -> None:
-        added = []
-        try:
-            for parameter, region in self._items:
-                self.document.apply_add_parameter(parameter.copy(), region.copy())
-                added.append(parameter.name)
-        except UserError:
-            for name in reversed(added):
-                self.document.apply_remove_parameter(name)
-            raise
-
-    def revert(self) -> None:
-        for parameter, _ in reversed(self._items):
-            self.document.apply_remove_parameter(parameter.name)
+    def edit(self) -> TreeState:
+        return self.document.apply_add_parameters(self._items)

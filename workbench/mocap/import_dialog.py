@@ -7,8 +7,9 @@ lists its markers: the file's label, the MPEG-4 feature point it becomes
 drops the marker; loaded from or saved as a mapping file), whether it is a
 head-fixed reference for removing head motion, and its gaps — frames
 missing, gaps, the longest gap, and what the max-gap setting fills and
-leaves missing (:mod:`.gap_stats`). Phone labels come from a TextGrid or
-label file, or from Festival's timing of the spoken text. **Import** runs
+leaves missing (:func:`engine.mocap.gaps.marker_gap_stats`, by the very
+rule the import then applies). Phone labels come from a TextGrid or label
+file, or from Festival's timing of the spoken text. **Import** runs
 :func:`engine.mocap.importer.import_marker_file` off the GUI thread and
 saves the session file (HDF5); a bad file ends in a dialog naming file and
 line, and the dialog stays open with everything as it was.
@@ -24,14 +25,12 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, 
                                QPushButton, QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
 
 from engine.mocap.csv_table import CsvLayout
-from engine.mocap.gaps import max_gap_frames
+from engine.mocap.gaps import marker_gap_stats, max_gap_frames
 from engine.mocap.importer import DEFAULT_MAX_GAP_MS, import_marker_file
-from engine.mocap.naming import DROP, default_reference, normalise_label, read_mapping
+from engine.mocap.naming import DROP, default_reference, normalise_label, read_mapping, write_mapping
 from engine.mocap.readers import FORMAT_NAMES, read_marker_file
 from engine.mocap.session import save_session
 
-from .files import write_mapping
-from .gap_stats import marker_gap_stats
 from .worker import run_in_background, show_error
 
 MARKER_FILES = "Marker files (*.tsv *.c3d *.trc *.csv *.txt);;All files (*)"

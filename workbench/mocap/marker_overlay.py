@@ -32,7 +32,7 @@ def marker_to_model_transform(model, markers, positions) -> tuple[float, np.ndar
     three pairs the markers are only moved so their centre sits on the
     face's landmarks' centre.
     """
-    from engine.mocap.apply import similarity_fit
+    from engine.mocap.marker_alignment import similarity_fit
     from engine.mocap.synthetic import marker_vertices
 
     places = {}

@@ -27,8 +27,10 @@ from PySide6.QtWidgets import (QComboBox, QDockWidget, QFileDialog, QHBoxLayout,
                                QPlainTextEdit, QPushButton, QSlider, QSpinBox, QTableWidget, QTableWidgetItem,
                                QTabWidget, QVBoxLayout, QWidget)
 
-from engine.mocap.apply import apply_articulation, reconstruct_held_out
-from engine.mocap.pca import DEFAULT_STAGES, Stage, multistage_pca, save_articulation_file
+from engine.mocap.apply import apply_articulation
+from engine.mocap.articulation_file import save_articulation_file
+from engine.mocap.held_out import reconstruct_held_out
+from engine.mocap.pca import DEFAULT_STAGES, Stage, multistage_pca
 
 from .apply_command import AddArticulationCommand
 from .marker_overlay import error_colors

@@ -17,8 +17,8 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, 
                                QFormLayout, QHBoxLayout, QLabel, QLineEdit, QPushButton, QVBoxLayout, QWidget)
 
 from engine.mocap.errors import MocapError
+from engine.mocap.frame_selection import select_frames
 from engine.mocap.labels import festival_phones, read_labels
-from engine.mocap.pca import select_frames
 
 from .coordinate_plot import CoordinatePlot
 from .import_dialog import LABEL_FILES

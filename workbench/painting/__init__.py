@@ -1,4 +1,4 @@
-"""Weight painting in the workbench (issue 7, §2.2.2): the GUI over :mod:`engine.painting`.
+"""Weight painting in the workbench (§2.2.2): the GUI over :mod:`engine.painting`.
 
 ``install(window)`` adds
 

@@ -1,4 +1,4 @@
-"""The weight-paint tool: mouse strokes on the viewport become engine dabs, one undo step per stroke.
+"""The weight-paint tool: mouse strokes on the viewport drive the engine's stroke, one undo step per stroke.
 
 :class:`PaintController` is the tool's state (the engine :class:`~engine.painting.Brush`,
 the tool — a brush mode, ``"gradient"`` or ``"sample"`` —, the held value)
@@ -9,11 +9,14 @@ the middle button and the wheel). Tests drive it with :meth:`press`,
 :meth:`drag` and :meth:`release` in widget coordinates — exactly what the
 event filter calls.
 
-Per dab: the pick on the drawn mesh is mapped to the rest mesh (the hit
-polygon's interpolation weights), :meth:`engine.painting.Stroke.dab` paints
-the dense weights, and only the changed vertices are recoloured (and moved,
-with the live preview) in the viewport. On release the stroke's
-:class:`~engine.painting.Change` becomes one
+The stroke itself is the engine's :class:`~engine.painting.PaintStroke`: a
+pick on the drawn mesh is mapped to the rest mesh
+(:func:`~engine.painting.rest_point`), and :meth:`PaintStroke.to
+<engine.painting.PaintStroke.to>` (dabs along the drag) or
+:meth:`~engine.painting.PaintStroke.gradient_to` paints the dense weights.
+This module only recolours the changed vertices (and moves them, with the
+live preview), draws the cursor, and on release pushes the stroke's
+:class:`~engine.model.WeightChange` as one
 :class:`~workbench.undo_commands.WeightsChangedCommand`.
 
 >>> paint = window.paint                               # doctest: +SKIP
@@ -31,14 +34,25 @@ from PySide6.QtCore import QEvent, QObject, Qt, Signal
 from PySide6.QtWidgets import QApplication, QMessageBox
 
 from engine.errors import UserError
-from engine.painting import (MODES, Brush, Change, DenseRegion, LivePreview, PaintContext, Stroke,
-                             compute_gradient, heat_colors, mirrored_points, mirrored_vectors, sample_weight)
+from engine.painting import (
+    MODES,
+    Brush,
+    Change,
+    DenseRegion,
+    LivePreview,
+    PaintContext,
+    PaintStroke,
+    heat_colors,
+    mirrored_points,
+    mirrored_vectors,
+    rest_point,
+    sample_weight,
+)
 
+from ..undo_commands import WeightsChangedCommand
 from .cursor import BrushCursor
-from .edits import weights_command
 
-TOOLS = MODES + ("gradient", "sample")
-SPACING = 0.25            # dabs along a stroke, this fraction of the radius apart
+TOOLS = (*MODES, "gradient", "sample")
 NO_PARAMETER = "Select a parameter in the Parameters dock to paint its weights"
 HELP = ("left-drag paints · Ctrl+click samples · Alt+left-drag orbits · middle-drag pans · wheel zooms · "
         "[ and ] change the radius")
@@ -69,10 +83,9 @@ class PaintController(QObject):
         self._dense_name: str | None = None
         self._held: tuple[object, str, float] | None = None   # (model, parameter, value before it was held)
         self._pressed = False
-        self._stroke: Stroke | None = None
+        self._stroke: PaintStroke | None = None
         self._live: LivePreview | None = None
-        self._last: np.ndarray | None = None               # rest point of the last dab
-        self._gradient: tuple[np.ndarray, np.ndarray, Change] | None = None   # rest start, drawn start, change
+        self._gradient_start: np.ndarray | None = None      # where the gradient began on the drawn mesh
         self.cursor = BrushCursor(self.viewport.plotter)
         self.viewport.plotter.installEventFilter(self)
         self.document.model_replaced.connect(self._on_model_replaced)
@@ -116,6 +129,8 @@ class PaintController(QObject):
         brush = dataclasses.replace(self.brush, **changes)
         if brush != self.brush:
             self.brush = brush
+            if self._stroke is not None:
+                self._stroke.brush = brush
             self.brush_changed.emit(brush)
 
     def set_tool(self, tool: str) -> None:
@@ -181,7 +196,7 @@ class PaintController(QObject):
             action.blockSignals(False)
 
     # -- mouse ---------------------------------------------------------------
-    def eventFilter(self, watched, event) -> bool:  # noqa: N802 (Qt's name)
+    def eventFilter(self, watched, event) -> bool:
         if not self._active:
             return False
         kind = event.type()
@@ -225,10 +240,10 @@ class PaintController(QObject):
             self.viewport.set_fast_rendering(False)
             self.sample_at(hit[1])
         elif self.tool == "gradient":
-            self._begin_stroke()
-            self._gradient = (hit[1], hit[0].point, Change.empty())
+            self._begin_stroke().gradient_to(hit[1], **self.view())
+            self._gradient_start = hit[0].point
         else:
-            self._dab_along(hit[1])
+            self._show_weights(self._begin_stroke().to(hit[1], **self.view()).indices)
 
     def drag(self, x: float, y: float) -> None:
         """Mouse moved with the button down: dabs along the way (or the gradient follows)."""
@@ -239,30 +254,30 @@ class PaintController(QObject):
         if hit is None:
             return
         if self.tool == "gradient":
-            if self._gradient is not None:
-                self._gradient_to(hit[1], hit[0].point)
+            if self._gradient_start is not None and self._stroke is not None:
+                self._show_weights(self._stroke.gradient_to(hit[1], **self.view()).indices)
+                self.cursor.show_line(self._gradient_start, hit[0].point)
         elif self.tool in MODES:
-            self._dab_along(hit[1])
+            self._show_weights(self._begin_stroke().to(hit[1], **self.view()).indices)
 
     def release(self, *_pos) -> None:
         """Button up: the stroke becomes one undo step."""
         self._pressed = False
         self.viewport.set_fast_rendering(False)
         stroke, self._stroke = self._stroke, None
-        self._live, self._last, self._gradient = None, None, None
+        self._live, self._gradient_start = None, None
         self.cursor.hide_line()
         if stroke is None:
             return
         change = stroke.finish()
         if not change:
             return
-        name = self._dense_name
+        name = stroke.name
         verb = "Gradient on" if self.tool == "gradient" else "Paint"
         try:
-            self.document.push(weights_command(self.document, name, change, f"{verb} {name}"))
+            self.document.push(WeightsChangedCommand.from_change(self.document, name, change, text=f"{verb} {name}"))
         except UserError as error:
-            change.undo(self._dense.weights)
-            self._show_weights(change.indices)
+            self._show_weights(stroke.cancel().indices)
             QMessageBox.warning(self.window, "Weight painting", str(error))
 
     def sample_at(self, rest_point) -> float:
@@ -281,60 +296,31 @@ class PaintController(QObject):
         if found is None:
             return None
         hit, vertices, weights = found
-        return hit, weights @ self.document.model.vertices[vertices]
+        return hit, rest_point(self.document.model, vertices, weights)
 
-    def _view(self) -> dict:
+    def view(self) -> dict:
+        """The camera as the engine's brushes take it: ``{"view_direction": …}`` for a parallel
+        projection, else ``{"camera_position": …}`` (rest-mesh mm)."""
         camera = self.viewport.plotter.camera
         if camera.parallel_projection:
             direction = np.subtract(camera.focal_point, camera.position)
             return {"view_direction": direction / np.linalg.norm(direction)}
         return {"camera_position": np.asarray(camera.position, dtype=float)}
 
-    def _begin_stroke(self) -> None:
+    def _begin_stroke(self) -> PaintStroke:
         if self._stroke is None:
             dense = self.dense()
-            self._stroke = Stroke(dense.weights)
+            self._stroke = PaintStroke(self.document.model, self._dense_name, self.brush, self.context(),
+                                       dense=dense)
             if not self.document.is_at_rest():
                 self._live = LivePreview(self.document.model, self._dense_name, dense, self.document.values)
-
-    def _dab_along(self, point: np.ndarray) -> None:
-        """Dabs from the last one towards ``point``, ``SPACING × radius`` apart (the first one at ``point``)."""
-        self._begin_stroke()
-        if self._last is None:
-            self.dab(point)
-            return
-        step = SPACING * self.brush.radius
-        gap = point - self._last
-        distance = float(np.linalg.norm(gap))
-        count = int(distance // step)
-        start = self._last
-        for k in range(1, count + 1):
-            self.dab(start + gap * (k * step / distance))
+        return self._stroke
 
     def dab(self, point) -> Change:
         """One dab of the brush at rest-mesh ``point`` (mm) into the current stroke; shows it."""
-        self._begin_stroke()
-        point = np.asarray(point, dtype=float)
-        change = self._stroke.dab(self.context(), self.brush, point, **self._view())
-        self._last = point
+        change = self._begin_stroke().dab(point, **self.view())
         self._show_weights(change.indices)
         return change
-
-    def _gradient_to(self, end: np.ndarray, drawn_end: np.ndarray) -> None:
-        start, drawn_start, previous = self._gradient
-        weights = self._dense.weights
-        previous.undo(weights)
-        b = self.brush
-        try:
-            change = compute_gradient(self.context(), weights, start, end, start_value=b.value, end_value=0.0,
-                                      strength=b.strength, part=b.part, front_faces_only=b.front_faces_only,
-                                      connected=b.connected, mirror=b.mirror, **self._view())
-        except UserError:
-            change = Change.empty()              # start and end the same point: no ramp yet
-        self._stroke.apply(change)
-        self._gradient = (start, drawn_start, change)
-        self._show_weights(np.union1d(previous.indices, change.indices))
-        self.cursor.show_line(drawn_start, drawn_end)
 
     def _show_weights(self, indices) -> None:
         """Recolour (and with the live preview, move) only these vertices."""
@@ -384,7 +370,7 @@ class PaintController(QObject):
             self._live = None
 
     def _on_model_replaced(self, _model) -> None:
-        self._stroke, self._pressed, self._gradient, self._held = None, False, None, None
+        self._stroke, self._pressed, self._gradient_start, self._held = None, False, None, None
         self._ctx, self._dense, self._live = None, None, None
 
     def _on_selection_changed(self, _name) -> None:

@@ -3,7 +3,8 @@
 Two rings (the second one at the mirror image when X-mirror is on) and a
 line for the gradient tool, each a VTK actor drawn over the model without
 lighting. They are built once; moving them only changes a 4 × 4 matrix, so
-following the mouse costs no geometry.
+following the mouse costs no geometry. One of the workbench's few drawing
+modules: pyvista and VTK are imported when the cursor is built, not with the module.
 
 >>> cursor = BrushCursor(viewport.plotter)                         # doctest: +SKIP
 >>> cursor.place(point=(0, 150, 120), normal=(0, 0, 1), radius=15)  # doctest: +SKIP
@@ -12,9 +13,13 @@ following the mouse costs no geometry.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
-import pyvista as pv
-from vtkmodules.vtkCommonMath import vtkMatrix4x4
+
+if TYPE_CHECKING:
+    import pyvista as pv
+    from vtkmodules.vtkCommonMath import vtkMatrix4x4
 
 RING_COLOR = "#ffffff"
 MIRROR_COLOR = "#ffd34d"
@@ -25,6 +30,8 @@ LIFT_MM = 0.3       # the ring floats this far above the surface, so the mesh do
 
 
 def _unit_ring() -> pv.PolyData:
+    import pyvista as pv
+
     angles = np.linspace(0.0, 2.0 * np.pi, RING_SEGMENTS, endpoint=False)
     points = np.column_stack([np.cos(angles), np.sin(angles), np.zeros_like(angles)])
     lines = np.concatenate([[RING_SEGMENTS + 1], np.arange(RING_SEGMENTS), [0]])
@@ -52,6 +59,8 @@ def ring_matrix(point, normal, radius: float) -> np.ndarray:
 
 
 def _vtk_matrix(m: np.ndarray) -> vtkMatrix4x4:
+    from vtkmodules.vtkCommonMath import vtkMatrix4x4
+
     out = vtkMatrix4x4()
     for i in range(4):
         for j in range(4):
@@ -62,7 +71,9 @@ def _vtk_matrix(m: np.ndarray) -> vtkMatrix4x4:
 class BrushCursor:
     """The rings and gradient line on a pyvista plotter; hidden until :meth:`place`."""
 
-    def __init__(self, plotter):
+    def __init__(self, plotter: Any):
+        import pyvista as pv
+
         self._plotter = plotter
         ring = _unit_ring()
         self.ring = self._add(ring, RING_COLOR, "paint:cursor")

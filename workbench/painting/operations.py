@@ -1,8 +1,9 @@
 """The Weights menu: whole-region operations on the selected parameter, each one undo step.
 
 Each operation calls one engine function of :mod:`engine.painting` on the
-painted parameter's dense weights and pushes the difference as a
-:class:`~workbench.undo_commands.WeightsChangedCommand`; normalising group 1
+painted parameter's dense weights and pushes the difference, as the model's
+:class:`~engine.model.WeightChange` (:func:`~engine.painting.weight_change_from_dense`),
+in a :class:`~workbench.undo_commands.WeightsChangedCommand`; normalising group 1
 changes several regions and is one macro of
 :class:`~workbench.undo_commands.SetRegionCommand`. Invert, clear, smooth,
 grow and shrink keep to the part chosen in the tool options ("All parts":
@@ -19,13 +20,24 @@ import numpy as np
 from PySide6.QtWidgets import QMessageBox
 
 from engine.errors import UserError
-from engine.painting import (LEFT_TO_RIGHT, RIGHT_TO_LEFT, Change, clear_weights, grow_weights, group1_names,
-                             invert_weights, mirror_region, mirror_weights, normalise_group1, shrink_weights,
-                             smooth_weights)
+from engine.painting import (
+    LEFT_TO_RIGHT,
+    RIGHT_TO_LEFT,
+    Change,
+    clear_weights,
+    group1_names,
+    grow_weights,
+    invert_weights,
+    mirror_region,
+    mirror_weights,
+    normalise_group1,
+    shrink_weights,
+    smooth_weights,
+    weight_change_from_dense,
+)
 
-from ..undo_commands import SetRegionCommand
+from ..undo_commands import SetRegionCommand, WeightsChangedCommand
 from .controller import NO_PARAMETER
-from .edits import weights_command
 
 SMOOTH_ITERATIONS = 3
 RINGS = 1
@@ -81,7 +93,9 @@ def run(controller, operation: str) -> bool:
         if not change:
             window.statusBar().showMessage(f"{label}: the weights of {name} are already so; nothing changed", 4000)
             return False
-        document.push(weights_command(document, name, change, f"{label} weights of {name}"))
+        document.push(WeightsChangedCommand.from_change(document, name,
+                                                        weight_change_from_dense(document.model, name, change),
+                                                        text=f"{label} weights of {name}"))
     except UserError as error:
         QMessageBox.warning(window, f"Weights: {label}", str(error))
         return False

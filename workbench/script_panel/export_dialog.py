@@ -1,8 +1,8 @@
 """“Export speech…”: choose the files, folder, base name, frame size and rate; write them off the GUI thread.
 
-:class:`ExportSpeechDialog` only gathers an :class:`~.export_files.ExportPlan`
+:class:`ExportSpeechDialog` only gathers an :class:`engine.outputs.speech_files.ExportPlan`
 (remembered in QSettings ``script_panel/export/…``). :class:`SpeechExporter`
-runs :func:`~.export_files.export_speech` on a worker thread with a
+runs :func:`engine.outputs.speech_files.export_speech` on a worker thread with a
 QProgressDialog whose Cancel removes everything written so far, then names
 what was written in the status bar.
 """
@@ -17,8 +17,8 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, 
                                QSpinBox, QVBoxLayout, QWidget)
 
 from engine.errors import UserError
+from engine.outputs.speech_files import KINDS, ExportCancelled, ExportPlan, export_speech
 
-from .export_files import KINDS, ExportCancelled, ExportPlan, export_speech
 from .jobs import Job
 
 PREFIX = "script_panel/export/"

@@ -22,11 +22,11 @@ from PySide6.QtWidgets import (QCheckBox, QComboBox, QFormLayout, QHBoxLayout, Q
                                QPlainTextEdit, QProgressBar, QPushButton, QSpinBox, QVBoxLayout, QWidget)
 
 from engine.errors import UserError
+from engine.speech.requests import SayRequest, SayResult, described_error, error_location, run_say
 
 from ..icons import icon
 from .highlighter import InlineCommandHighlighter
 from .jobs import Job
-from .speech_run import COARTICULATIONS, SayRequest, SayResult, described_error, error_location, run_say
 
 KEY_TEXT = "script_panel/text"
 KEY_VOICE = "script_panel/voice"
@@ -35,6 +35,8 @@ KEY_PROSODY = "script_panel/prosody"
 KEY_SEED = "script_panel/prosody_seed"
 DEFAULT_TEXT = "Hyvää <Happy/> huomenta! Mitä kuuluu?"
 DEFAULT_VOICE = "suo_fi_lj_diphone"
+#: The coarticulation menu: label → the engine's name for it.
+COARTICULATIONS = (("Cohen–Massaro", "cohen-massaro"), ("none (target interpolation)", "none"))
 MESSAGE_MS = 6000
 
 

@@ -19,17 +19,19 @@ from PySide6.QtCore import QSettings, Qt
 from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 from engine.errors import UserError
+from engine.timeline.animation_files import load_animation
 
 from .. import settings
 from ..actions import ActionSpec, add_actions
 from ..player import Player
-from .animation_files import FILE_FILTER, load_animation
+from ..playhead import DEFAULT_FPS
 from .dock import TimelineDock
 
 if TYPE_CHECKING:
     from ..main_window import MainWindow
 
 MENU = "&Animation"
+FILE_FILTER = "Animations (*.xml *.csv);;Command files (*.xml);;Tracks tables (*.csv);;All files (*)"
 MESSAGE_MS = 4000
 
 ANIMATION_ACTIONS: tuple[ActionSpec, ...] = (
@@ -63,7 +65,7 @@ def install(window: "MainWindow") -> None:
 def open_animation(window: "MainWindow", path: str | Path) -> bool:
     """Load ``path`` into the player and show its first frame; a bad file → a dialog, nothing changes."""
     try:
-        animation = load_animation(path, window.document.model, settings.library_folders())
+        animation = load_animation(path, window.document.model, settings.library_folders(), fps=DEFAULT_FPS)
     except UserError as error:
         QMessageBox.warning(window, "Open animation", f"Cannot open this animation:\n\n{error}")
         return False

@@ -10,7 +10,7 @@ influence region as a heat map), and a selection made elsewhere is shown here.
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 from PySide6.QtCore import QItemSelectionModel, QSize, Qt, Signal
 from PySide6.QtGui import QKeyEvent
@@ -28,7 +28,7 @@ class ParameterTreeView(QTreeView):
 
     delete_requested = Signal()
 
-    def keyPressEvent(self, event: QKeyEvent) -> None:  # noqa: N802 (Qt's name)
+    def keyPressEvent(self, event: QKeyEvent) -> None:
         if event.key() in (Qt.Key.Key_Delete, Qt.Key.Key_Backspace) and self.state() != self.State.EditingState:
             self.delete_requested.emit()
             return
@@ -94,7 +94,7 @@ class ParameterTreeDock(QDockWidget):
         document.model_replaced.connect(self._on_model_replaced)
         self._sync(document.model)
 
-    def sizeHint(self) -> QSize:  # noqa: N802 (Qt's name)
+    def sizeHint(self) -> QSize:
         return QSize(340, 420)
 
     # -- queries -------------------------------------------------------------

@@ -21,10 +21,15 @@ from PySide6.QtCore import QObject
 from PySide6.QtWidgets import QMessageBox
 
 import engine
+from engine.model.edits import subtree, unique_name
 
-from ..model_edits import subtree, unique_name
-from ..undo_commands import (AddParameterCommand, ModelEditCommand, RemoveSubtreeCommand,
-                             MoveParameterCommand, RenameParameterCommand)
+from ..undo_commands import (
+    AddParameterCommand,
+    ModelEditCommand,
+    MoveParameterCommand,
+    RemoveSubtreeCommand,
+    RenameParameterCommand,
+)
 
 if TYPE_CHECKING:
     from ..main_window import MainWindow
@@ -36,7 +41,7 @@ MESSAGE_MS = 4000
 class TreeEditor(QObject):
     """The tree editor of one window: its dock, property sheet, gizmo and pivot picker (set by ``install``)."""
 
-    def __init__(self, window: "MainWindow"):
+    def __init__(self, window: MainWindow):
         super().__init__(window)
         self.window = window
         self.dock = None

@@ -11,16 +11,15 @@ selected.
 The actors live in ``viewport.plotter``'s renderer (so they are shaded and
 hidden by the face like anything else) and, as translucent twins sharing
 their meshes, in an overlay layer drawn over the face, so a pivot inside the
-head still shows through. Like the viewport, this module talks to pyvista;
-no other tree-editor module does.
+head still shows through. Like the viewport, this module talks to pyvista
+(imported when the gizmo is built, not with the module); no other
+tree-editor module does.
 """
 
 from __future__ import annotations
 
 import numpy as np
-import pyvista as pv
 from PySide6.QtCore import QObject
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
 
 import engine
 
@@ -37,6 +36,9 @@ class ParameterGizmo(QObject):
     """Draws ``view_state.selected_parameter`` of ``document`` in ``viewport``."""
 
     def __init__(self, viewport, document, view_state, parent: QObject | None = None):
+        import pyvista as pv
+        from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderer
+
         super().__init__(parent)
         self._viewport = viewport
         self._document = document
@@ -108,6 +110,8 @@ class ParameterGizmo(QObject):
         if name is None or name not in model.parameters or model.n_vertices == 0:
             self._show(False, False)
             return
+        import pyvista as pv
+
         p = model.parameters[name]
         carry = _parents_transform(model.parameters, name, self._document.values)
         lo, hi = model.vertices.min(axis=0), model.vertices.max(axis=0)

@@ -20,8 +20,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import (QComboBox, QFormLayout, QHBoxLayout, QLabel, QLineEdit, QPushButton,
-                               QVBoxLayout, QWidget)
+from PySide6.QtWidgets import QComboBox, QFormLayout, QHBoxLayout, QLabel, QLineEdit, QPushButton, QVBoxLayout, QWidget
 
 import engine
 
@@ -43,7 +42,7 @@ LABELS = {"kind": "type", "axis": "axis", "degrees_per_unit": "degrees per unit"
 class PropertySheet(QWidget):
     """Form over ``editor.selected``; follows selection, tree edits, undo/redo and model changes."""
 
-    def __init__(self, editor: "TreeEditor", parent: QWidget | None = None):
+    def __init__(self, editor: TreeEditor, parent: QWidget | None = None):
         super().__init__(parent)
         self.setObjectName("tree-editor:properties")
         self._editor = editor
@@ -197,7 +196,7 @@ class PropertySheet(QWidget):
     def set_pivot(self, point) -> bool:
         """Put the selected rotation's pivot at ``point`` (mm) as one undo step."""
         self.pivot.show_value(self._editor.document.model.parameters[self._shown_name].pivot)
-        for edit, v in zip(self.pivot.edits, point):
+        for edit, v in zip(self.pivot.edits, point, strict=True):
             edit.setText(repr(float(v)))
         return self.commit("pivot")
 

@@ -1,9 +1,10 @@
-"""One Say, done off the GUI thread: text → :class:`engine.speech.say.Speech` + a WAV file.
+"""One Say as a self-contained job: text → :class:`engine.speech.say.Speech` + a WAV file, and where errors point.
 
-No Qt here: :class:`SayRequest` holds everything the worker needs (copied
-from the panel when Say is pressed, so typing on while Festival runs changes
-nothing), :func:`run_say` does the work, :func:`error_location` finds where
-in the text an error points.
+A front end that speaks off its main thread (the workbench's script panel)
+copies everything the job needs into a :class:`SayRequest` when Say is
+pressed, so typing on while Festival runs changes nothing; :func:`run_say`
+does the work anywhere; :func:`error_location` finds where in the typed text
+an error points, :func:`described_error` words it for a dialog.
 
 >>> request = SayRequest("Hyvää <Happy/> huomenta!", model, voice="suo_fi_lj_diphone")   # doctest: +SKIP
 >>> result = run_say(request, folder)                                                   # doctest: +SKIP
@@ -17,27 +18,37 @@ import itertools
 import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
+
+from engine.model.model import Model
+
+if TYPE_CHECKING:
+    from engine.speech.say import Speech
+    from engine.speech.synthesis import Synthesizer
 
 #: The name the text goes by in error messages: ``text:2: column 7: …``.
 TEXT_NAME = "text"
-COARTICULATIONS = (("Cohen–Massaro", "cohen-massaro"), ("none (target interpolation)", "none"))
 _counter = itertools.count(1)
 
 
 @dataclass
 class SayRequest:
+    """Everything one Say needs: the text (with inline commands), the model and the speech settings."""
+
     text: str
-    model: object
+    model: Model
     voice: str | None = None
     coarticulation: str = "cohen-massaro"
     prosody_seed: int | None = None        # None: no visual prosody; a seed: blinks, brows, nods
-    synthesizer: object | None = None      # None: a FestivalSynthesizer
+    synthesizer: Synthesizer | None = None  # None: a FestivalSynthesizer
 
 
 @dataclass
 class SayResult:
+    """What :func:`run_say` made: the speech and the WAV file holding its audio."""
+
     request: SayRequest
-    speech: object                         # engine.speech.say.Speech
+    speech: Speech
     wav: Path
 
     @property
@@ -46,8 +57,14 @@ class SayResult:
         return self.speech.duration_ms / 1000.0
 
 
-def run_say(request: SayRequest, folder: Path) -> SayResult:
-    """Synthesize and articulate ``request``; the audio is written to a new WAV in ``folder``."""
+def run_say(request: SayRequest, folder: str | Path) -> SayResult:
+    """Synthesize and articulate ``request``; the audio is written to a new WAV (``say-N.wav``) in ``folder``.
+
+    Errors in the text are :class:`~engine.errors.UserError` s naming
+    :data:`TEXT_NAME`, its line and (in the message) the column.
+    """
+    # Imported here: the speech pipeline loads Festival's helpers and the command library's
+    # parser, which a front end should not pay for before the first Say.
     from engine.speech.say import speak
     from engine.speech.synthesis import write_wav
 
@@ -58,7 +75,7 @@ def run_say(request: SayRequest, folder: Path) -> SayResult:
     return SayResult(request, speech, wav)
 
 
-def error_location(error: Exception) -> tuple[int, int] | None:
+def error_location(error: BaseException) -> tuple[int, int] | None:
     """(line, column), both from 1, of what ``error`` complains about in the typed text; ``None`` if unknown.
 
     The engine names the text's line and, in the message, the column
@@ -75,8 +92,13 @@ def error_location(error: Exception) -> tuple[int, int] | None:
     return line, int(column.group(1)) if column else 1
 
 
-def described_error(error: Exception) -> str:
-    """The message for the dialog: the engine's own line, with the column added when it lacks one."""
+def described_error(error: BaseException) -> str:
+    """The message for a dialog: the engine's own line, with line and column added when it lacks the column.
+
+    >>> from engine.errors import CommandError
+    >>> described_error(CommandError("there is no text to speak", file="text", line=3))
+    'text:3: there is no text to speak (line 3, column 1)'
+    """
     message = str(error)
     where = error_location(error)
     if where is not None and not re.search(r"\bcolumn \d+", message):

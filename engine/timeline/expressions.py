@@ -1,4 +1,7 @@
-"""What the expression gallery shows, with no Qt: one entry per expression command and per action unit.
+"""The expressions a model can show: one entry per expression command and per action unit (§3.2).
+
+The workbench's expression gallery lists these entries as thumbnails; a
+script can preview any of them the same way.
 
 * **Expressions** are the library's commands laid out by ``attack-hold-release``
   (onset, apex, offset: Happy, Sad, Surprise, …, and gestures such as
@@ -31,11 +34,13 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from engine.commands import Activation, Library
-from engine.commands.command_files import HighLevelCommand
+from engine.commands.command_files import Activation, HighLevelCommand
+from engine.commands.library import Library
 from engine.commands.library_format import AMPLITUDE, START
 from engine.commands.translator import translate_command
 from engine.errors import UserError
+from engine.model.model import Model
+from engine.model.parameters import Parameter
 from engine.timeline.timeline import Timeline
 
 EXPRESSION_PROCEDURE = "attack-hold-release"
@@ -63,9 +68,11 @@ class GalleryEntry:
         onset, apex, _ = self.timing
         return onset + apex / 2
 
-    def timeline(self, model, intensity: float = 100.0) -> Timeline:
+    def timeline(self, model: Model, intensity: float = 100.0) -> Timeline:
         """The preview at ``intensity`` percent, starting at 0 ms."""
         if self.kind == "expression":
+            if self.library is None:
+                raise UserError(f"the expression '{self.name}' has no library to translate it with")
             command = HighLevelCommand(self.name, {START: 0.0, AMPLITUDE: float(intensity)}, file="<gallery>")
             return Timeline(translate_command(command, self.library, model), model)
         parameter = model.parameters[self.name]
@@ -75,12 +82,12 @@ class GalleryEntry:
                                 np.array([0.0, level, level, 0.0]), "cosine", None, None, "<gallery>")
         return Timeline([activation], model)
 
-    def pose(self, model) -> dict[str, float]:
+    def pose(self, model: Model) -> dict[str, float]:
         """Every parameter's value in the middle of the apex, at full intensity."""
         return self.timeline(model).values_at(self.apex_time)
 
 
-def full_value(parameter) -> float:
+def full_value(parameter: Parameter) -> float:
     """An action unit's full activation: its maximum, or its minimum when that is further from the default."""
     up, down = parameter.maximum - parameter.default, parameter.default - parameter.minimum
     if not np.isfinite(up) and not np.isfinite(down):
@@ -88,9 +95,9 @@ def full_value(parameter) -> float:
     return parameter.maximum if not np.isfinite(down) or (np.isfinite(up) and up >= down) else parameter.minimum
 
 
-def gallery_entries(library: Library, model) -> list[GalleryEntry]:
+def gallery_entries(library: Library, model: Model) -> list[GalleryEntry]:
     """The expressions that fit ``model`` (:data:`ORDER`, then by name), then its action units (by number)."""
-    entries = []
+    entries: list[GalleryEntry] = []
     for name in sorted(library.names(), key=lambda n: (ORDER.index(n) if n in ORDER else len(ORDER), n)):
         definition = library[name]
         if definition.procedure != EXPRESSION_PROCEDURE:
@@ -100,12 +107,19 @@ def gallery_entries(library: Library, model) -> list[GalleryEntry]:
         except UserError:
             continue                     # drives a parameter this model lacks
         args = definition.arguments()
-        timing = tuple(float(args.get(k) or 0.0) for k in ("onset", "apex", "offset"))
-        entries.append(GalleryEntry("expression", name, definition.description or name, timing, library))
+        onset, apex, offset = (float(args.get(k) or 0.0) for k in ("onset", "apex", "offset"))
+        entries.append(GalleryEntry("expression", name, definition.description or name, (onset, apex, offset),
+                                    library))
     names = model.parameters.names
-    units = sorted((n for n in names if AU_NAME.match(n)), key=lambda n: (int(AU_NAME.match(n)[0][2:]), n)) or names
+    units = sorted((n for n in names if AU_NAME.match(n)), key=_unit_order) or names
     timing = (AU_TIMING["onset"], AU_TIMING["apex"], AU_TIMING["offset"])
     for name in units:
         description = model.parameters[name].description or name
         entries.append(GalleryEntry("action-unit", name, description, timing))
     return entries
+
+
+def _unit_order(name: str) -> tuple[int, str]:
+    """``AU12_left`` → (12, name): action units by number, then by name."""
+    match = AU_NAME.match(name)
+    return (int(match[0][2:]) if match else 0), name

@@ -1,0 +1,71 @@
+"""The common form of marker data as a file holds it: :class:`Recording`, and the unit and gap helpers.
+
+Every marker-file reader (:mod:`engine.mocap.qtm_tsv`, :mod:`engine.mocap.c3d_file`,
+:mod:`engine.mocap.trc`, :mod:`engine.mocap.csv_table`) returns a
+:class:`Recording`: the file's own marker labels, positions in millimetres with
+NaN wherever the file has no sample, and the frame rate as the file states it.
+
+>>> import numpy as np
+>>> rec = Recording(["a"], np.zeros((5, 1, 3)), 60.0, "take1.tsv", "tsv")
+>>> rec.n_frames, unit_scale("cm", Path("take1.trc"))
+(5, 10.0)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from engine.mocap.errors import MarkerFileError
+
+UNIT_SCALE = {"mm": 1.0, "cm": 10.0, "m": 1000.0}
+"""Factor from a file's length unit to millimetres."""
+
+
+@dataclass
+class Recording:
+    """Marker trajectories as a file holds them, converted to mm.
+
+    ``positions`` is (F, M, 3) in mm with NaN where the file has no sample;
+    ``labels`` are the file's own marker names; ``start_ms`` is the time the
+    file gives its first frame (0 when it gives none); ``events`` are named
+    instants (QTM ``EVENT`` lines) as ``(name, time_ms)`` on the recording's
+    clock, whose 0 is the first frame.
+    """
+
+    labels: list[str]
+    positions: np.ndarray
+    rate_hz: float
+    source: str
+    format: str
+    units: str = "mm"
+    start_ms: float = 0.0
+    events: list[tuple[str, float]] = field(default_factory=list)
+
+    @property
+    def n_frames(self) -> int:
+        return int(self.positions.shape[0])
+
+
+def unit_scale(unit: str, path: Path, line: int | None = None) -> float:
+    """Millimetres per file unit for ``mm``, ``cm`` or ``m`` (any case)."""
+    scale = UNIT_SCALE.get(unit.strip().lower())
+    if scale is None:
+        raise MarkerFileError(f"unknown length unit '{unit.strip()}' (use mm, cm or m)", file=path, line=line)
+    return scale
+
+
+def zero_triplets_to_nan(positions: np.ndarray) -> np.ndarray:
+    """QTM and some C3D writers store a missing sample as exactly (0, 0, 0): make those NaN (in place)."""
+    gap = np.all(positions == 0.0, axis=-1)
+    positions[gap] = np.nan
+    return positions
+
+
+def nan_partial_samples(positions: np.ndarray) -> np.ndarray:
+    """A sample with any coordinate missing is missing altogether (in place)."""
+    bad = np.any(~np.isfinite(positions), axis=-1)
+    positions[bad] = np.nan
+    return positions

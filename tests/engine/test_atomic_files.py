@@ -1,0 +1,154 @@
+"""Atomic writes of one or several files (engine.formats.atomic): all or nothing, with the usual permissions.
+
+A failure inside the block (an exception, Ctrl-C) or while renaming leaves
+every old file as it was and no temporary file behind; success gives every
+new file the permissions a plain ``open`` would (0666 less the umask).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import stat
+from pathlib import Path
+
+import pytest
+
+import engine.formats.atomic as atomic
+from engine.errors import ModelFileError, UserError
+from engine.formats.atomic import atomic_files, atomic_path, atomic_write_bytes, atomic_write_text
+
+
+class DiskFullError(Exception):
+    pass
+
+
+def write_all(targets: list[Path], data: bytes = b"new", failure: BaseException | None = None,
+              error: type[UserError] = UserError) -> None:
+    """Write ``data`` to every target through one atomic_files block, raising ``failure`` at its end."""
+    with atomic_files(targets, error) as temporary:
+        for path in temporary.values():
+            path.write_bytes(data)
+        if failure is not None:
+            raise failure
+
+
+def contents(folder: Path) -> dict[str, bytes]:
+    """Every file in ``folder``, hidden ones included, with its bytes."""
+    return {p.name: p.read_bytes() for p in sorted(folder.iterdir())}
+
+
+@pytest.fixture
+def old_files(tmp_path) -> dict[str, bytes]:
+    (tmp_path / "a.txt").write_bytes(b"old a")
+    (tmp_path / "b.csv").write_bytes(b"old b")
+    return contents(tmp_path)
+
+
+def test_success_writes_every_file_and_leaves_no_temporaries(tmp_path, old_files):
+    targets = [tmp_path / "a.txt", tmp_path / "b.csv", tmp_path / "c.bin"]
+    with atomic_files(targets) as temporary:
+        assert list(temporary) == targets
+        for target, path in temporary.items():
+            assert path.parent == tmp_path and path.name.startswith(f".{target.name}.") and path.exists()
+            assert not target.exists() or target.read_bytes().startswith(b"old")    # nothing renamed yet
+            path.write_bytes(b"new " + target.name.encode())
+    assert contents(tmp_path) == {"a.txt": b"new a.txt", "b.csv": b"new b.csv", "c.bin": b"new c.bin"}
+
+
+@pytest.mark.parametrize("failure", [DiskFullError("disk full"), KeyboardInterrupt()])
+def test_a_failure_in_the_block_leaves_the_old_files_and_no_temporaries(tmp_path, old_files, failure):
+    targets = [tmp_path / "a.txt", tmp_path / "b.csv", tmp_path / "new.txt"]
+    with pytest.raises(type(failure)):
+        write_all(targets, b"half", failure)
+    assert contents(tmp_path) == old_files
+
+
+def test_an_os_error_in_the_block_is_a_user_error_naming_the_target(tmp_path, old_files):
+    target = tmp_path / "a.txt"
+
+    def disk_full() -> None:
+        with atomic_files([tmp_path / "b.csv", target], ModelFileError) as temporary:
+            raise OSError(28, "No space left on device", str(temporary[target]))
+
+    with pytest.raises(ModelFileError) as caught:
+        disk_full()
+    assert str(caught.value) == f"{target}: cannot write: No space left on device"
+    assert contents(tmp_path) == old_files
+
+
+def test_a_failed_rename_leaves_no_temporaries(tmp_path, old_files, monkeypatch):
+    real = os.replace
+    calls = []
+
+    def second_fails(src, dst):
+        calls.append(dst)
+        if len(calls) == 2:
+            raise OSError(13, "Permission denied")
+        real(src, dst)
+
+    monkeypatch.setattr(atomic.os, "replace", second_fails)
+    with pytest.raises(UserError, match=re.escape("b.csv: cannot write: Permission denied")):
+        write_all([tmp_path / "a.txt", tmp_path / "b.csv"])
+    monkeypatch.undo()
+    # Each rename is atomic, the set is not: the first file is the complete new one, the second the old one.
+    assert contents(tmp_path) == {"a.txt": b"new", "b.csv": b"old b"}
+
+
+def test_every_file_is_synced_before_any_is_renamed(tmp_path, monkeypatch):
+    events = []
+    real_fsync, real_replace = os.fsync, os.replace
+    monkeypatch.setattr(atomic.os, "fsync", lambda fd: events.append("fsync") or real_fsync(fd))
+    monkeypatch.setattr(atomic.os, "replace", lambda a, b: events.append("rename") or real_replace(a, b))
+    write_all([tmp_path / "a", tmp_path / "b"])
+    assert events[:4] == ["fsync", "fsync", "rename", "rename"]
+
+
+@pytest.mark.parametrize("mask", [0o022, 0o077, 0o002])
+def test_new_files_get_the_usual_permissions(tmp_path, mask):
+    old = os.umask(mask)
+    try:
+        write_all([tmp_path / "a", tmp_path / "b"])
+        atomic_write_text(tmp_path / "c", "x")
+    finally:
+        os.umask(old)
+    for name in "abc":
+        assert stat.S_IMODE((tmp_path / name).stat().st_mode) == 0o666 & ~mask
+
+
+def test_a_missing_folder_or_a_folder_as_target_is_refused_before_anything_is_written(tmp_path):
+    (tmp_path / "sub").mkdir()
+    with pytest.raises(UserError, match=re.escape("missing/a.txt: cannot write: the folder does not exist")):
+        write_all([tmp_path / "ok.txt", tmp_path / "missing" / "a.txt"])
+    with pytest.raises(UserError, match="this is a folder"):
+        atomic_write_text(tmp_path / "sub", "x")
+    with pytest.raises(UserError, match="the same file twice"):
+        write_all([tmp_path / "x", tmp_path / "x"])
+    assert [p.name for p in tmp_path.iterdir()] == ["sub"]
+
+
+def test_single_file_helpers_are_built_on_atomic_files(tmp_path, monkeypatch):
+    atomic_write_bytes(tmp_path / "a.bin", b"\x00\x01")
+    atomic_write_text(tmp_path / "b.txt", "päivää\n")
+    with atomic_path(tmp_path / "c.h5") as name:
+        assert isinstance(name, str) and Path(name).parent == tmp_path
+        Path(name).write_bytes(b"h5")
+    assert contents(tmp_path) == {"a.bin": b"\x00\x01", "b.txt": "päivää\n".encode(), "c.h5": b"h5"}
+
+    def refuse(*_):
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(atomic.os, "fsync", refuse)
+    with pytest.raises(UserError, match=re.escape("a.bin: cannot write: No space left on device")):
+        atomic_write_bytes(tmp_path / "a.bin", b"never")
+    monkeypatch.undo()
+    assert contents(tmp_path)["a.bin"] == b"\x00\x01" and len(contents(tmp_path)) == 3
+
+
+def test_the_engine_has_one_place_that_renames_files_into_place():
+    """Every writer goes through engine.formats.atomic: no other engine module renames temporary files."""
+    engine_dir = Path(atomic.__file__).resolve().parents[1]
+    renaming = sorted(str(p.relative_to(engine_dir)) for p in engine_dir.rglob("*.py")
+                      if p.name != "atomic.py" and any(word in p.read_text(encoding="utf-8")
+                                                       for word in ("os.replace(", "os.rename(", "mkstemp(")))
+    assert renaming == []

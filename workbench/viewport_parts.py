@@ -1,0 +1,109 @@
+"""The viewport's meshes, one per part of the model: points, polygons, colours, normals and a locator for picking.
+
+:func:`split_by_part` divides the model's polygons among its parts;
+:class:`PartView` holds what one part's actor draws and keeps its normals
+and its cell locator up to date when the points move. Lengths are mm.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pyvista as pv
+from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkStaticCellLocator
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+
+import engine
+from engine.model.cells import cell_sizes, cell_starts
+
+from .local_normals import LocalNormals
+
+VERTEX_COLORS = "vertex_colors"  # name of the per-vertex sRGB array on each part mesh
+
+
+@dataclass
+class PartView:
+    """One part on screen: the mesh its actor draws, the normals filter that shades it, the actor."""
+
+    vertex_indices: np.ndarray  # model vertex index of each mesh point
+    mesh: pv.PolyData           # points, polygons, colours and normals: what the mapper draws
+    normals: vtkPolyDataNormals  # reads the mesh's points and polygons only (not its colours)
+    actor: object
+    locator: vtkStaticCellLocator | None = None    # for picking; rebuilt when the points have moved
+    locator_points_time: int = -1
+    local_normals: LocalNormals | None = None      # for moving a few points (live preview), built on first use
+
+    @classmethod
+    def shading(cls, mesh: pv.PolyData) -> vtkPolyDataNormals:
+        """A normals filter over ``mesh``'s own points and polygons (shared, not copied)."""
+        geometry = vtkPolyData()
+        geometry.SetPoints(mesh.GetPoints())
+        geometry.SetPolys(mesh.GetPolys())
+        normals = vtkPolyDataNormals()
+        normals.SetInputData(geometry)
+        normals.SplittingOff()       # one normal per vertex: smooth, and points stay 1:1
+        normals.ConsistencyOff()     # the model's polygons are already consistently wound
+        normals.ComputePointNormalsOn()
+        normals.ComputeCellNormalsOff()
+        return normals
+
+    def update_normals(self) -> None:
+        """Recompute the vertex normals after the points moved (the filter sees the shared points change)."""
+        self.normals.GetInputDataObject(0, 0).Modified()
+        self.normals.Update()
+        self.mesh.GetPointData().SetNormals(self.normals.GetOutput().GetPointData().GetNormals())
+
+    def update_normals_near(self, moved: np.ndarray) -> None:
+        """Recompute only the normals that moving the mesh points ``moved`` changes (a live-preview dab)."""
+        if self.local_normals is None:
+            self.local_normals = LocalNormals(self.mesh.faces, self.mesh.n_points)
+        array = self.mesh.GetPointData().GetNormals()
+        normals = pv.convert_array(array)
+        self.local_normals.update(np.asarray(self.mesh.points, dtype=float), normals, moved)
+        array.Modified()
+
+    def current_locator(self) -> vtkStaticCellLocator:
+        """A cell locator over the mesh as drawn now: a pick at 94k vertices takes 0.5 ms instead of 30."""
+        points_time = self.mesh.GetPoints().GetMTime()
+        if self.locator is None or self.locator_points_time != points_time:
+            self.locator = vtkStaticCellLocator()
+            self.locator.SetDataSet(self.mesh)
+            # Rebuilt here when the points move; VTK on its own would also rebuild after every
+            # colour change (the mesh's time stamp counts its arrays): 12 ms per dab at 94k.
+            self.locator.UseExistingSearchStructureOn()
+            self.locator.BuildLocator()
+            self.locator_points_time = points_time
+        return self.locator
+
+
+def split_by_part(model: engine.Model) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Per part: (model vertex indices, flat cell array indexing into them).
+
+    A polygon belongs to the part of its first vertex. A part's mesh holds
+    its own vertices plus any other vertex its polygons use, so a polygon
+    that straddles two parts is still drawn whole.
+    """
+    faces = model.faces
+    n_parts = len(model.parts)
+    if len(faces) == 0:
+        return {}
+    sizes = cell_sizes(faces)
+    starts = cell_starts(sizes)
+    cell_part = model.vertex_part[faces[starts + 1]]
+    cell_of_entry = np.repeat(np.arange(len(starts)), sizes + 1)
+    is_count = np.zeros(len(faces), dtype=bool)
+    is_count[starts] = True
+    out = {}
+    for p in range(n_parts):
+        entries = faces[cell_part[cell_of_entry] == p]
+        counts = is_count[cell_part[cell_of_entry] == p]
+        used = entries[~counts]
+        own = np.flatnonzero(model.vertex_part == p)
+        indices = np.union1d(own, used)
+        lookup = np.full(model.n_vertices, -1, dtype=np.int64)
+        lookup[indices] = np.arange(len(indices))
+        cells = entries.copy()
+        cells[~counts] = lookup[used]
+        out[model.parts[p]] = (indices, cells)
+    return out
