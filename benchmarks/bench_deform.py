@@ -119,7 +119,7 @@ def main(argv=None):
     fine = subdivide(head, args.subdivision)
     meshes = [("default head", head),
               (f"subdivided ×{args.subdivision}²", fine),
-              (f"  same, order optimised", optimise_vertex_order(fine)[0])]
+              ("  same, order optimised", optimise_vertex_order(fine)[0])]
     rows = []
     path = "compiled kernel" if engine.deform.deformer.compiled is not None else "numpy (kernel not built)"
     print(f"engine = Model.deform: {path}; single thread")

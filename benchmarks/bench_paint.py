@@ -50,10 +50,10 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import engine  # noqa: E402
-from engine.painting import Brush, DenseRegion, LivePreview, PaintContext, Stroke, heat_colors  # noqa: E402
-from engine.painting.mirror import mirror_map  # noqa: E402
-from engine.painting.heatmap import WEIGHT_RAMP  # noqa: E402
 from engine.model.subdivide import subdivide  # noqa: E402
+from engine.painting import Brush, DenseRegion, LivePreview, PaintContext, Stroke, heat_colors  # noqa: E402
+from engine.painting.heatmap import WEIGHT_RAMP  # noqa: E402
+from engine.painting.mirror import mirror_map  # noqa: E402
 
 VIEW = np.array([0.0, 0.0, -1.0])          # looking at the face from the front
 

@@ -48,8 +48,8 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 os.environ.setdefault("XDG_DATA_HOME", tempfile.mkdtemp(prefix="ap-bench-data-"))
 
-import engine  # noqa: E402
-from engine.model.subdivide import subdivide  # noqa: E402
+import engine
+from engine.model.subdivide import subdivide
 
 
 def stroke_points(model, count):

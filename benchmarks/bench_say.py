@@ -18,9 +18,9 @@ import time
 from pathlib import Path
 
 from engine import load_model
+from engine.outputs.video_writer import write_video
 from engine.speech.festival import FestivalSynthesizer
 from engine.speech.say import speak
-from engine.outputs.video_writer import write_video
 
 TEXT = ("Hyvää päivää <HeadNod amplitude='60' count='2'/> ja tervetuloa. "
         "Pappa osti mummolle paljon uusia omenoita, ja äiti ja isä menivät kauppaan. "

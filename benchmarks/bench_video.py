@@ -43,9 +43,9 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
-import engine  # noqa: E402
-from engine.outputs import video_probe, video_writer  # noqa: E402
-from engine.outputs.render import FrameRenderer  # noqa: E402
+import engine
+from engine.outputs import video_probe, video_writer
+from engine.outputs.render import FrameRenderer
 
 MOTION = {  # parameter: (centre, amplitude as a fraction of the half range, frequency Hz)
     "jaw_open": (None, 1.0, 3.0),

@@ -10,7 +10,6 @@ One PNG per pose (``gallery-<name>.png``) and a labelled contact sheet
 import sys
 from pathlib import Path
 
-import numpy as np
 from PIL import Image, ImageDraw
 
 ROOT = Path(__file__).resolve().parent.parent

@@ -7,8 +7,9 @@ a callback taking the main window. Adding a command is adding one entry to
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Callable
+from typing import TYPE_CHECKING
 
 from PySide6.QtGui import QAction, QKeySequence
 from PySide6.QtWidgets import QMenu, QMenuBar, QToolBar
@@ -32,8 +33,8 @@ class ActionSpec:
     id: str
     text: str
     menu: str
-    triggered: Callable[["MainWindow"], object] | None = None
-    toggled: Callable[["MainWindow", bool], object] | None = None
+    triggered: Callable[[MainWindow], object] | None = None
+    toggled: Callable[[MainWindow, bool], object] | None = None
     shortcut: Shortcut = None
     icon: str | None = None
     tip: str = ""
@@ -85,7 +86,7 @@ ACTIONS: tuple[ActionSpec, ...] = (
 )
 
 
-def create_actions(window: "MainWindow", specs: tuple[ActionSpec, ...] = ACTIONS) -> dict[str, QAction]:
+def create_actions(window: MainWindow, specs: tuple[ActionSpec, ...] = ACTIONS) -> dict[str, QAction]:
     """One QAction per spec, parented to ``window`` and connected to its callback."""
     actions: dict[str, QAction] = {}
     for spec in specs:
@@ -125,7 +126,7 @@ def populate(menubar: QMenuBar, toolbar: QToolBar, actions: dict[str, QAction],
     return menus
 
 
-def add_actions(window: "MainWindow", specs: tuple[ActionSpec, ...]) -> dict[str, QAction]:
+def add_actions(window: MainWindow, specs: tuple[ActionSpec, ...]) -> dict[str, QAction]:
     """Add a tool's actions to a built window: menus (new ones go before none), toolbar, ``actions_by_id``.
 
     A tool's :func:`install` calls this with its own specs; menus it names

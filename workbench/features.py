@@ -30,7 +30,7 @@ INSTALLERS: list[str] = [
 ]
 
 
-def install_all(window: "MainWindow") -> None:
+def install_all(window: MainWindow) -> None:
     """Run every installer in :data:`INSTALLERS` on ``window``."""
     for entry in INSTALLERS:
         module_name, _, function = entry.partition(":")

@@ -42,11 +42,11 @@ Button = QMessageBox.StandardButton
 class FileController:
     """File flows on one main window (held weakly: the window owns this object)."""
 
-    def __init__(self, window: "MainWindow"):
+    def __init__(self, window: MainWindow):
         self._window_ref = weakref.ref(window)
 
     @property
-    def window(self) -> "MainWindow":
+    def window(self) -> MainWindow:
         return self._window_ref()
 
     @property

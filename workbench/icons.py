@@ -6,7 +6,7 @@
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 from PySide6.QtGui import QIcon
@@ -19,7 +19,7 @@ def icon_path(name: str) -> Path:
     return ICON_DIR / f"{name}.svg"
 
 
-@lru_cache(maxsize=None)
+@cache
 def icon(name: str) -> QIcon:
     """The icon ``icons/<name>.svg``; an empty icon if the file is missing (text still shows)."""
     path = icon_path(name)

@@ -142,7 +142,7 @@ class MainWindow(QMainWindow):
         return restored
 
     # -- Qt overrides --------------------------------------------------------
-    def closeEvent(self, event: QCloseEvent) -> None:  # noqa: N802 (Qt's name)
+    def closeEvent(self, event: QCloseEvent) -> None:
         if self._closed:
             event.accept()
             return

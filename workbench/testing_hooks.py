@@ -42,7 +42,7 @@ def active() -> bool:
     return any(os.environ.get(name) for name in (EDIT, RECOVERY, REPORT))
 
 
-def prepare(window: "MainWindow") -> None:
+def prepare(window: MainWindow) -> None:
     """Before the window shows: answer the questions the hooks ask to have answered."""
     answer = os.environ.get(RECOVERY)
     if answer:
@@ -51,7 +51,7 @@ def prepare(window: "MainWindow") -> None:
         window.files.ask_unsaved = lambda _doing: QMessageBox.StandardButton.Discard
 
 
-def run(window: "MainWindow") -> None:
+def run(window: MainWindow) -> None:
     """After the window shows: make the scripted edit, then report and close."""
     edit = os.environ.get(EDIT)
     if edit:

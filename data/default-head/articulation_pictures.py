@@ -56,7 +56,7 @@ def mouth_centre_and_size(model, renderer, rest_image):
     lm = model.landmarks
     c = P[[lm[k] for k in ("8.3", "8.4", "8.1", "8.2")]]
     lo, hi = c.min(axis=0) - [0, 1, 30], c.max(axis=0) + [0, 1, 30]
-    lips = np.all((P >= lo) & (P <= hi), axis=1) & (model.vertex_part == model.parts.index("skin"))
+    lips = np.all((lo <= P) & (hi >= P), axis=1) & (model.vertex_part == model.parts.index("skin"))
     hidden = P.copy()
     hidden[lips] += [0.0, 0.0, -80.0]
     changed = np.abs(renderer.render(hidden).astype(int) - rest_image.astype(int)).sum(axis=-1) > 30

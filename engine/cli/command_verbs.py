@@ -13,8 +13,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from engine.cli.common import (add_library_option, add_model_option, load_model_argument, positive_number,
-                               require_suffix)
+from engine.cli.common import add_library_option, add_model_option, load_model_argument, positive_number, require_suffix
 
 
 def add_verbs(verbs: Any) -> None:

@@ -16,8 +16,7 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from engine.cli.common import (add_model_option, load_model_argument, non_negative, positive_int,
-                               positive_number)
+from engine.cli.common import add_model_option, load_model_argument, non_negative, positive_int, positive_number
 from engine.errors import UserError
 
 SESSION_SUFFIXES = (".h5", ".hdf5")

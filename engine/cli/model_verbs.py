@@ -14,8 +14,16 @@ from typing import Any
 
 import numpy as np
 
-from engine.cli.common import (VIEW_NAMES, add_model_option, add_set_option, load_model_argument,
-                               parameter_values, positive_number, require_suffix, size)
+from engine.cli.common import (
+    VIEW_NAMES,
+    add_model_option,
+    add_set_option,
+    load_model_argument,
+    parameter_values,
+    positive_number,
+    require_suffix,
+    size,
+)
 from engine.model import Model
 from engine.model.landmarks import landmark_sort_key
 

@@ -10,8 +10,14 @@ See ``docs/commands.md`` for the formats and rules.
 """
 
 from engine.commands.command_definition import CommandDefinition, Curve
-from engine.commands.command_files import (Activation, HighLevelCommand, low_level_xml, parse_commands_text, read_commands,
-                            write_low_level)
+from engine.commands.command_files import (
+                            Activation,
+                            HighLevelCommand,
+                            low_level_xml,
+                            parse_commands_text,
+                            read_commands,
+                            write_low_level,
+)
 from engine.commands.interpolation import INTERPOLATIONS, interpolate
 from engine.commands.library import Library, load_library
 from engine.commands.library_format import load_library_file, parse_library_text
@@ -19,7 +25,21 @@ from engine.commands.procedures import PROCEDURES, register_procedure
 from engine.commands.translator import translate
 
 __all__ = [
-    "Activation", "CommandDefinition", "Curve", "HighLevelCommand", "INTERPOLATIONS", "Library", "PROCEDURES",
-    "interpolate", "load_library", "load_library_file", "low_level_xml", "parse_commands_text",
-    "parse_library_text", "read_commands", "register_procedure", "translate", "write_low_level",
+                            "INTERPOLATIONS",
+                            "PROCEDURES",
+                            "Activation",
+                            "CommandDefinition",
+                            "Curve",
+                            "HighLevelCommand",
+                            "Library",
+                            "interpolate",
+                            "load_library",
+                            "load_library_file",
+                            "low_level_xml",
+                            "parse_commands_text",
+                            "parse_library_text",
+                            "read_commands",
+                            "register_procedure",
+                            "translate",
+                            "write_low_level",
 ]

@@ -24,12 +24,12 @@ a model parameter directly.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Iterable
 
+from engine.commands.library_format import AMPLITUDE, CommandDefinition, load_library_file
 from engine.errors import LibraryError
 from engine.paths import LIBRARY_DIR
-from engine.commands.library_format import AMPLITUDE, CommandDefinition, load_library_file
 
 LIBRARY_SUFFIX = ".lib"
 

@@ -35,8 +35,8 @@ after which library files may say ``$proc = twice``. See ``docs/commands.md``.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Callable, Mapping
 
 import numpy as np
 

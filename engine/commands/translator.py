@@ -23,11 +23,11 @@ import difflib
 
 import numpy as np
 
-from engine.errors import CommandError
 from engine.commands.command_files import Activation, HighLevelCommand
 from engine.commands.library import Library, parameter_of_line
 from engine.commands.library_format import AMPLITUDE, START, CommandDefinition
-from engine.commands.procedures import Arguments, ArgumentProblem, expand
+from engine.commands.procedures import ArgumentProblem, Arguments, expand
+from engine.errors import CommandError
 
 SIGNIFICANT_DIGITS = 12
 """Translated times and values are rounded to this many significant digits, so that

@@ -16,9 +16,9 @@ from __future__ import annotations
 import base64
 import json
 import struct
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Mapping
 
 import numpy as np
 
@@ -71,7 +71,7 @@ class GltfMesh:
     target_names: list[str]
     weights: np.ndarray
     document: dict
-    skin: "GltfSkin | None" = None
+    skin: GltfSkin | None = None
 
     @property
     def n_points(self) -> int:

@@ -29,8 +29,8 @@ from pathlib import Path
 import numpy as np
 
 from engine.errors import MeshImportError, UserError
-from engine.model.cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
 from engine.formats.atomic import atomic_write_bytes
+from engine.model.cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
 from engine.model.model import Model
 
 WRITE_FORMATS = (".obj", ".ply", ".npz")

@@ -12,7 +12,7 @@ subclass the caller names) carrying the file and line.
 
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 from lxml import etree
@@ -56,7 +56,7 @@ def parse_xml_bytes(data: bytes, name: str | Path, error: type[UserError] = User
         raise error(f"malformed XML: {exc}", file=name) from None
 
 
-@lru_cache(maxsize=None)
+@cache
 def schema(name: str) -> etree.XMLSchema:
     """The XML schema ``engine/formats/schemas/<name>`` (parsed once)."""
     return etree.XMLSchema(etree.parse(str(SCHEMA_DIR / name)))

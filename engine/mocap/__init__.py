@@ -13,5 +13,12 @@ formats, the mapping file and the session file.
 from engine.mocap.errors import LabelFileError, MarkerFileError, MocapError, SessionFileError
 from engine.mocap.session import Session, load_session, save_session
 
-__all__ = ["Session", "load_session", "save_session", "MocapError", "MarkerFileError", "SessionFileError",
-           "LabelFileError"]
+__all__ = [
+           "LabelFileError",
+           "MarkerFileError",
+           "MocapError",
+           "Session",
+           "SessionFileError",
+           "load_session",
+           "save_session",
+]

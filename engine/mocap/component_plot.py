@@ -89,7 +89,7 @@ def _gain(largest: float, wanted: float) -> float:
     """1, or the smallest of 2, 5, 10, 20, 50 … that makes ``largest`` at least ``wanted``."""
     if largest <= 0 or largest >= wanted:
         return 1.0
-    for exponent in range(0, 7):
+    for exponent in range(7):
         for step in (1, 2, 5):
             gain = step * 10.0 ** exponent
             if gain > 1 and largest * gain >= wanted:

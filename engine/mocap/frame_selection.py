@@ -24,7 +24,7 @@ import numpy as np
 
 from engine.mocap.errors import MocapError
 
-VOWELS = frozenset("a e i o u y @ 7".split())          # Suopuhe's Finnish vowels (@ = ä, 7 = ö)
+VOWELS = frozenset(["a", "e", "i", "o", "u", "y", "@", "7"])          # Suopuhe's Finnish vowels (@ = ä, 7 = ö)
 PAUSES = frozenset(["#", "##", "pau", "sil", "_"])
 
 

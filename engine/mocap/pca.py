@@ -292,7 +292,7 @@ def multistage_pca(source, positions=None, *, stages=DEFAULT_STAGES, frames=None
     return Articulation(
         markers=list(analysed), mean=mean, components=np.array(comps), explained_variance_ratio=np.array(ratios),
         stages=np.array(stage_of, dtype=np.int64), stage_markers=[list(g) for g in stage_names],
-        score_std=np.array(stds), n_frames=int(len(used)), excluded_missing=int((~ok).sum()),
+        score_std=np.array(stds), n_frames=len(used), excluded_missing=int((~ok).sum()),
         selection=selection, rate_hz=float(rate) if rate is not None else float("nan"),
         source=source_name or src, frames=used)
 

@@ -13,8 +13,8 @@ True
 from __future__ import annotations
 
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Mapping
 
 import numpy as np
 
@@ -62,7 +62,7 @@ class InfluenceRegion:
         out[self.indices] = self.weights
         return out
 
-    def copy(self) -> "InfluenceRegion":
+    def copy(self) -> InfluenceRegion:
         return InfluenceRegion(self.indices.copy(), self.weights.copy(),
                                None if self.displacements is None else self.displacements.copy())
 
@@ -255,7 +255,7 @@ class Model:
             raise
         self.changed()
 
-    def reordered(self, order) -> "Model":
+    def reordered(self, order) -> Model:
         """A copy with vertex ``i`` taken from old vertex ``order[i]``; faces, regions and
         landmarks renumbered. ``order`` must be a permutation of ``range(n_vertices)``."""
         order = np.asarray(order, dtype=np.int64)
@@ -274,7 +274,7 @@ class Model:
                      self.name, self.description, dict(self.part_colors),
                      None if self.vertex_colors is None else self.vertex_colors[order])
 
-    def copy(self) -> "Model":
+    def copy(self) -> Model:
         return Model(self.vertices.copy(), self.faces.copy(), list(self.parts), self.vertex_part.copy(),
                      self.parameters.copy(), {k: r.copy() for k, r in self.regions.items()},
                      dict(self.landmarks), self.name, self.description, dict(self.part_colors),

@@ -21,13 +21,13 @@ are added or removed.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, replace
-from typing import Iterable, Iterator
 
 import numpy as np
 
-from engine.errors import ParameterError
 from engine.deform.transforms import rotation_about_axis, translation
+from engine.errors import ParameterError
 
 ROTATION = "rotation"
 TRANSLATION = "translation"
@@ -120,7 +120,7 @@ class Parameter:
             return np.eye(4)
         return translation(value * self.direction)
 
-    def copy(self, **changes) -> "Parameter":
+    def copy(self, **changes) -> Parameter:
         """A copy with some attributes changed (arrays are copied)."""
         base = replace(self, axis=self.axis.copy(), pivot=self.pivot.copy(), direction=self.direction.copy())
         return replace(base, **changes) if changes else base
@@ -225,7 +225,7 @@ class ParameterTree:
             visit(root, 0)
         return out
 
-    def copy(self) -> "ParameterTree":
+    def copy(self) -> ParameterTree:
         return ParameterTree(p.copy() for p in self._params.values())
 
     # -- edits -----------------------------------------------------------

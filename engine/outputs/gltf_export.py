@@ -32,16 +32,26 @@ from __future__ import annotations
 
 import json
 import struct
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Iterable, Mapping
 
 import numpy as np
 
 from engine.errors import UserError
-from engine.formats.gltf_read import (GLB_BIN, GLB_JSON, GLB_MAGIC, METRES_PER_MM, MODEL_VERTEX, _TRIANGLES, GltfMesh,
-                        _parse, _split_glb)
-from engine.formats.gltf_read import GltfFileError, read_gltf
+from engine.formats.gltf_read import (
+    _TRIANGLES,
+    GLB_BIN,
+    GLB_JSON,
+    GLB_MAGIC,
+    METRES_PER_MM,
+    MODEL_VERTEX,
+    GltfFileError,
+    GltfMesh,
+    _parse,
+    _split_glb,
+    read_gltf,
+)
 
 __all__ = ["GltfFileError", "MorphTarget", "export_gltf", "glb_bytes", "gltf_document", "parameter_targets",
            "pose_targets", "read_gltf", "skeleton_parameters", "target_value"]

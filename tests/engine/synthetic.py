@@ -26,10 +26,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from engine.deform.transforms import rotation_about_axis, translation
 from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
-from engine.deform.transforms import rotation_about_axis, translation
-
 
 # ---------------------------------------------------------------------------
 # Geometry
@@ -62,7 +61,7 @@ def strip_faces(n_vertices: int) -> np.ndarray:
     The faces only have to be well formed; the deformation never reads them.
     """
     cells: list[int] = []
-    for i in range(0, n_vertices - 2):
+    for i in range(n_vertices - 2):
         cells += [3, i, i + 1, i + 2]
     if n_vertices >= 4:
         cells += [4, 0, 1, n_vertices - 1, n_vertices - 2]
@@ -222,7 +221,7 @@ def random_values(rng: np.random.Generator, model: Model, *, zero_fraction: floa
 
 
 def zero_values(model: Model) -> dict[str, float]:
-    return {n: 0.0 for n in model.parameters.names}
+    return dict.fromkeys(model.parameters.names, 0.0)
 
 
 def group1_names(model: Model) -> list[str]:

@@ -15,7 +15,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import engine
 from engine.fitting import reference_pose
 from tests.engine.face_geometry import Lips, assert_lips_apart, eyeball_entry_mm
 

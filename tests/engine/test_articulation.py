@@ -6,7 +6,8 @@ from collections import namedtuple
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from engine.errors import CommandError, LibraryError, UserError
 from engine.script.inline_commands import anchored_commands, parse_script, word_start_times

@@ -7,13 +7,12 @@ import csv
 import pytest
 
 from engine import load_model
-
 from tests.engine.cli_runner import assert_user_error, run
 
 PAPER = '<commands>\n  <HeadNod at="1000" amplitude="60" count="2"/>\n</commands>\n'
 
 
-@pytest.fixture()
+@pytest.fixture
 def script(tmp_path):
     path = tmp_path / "nod.xml"
     path.write_text(PAPER)

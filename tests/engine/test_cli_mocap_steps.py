@@ -11,7 +11,6 @@ from engine.mocap.importer import build_session
 from engine.mocap.recording import Recording
 from engine.mocap.session import save_session
 from engine.mocap.synthetic import synthesize_recording
-
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.mocap_samples import TRAINING_PHONES, parse_phones
 

@@ -10,9 +10,7 @@ import h5py
 import numpy as np
 import pytest
 
-import engine
 from engine.paths import reference_poses_path
-
 
 
 @pytest.fixture(scope="module")

@@ -40,7 +40,7 @@ def test_kernel_is_built_and_current():
         "(needs build-essential and python3-dev)")
     if SOURCE.exists():
         digest = hashlib.sha256(SOURCE.read_bytes()).hexdigest()
-        assert engine.deform.deformer.compiled.SOURCE_SHA256 == digest, (
+        assert digest == engine.deform.deformer.compiled.SOURCE_SHA256, (
             "engine.deform._kernel was built from an older _kernel.c: run .venv/bin/pip install -e .")
 
 

@@ -10,10 +10,9 @@ timing, intensity, one-sided variants and additive blends.
 import numpy as np
 import pytest
 
-import engine
-from tests.engine.cli_runner import run
 from engine.commands import load_library, parse_commands_text, translate
 from engine.timeline.timeline import Timeline
+from tests.engine.cli_runner import run
 from tests.engine.face_geometry import Lips, assert_lips_apart, eyeball_entry_mm
 
 EXPRESSIONS = ["Neutral", "Happy", "Sad", "Surprise", "Fear", "Anger", "Disgust", "Contempt", "HappySurprise"]

@@ -21,11 +21,31 @@ import pytest
 
 from engine.errors import UserError
 from engine.speech.festival import (
-    DEFAULT_VOICE, MALE_FINNISH_VOICE, TRANSLITERATION, FestivalSynthesizer, fit_to_duration,
-    missing_voice_message, parse_segments, parse_voices, prepare_text, scheme_string, synthesis_script)
+    DEFAULT_VOICE,
+    MALE_FINNISH_VOICE,
+    TRANSLITERATION,
+    FestivalSynthesizer,
+    fit_to_duration,
+    missing_voice_message,
+    parse_segments,
+    parse_voices,
+    prepare_text,
+    scheme_string,
+    synthesis_script,
+)
 from engine.speech.synthesis import (
-    Segment, SynthesisError, Synthesizer, Utterance, format_ms, phones_csv, read_phones_csv, read_wav,
-    wav_bytes, write_phones_csv, write_wav)
+    Segment,
+    SynthesisError,
+    Synthesizer,
+    Utterance,
+    format_ms,
+    phones_csv,
+    read_phones_csv,
+    read_wav,
+    wav_bytes,
+    write_phones_csv,
+    write_wav,
+)
 
 DATA = Path(__file__).parent / "data" / "festival"
 FINNISH_VOICES = [DEFAULT_VOICE, MALE_FINNISH_VOICE]
@@ -33,13 +53,10 @@ HAVE_FESTIVAL = shutil.which("festival") is not None
 needs_festival = pytest.mark.skipif(not HAVE_FESTIVAL, reason="Festival is not installed (./bootstrap installs it)")
 
 GREETING = "Hyvää päivää, mitä kuuluu?"
-GREETING_PHONES = "# h y v @: p @ i v @: # m i t @ k u: l u: # #".split()
+GREETING_PHONES = ["#", "h", "y", "v", "@:", "p", "@", "i", "v", "@:", "#", "m", "i", "t", "@", "k", "u:", "l", "u:", "#", "#"]
 #: Every label the two Suopuhe voices emitted for a broad Finnish test set (docs/speech-synthesis.md).
 SUOPUHE_PHONES = set(
-    "a e i o u y @ 7 a: e: i: o: u: y: @: 7: "
-    "b d f g h j k l m n p r s t v N S T "
-    "b: d: f: g: h: j: k: l: m: n: p: r: s: t: v: N: S: "
-    "# ##".split())
+    ["a", "e", "i", "o", "u", "y", "@", "7", "a:", "e:", "i:", "o:", "u:", "y:", "@:", "7:", "b", "d", "f", "g", "h", "j", "k", "l", "m", "n", "p", "r", "s", "t", "v", "N", "S", "T", "b:", "d:", "f:", "g:", "h:", "j:", "k:", "l:", "m:", "n:", "p:", "r:", "s:", "t:", "v:", "N:", "S:", "#", "##"])
 
 
 def recorded(name: str) -> str:

@@ -18,11 +18,10 @@ import numpy as np
 import pytest
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, UserError
-from engine.errors import ParameterError
-from engine.fitting import (FittingError, fit_parameter, fit_pose, mesh_edges, reference_pose,
-                            reference_pose_names)
-from engine.paths import PROJECT_ROOT
 from engine.deform.transforms import apply, rotation_about_axis
+from engine.errors import ParameterError
+from engine.fitting import FittingError, fit_parameter, fit_pose, mesh_edges, reference_pose, reference_pose_names
+from engine.paths import PROJECT_ROOT
 
 AXIS = np.array([0.96, 0.1, -0.26]) / np.linalg.norm([0.96, 0.1, -0.26])
 PIVOT = np.array([0.0, 70.0, 0.0])

@@ -14,16 +14,27 @@ import h5py
 import numpy as np
 import pytest
 
-from engine import InfluenceRegion, Model, Parameter, ParameterTree, UserError, load_model
+from engine import InfluenceRegion, Model, Parameter, ParameterTree, UserError
+from engine.formats.gltf_read import _quaternion_matrix as _matrix
 from engine.model.cells import cells_to_triangles
 from engine.outputs.gltf_export import (
-    METRES_PER_MM, MODEL_VERTEX, GltfFileError, MorphTarget, _quaternion, _rotation_from_x, export_gltf,
-    glb_bytes, gltf_document, parameter_targets, pose_targets, read_gltf, skeleton_parameters, target_value,
+    METRES_PER_MM,
+    MODEL_VERTEX,
+    GltfFileError,
+    MorphTarget,
+    _quaternion,
+    _rotation_from_x,
+    export_gltf,
+    glb_bytes,
+    gltf_document,
+    parameter_targets,
+    pose_targets,
+    read_gltf,
+    skeleton_parameters,
+    target_value,
 )
-from engine.formats.gltf_read import _quaternion_matrix as _matrix
-from engine.paths import default_model_path, reference_poses_path
 from engine.outputs.part_layout import PartLayout
-
+from engine.paths import default_model_path, reference_poses_path
 from tests.engine.cli_runner import assert_user_error, run
 
 ARKIT_SAMPLE = ("jawOpen", "mouthSmileLeft", "eyeBlinkRight", "browInnerUp", "tongueOut")

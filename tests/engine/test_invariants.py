@@ -20,13 +20,23 @@ from hypothesis import strategies as st
 
 import engine.deform.deformer
 from engine.deform.deformer import deform_reference
+from engine.deform.transforms import apply
 from engine.errors import ParameterError
 from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
-from engine.paths import default_model_path
-from engine.deform.transforms import apply
-from tests.engine.synthetic import (add_weight, bind, group1_names, leaf_names, own_transform, pairwise_distances,
-                       propagated_transform, random_model, random_values, strip_faces, zero_values)
+from tests.engine.synthetic import (
+    add_weight,
+    bind,
+    group1_names,
+    leaf_names,
+    own_transform,
+    pairwise_distances,
+    propagated_transform,
+    random_model,
+    random_values,
+    strip_faces,
+    zero_values,
+)
 
 TOL = 1e-9  # mm
 
@@ -91,7 +101,7 @@ def test_invariant1_all_values_zero_give_rest_mesh_exactly(seed, n, k, depth, pa
     model = rig(seed, n, k, depth, partial, contiguous, nonzero_defaults=True)
     assert np.array_equal(model.deform(zero_values(model)), model.vertices)
     assert np.array_equal(model.deformer().deform(np.zeros(len(model.parameters))), model.vertices)
-    negative_zero = {name: -0.0 for name in model.parameters.names}
+    negative_zero = dict.fromkeys(model.parameters.names, -0.0)
     assert np.array_equal(model.deform(negative_zero), model.vertices)
 
 

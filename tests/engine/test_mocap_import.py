@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 from engine.cli import main
+from engine.deform.transforms import rotation_about_axis, translation
 from engine.mocap import LabelFileError, MarkerFileError, MocapError, Session, SessionFileError
 from engine.mocap.csv_table import CsvLayout
 from engine.mocap.gaps import fill_gaps, find_gaps, max_gap_frames
@@ -31,8 +32,6 @@ from engine.mocap.naming import default_reference, marker_names, read_mapping
 from engine.mocap.readers import detect_format, read_marker_file
 from engine.mocap.recording import Recording
 from engine.mocap.session import SESSION_FORMAT, load_session, save_session
-from engine.deform.transforms import rotation_about_axis, translation
-
 from tests.engine.cli_runner import assert_user_error, run
 
 DATA = Path(__file__).parent / "data" / "mocap"

@@ -17,8 +17,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import engine
-from engine.mocap import head_motion, text_tables
 from engine.deform.transforms import apply, rotation_about_axis, translation
+from engine.mocap import head_motion, text_tables
 
 KERNELS = Path(engine.__file__).parent / "mocap"
 text_table = text_tables._text_table
@@ -34,7 +34,7 @@ def test_kernels_are_built_and_current(module, source):
     assert compiled is not None, f"engine.mocap.{module} is not built: run .venv/bin/pip install -e . " \
                                  "(needs build-essential and python3-dev)"
     digest = hashlib.sha256((KERNELS / source).read_bytes()).hexdigest()
-    assert compiled.SOURCE_SHA256 == digest, f"engine.mocap.{module} was built from an older {source}: " \
+    assert digest == compiled.SOURCE_SHA256, f"engine.mocap.{module} was built from an older {source}: " \
                                              "run .venv/bin/pip install -e ."
 
 

@@ -346,7 +346,7 @@ def test_apply_adds_one_field_translation_per_component(head, applied):
     for name in result.names:
         p = model.parameters[name]
         assert p.kind == "translation" and p.field and model.parameters.is_leaf(name)
-        assert p.parent == "head_tilt" and p.minimum < 0 < p.maximum or p.minimum == 0 or p.maximum == 0
+        assert (p.parent == "head_tilt" and p.minimum < 0 < p.maximum) or p.minimum == 0 or p.maximum == 0
     assert result.markers == list(ARTICULATION_MARKERS) and result.ignored == []
     assert result.scale == pytest.approx(1.0, abs=0.01)            # markers from this very head
     np.testing.assert_allclose(model.deform(), head.vertices)      # all 0 → rest

@@ -14,9 +14,7 @@ import subprocess
 import numpy as np
 import pytest
 
-from engine import load_model
 from engine.speech.say import speak
-
 from tests.engine.cli_runner import run
 
 pytestmark = pytest.mark.slow

@@ -4,15 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from engine.commands import Activation, load_library, parse_commands_text, translate
 from engine.commands.command_files import low_level_xml, read_commands, write_low_level
 from engine.commands.interpolation import INTERPOLATIONS, interpolate
 from engine.errors import CommandError, UserError
 from engine.timeline.timeline import Timeline
-
-
 
 # -- interpolation ---------------------------------------------------------------
 

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from engine.model.parameters import Parameter
 from engine.deform.transforms import IDENTITY, apply, is_identity, rotation_about_axis, translation
+from engine.model.parameters import Parameter
 
 RNG_SEEDS = range(20)
 

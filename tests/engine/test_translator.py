@@ -7,9 +7,8 @@ import pytest
 
 from engine.commands import Library, load_library, parse_commands_text, parse_library_text, translate
 from engine.commands.command_files import low_level_xml
-from engine.commands.procedures import Arguments, ArgumentProblem, periodic_timing, register_procedure, stretch
+from engine.commands.procedures import ArgumentProblem, Arguments, periodic_timing, register_procedure, stretch
 from engine.errors import CommandError, LibraryError
-
 from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
 

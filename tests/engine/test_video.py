@@ -18,9 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import engine
 from engine.errors import ParameterError, UserError
-from engine.paths import default_model_path
 
 video_writer = pytest.importorskip("engine.outputs.video_writer")
 video_probe = pytest.importorskip("engine.outputs.video_probe")

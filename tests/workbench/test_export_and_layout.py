@@ -10,10 +10,10 @@ from PySide6.QtWidgets import QFileDialog, QLabel, QMessageBox
 import engine
 from engine.commands import load_library
 from engine.outputs.configuration_export import export_configuration
+from tests.workbench.workbench_model_state import model_state
 from workbench import settings
 from workbench.tool_options import NO_TOOL
 from workbench.undo_commands import WeightsChangedCommand
-from tests.workbench.workbench_model_state import model_state
 
 Button = QMessageBox.StandardButton
 MY_JAW = """# A user's own JawOpen: wider.

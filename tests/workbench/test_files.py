@@ -13,11 +13,11 @@ from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox
 import engine
 from engine.formats.mesh_io import write_mesh
 from tests.workbench.synthetic_workbench_model import build_synthetic_model
+from tests.workbench.workbench_model_state import model_state
 from workbench import settings
 from workbench.file_controller import is_shipped
 from workbench.recent_files import add_recent_file, recent_files
 from workbench.undo_commands import AddParameterCommand, RenameParameterCommand, WeightsChangedCommand
-from tests.workbench.workbench_model_state import model_state
 
 Button = QMessageBox.StandardButton
 

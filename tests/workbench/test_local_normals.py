@@ -5,7 +5,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import engine
 from tests.workbench.normals import whole_mesh_normals
 from workbench.local_normals import LocalNormals
 

@@ -61,8 +61,8 @@ def export_through_dialog(qtbot, window, folder, *, base="hello", fps=15.0, size
 
 
 def test_export_writes_a_playable_video_with_audio_and_the_tables(said_window, spoken, qtbot, tmp_path):
-    from engine.speech.synthesis import read_wav
     from engine.outputs.video_probe import probe, read_frames
+    from engine.speech.synthesis import read_wav
 
     window = said_window
     with qtbot.waitSignal(window.speech_exporter.ended, timeout=120000) as ended:

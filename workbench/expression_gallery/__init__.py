@@ -11,8 +11,17 @@ from __future__ import annotations
 
 from PySide6.QtCore import QSize, Qt
 from PySide6.QtGui import QColor, QIcon, QPainter, QPixmap
-from PySide6.QtWidgets import (QDockWidget, QHBoxLayout, QLabel, QListView, QListWidget, QListWidgetItem, QSlider,
-                               QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (
+    QDockWidget,
+    QHBoxLayout,
+    QLabel,
+    QListView,
+    QListWidget,
+    QListWidgetItem,
+    QSlider,
+    QVBoxLayout,
+    QWidget,
+)
 
 from engine.errors import UserError
 from engine.timeline.expressions import GalleryEntry, gallery_entries
@@ -133,11 +142,11 @@ class ExpressionGallery(QWidget):
             item.setIcon(picture)
 
     # -- Qt overrides: render pictures only while the gallery is on screen ---------------
-    def showEvent(self, event) -> None:  # noqa: N802 (Qt's name)
+    def showEvent(self, event) -> None:
         super().showEvent(event)
         self.thumbnails.set_active(True)
 
-    def hideEvent(self, event) -> None:  # noqa: N802 (Qt's name)
+    def hideEvent(self, event) -> None:
         super().hideEvent(event)
         self.thumbnails.set_active(False)
 

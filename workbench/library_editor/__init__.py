@@ -44,7 +44,7 @@ class _CloseGuard(QObject):
         super().__init__(window)
         self.editor = editor
 
-    def eventFilter(self, watched, event) -> bool:  # noqa: N802 (Qt's name)
+    def eventFilter(self, watched, event) -> bool:
         if event.type() == QEvent.Type.Close and not self.editor.maybe_save("closing the window"):
             event.ignore()
             return True

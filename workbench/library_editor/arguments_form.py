@@ -20,7 +20,7 @@ COLUMNS = 2
 class NumberBox(QDoubleSpinBox):
     """A spin box that shows ``400`` rather than ``400.000``."""
 
-    def textFromValue(self, value: float) -> str:  # noqa: N802 (Qt's name)
+    def textFromValue(self, value: float) -> str:
         return f"{value:g}"
 
 

@@ -51,7 +51,7 @@ class CurvePlot(QWidget):
         self.setAutoFillBackground(True)
         self.setBackgroundRole(QPalette.ColorRole.Base)
 
-    def sizeHint(self) -> QSize:  # noqa: N802 (Qt's name)
+    def sizeHint(self) -> QSize:
         return QSize(420, 220)
 
     def set_curves(self, curves: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
@@ -70,7 +70,7 @@ class CurvePlot(QWidget):
         return QColor(PALETTE[names.index(name) % len(PALETTE)]) if name in names else QColor("black")
 
     # -- drawing --------------------------------------------------------------
-    def paintEvent(self, _event) -> None:  # noqa: N802 (Qt's name)
+    def paintEvent(self, _event) -> None:
         painter = QPainter(self)
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         text_colour = self.palette().color(QPalette.ColorRole.Text)

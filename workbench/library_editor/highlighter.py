@@ -68,7 +68,7 @@ class LibraryHighlighter(QSyntaxHighlighter):
     def __init__(self, document: QTextDocument):
         super().__init__(document)
 
-    def highlightBlock(self, text: str) -> None:  # noqa: N802 (Qt's name)
+    def highlightBlock(self, text: str) -> None:
         code, hash_mark, _ = text.partition("#")
         if hash_mark:
             self.setFormat(len(code), len(text) - len(code), FORMATS["comment"])

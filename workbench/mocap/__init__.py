@@ -86,7 +86,7 @@ class MocapTool(QObject):
             return False
         try:
             save_session(self.state.session, path)
-        except Exception as exc:  # noqa: BLE001
+        except Exception as exc:
             show_error(self.window, "Save session", exc)
             return False
         self.state.session_path = Path(path)

@@ -104,17 +104,17 @@ class CoordinatePlot(QWidget):
         return rect.bottom() - (value - lo) / (hi - lo) * rect.height()
 
     # -- mouse -----------------------------------------------------------------------------
-    def mousePressEvent(self, event) -> None:  # noqa: N802 (Qt's name)
+    def mousePressEvent(self, event) -> None:
         if event.button() == Qt.MouseButton.LeftButton and self.n_frames:
             self._press_x = self._drag_x = event.position().x()
             self.update()
 
-    def mouseMoveEvent(self, event) -> None:  # noqa: N802
+    def mouseMoveEvent(self, event) -> None:
         if self._press_x is not None:
             self._drag_x = event.position().x()
             self.update()
 
-    def mouseReleaseEvent(self, event) -> None:  # noqa: N802
+    def mouseReleaseEvent(self, event) -> None:
         if self._press_x is None or event.button() != Qt.MouseButton.LeftButton:
             return
         start, end = self._press_x, event.position().x()
@@ -126,7 +126,7 @@ class CoordinatePlot(QWidget):
             self.range_dragged.emit(self.frame_at(start), self.frame_at(end))
 
     # -- drawing --------------------------------------------------------------------------
-    def paintEvent(self, _event) -> None:  # noqa: N802
+    def paintEvent(self, _event) -> None:
         painter = QPainter(self)
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         painter.fillRect(self.rect(), QColor(250, 250, 250))

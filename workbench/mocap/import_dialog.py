@@ -20,9 +20,25 @@ from __future__ import annotations
 from pathlib import Path
 
 from PySide6.QtCore import Qt, Signal
-from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QDoubleSpinBox, QFileDialog,
-                               QFormLayout, QGroupBox, QHBoxLayout, QHeaderView, QLabel, QLineEdit,
-                               QPushButton, QTableWidget, QTableWidgetItem, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
+    QDialog,
+    QDialogButtonBox,
+    QDoubleSpinBox,
+    QFileDialog,
+    QFormLayout,
+    QGroupBox,
+    QHBoxLayout,
+    QHeaderView,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QTableWidget,
+    QTableWidgetItem,
+    QVBoxLayout,
+    QWidget,
+)
 
 from engine.mocap.csv_table import CsvLayout
 from engine.mocap.gaps import marker_gap_stats, max_gap_frames
@@ -289,7 +305,7 @@ class ImportDialog(QDialog):
     def load_mapping(self, path: str | Path) -> None:
         try:
             self.set_mapping(read_mapping(path))
-        except Exception as exc:  # noqa: BLE001 — a bad mapping file is a dialog, the table stays
+        except Exception as exc:
             show_error(self, TITLE, exc)
 
     def _save_mapping_dialog(self) -> None:
@@ -300,7 +316,7 @@ class ImportDialog(QDialog):
     def save_mapping(self, path: str | Path) -> None:
         try:
             write_mapping(path, self.mapping())
-        except Exception as exc:  # noqa: BLE001
+        except Exception as exc:
             show_error(self, TITLE, exc)
 
     # -- gaps ----------------------------------------------------------------------

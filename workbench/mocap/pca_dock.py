@@ -22,10 +22,26 @@ from __future__ import annotations
 import numpy as np
 from PySide6.QtCore import Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QFontDatabase
-from PySide6.QtWidgets import QFrame, QScrollArea
-from PySide6.QtWidgets import (QComboBox, QDockWidget, QFileDialog, QHBoxLayout, QHeaderView, QLabel, QLineEdit,
-                               QPlainTextEdit, QPushButton, QSlider, QSpinBox, QTableWidget, QTableWidgetItem,
-                               QTabWidget, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (
+    QComboBox,
+    QDockWidget,
+    QFileDialog,
+    QFrame,
+    QHBoxLayout,
+    QHeaderView,
+    QLabel,
+    QLineEdit,
+    QPlainTextEdit,
+    QPushButton,
+    QScrollArea,
+    QSlider,
+    QSpinBox,
+    QTableWidget,
+    QTableWidgetItem,
+    QTabWidget,
+    QVBoxLayout,
+    QWidget,
+)
 
 from engine.mocap.apply import apply_articulation
 from engine.mocap.articulation_file import save_articulation_file
@@ -148,7 +164,7 @@ class PcaDock(QDockWidget):
             return
         try:
             stages = self.stages()
-        except Exception as exc:  # noqa: BLE001 — a bad stage is a dialog
+        except Exception as exc:
             show_error(self, TITLE, exc)
             return
         frames = self.state.frames_for_pca()
@@ -244,7 +260,7 @@ class PcaDock(QDockWidget):
     def save_articulation(self, path) -> None:
         try:
             save_articulation_file(self.state.articulation, path)
-        except Exception as exc:  # noqa: BLE001
+        except Exception as exc:
             show_error(self, TITLE, exc)
 
     def _save_dialog(self) -> None:
@@ -306,7 +322,7 @@ class PcaDock(QDockWidget):
         applied, error, added = result
         try:
             self.document.push(AddArticulationCommand(self.document, added))
-        except Exception as exc:  # noqa: BLE001 — e.g. a name taken meanwhile: the model is unchanged
+        except Exception as exc:
             show_error(self, TITLE, exc)
             return
         self.applied, self.held_out = applied, error

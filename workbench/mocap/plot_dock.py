@@ -12,9 +12,23 @@ text (:mod:`engine.mocap.labels`), and drawn along the time axis.
 
 from __future__ import annotations
 
-from PySide6.QtWidgets import QFrame, QScrollArea
-from PySide6.QtWidgets import (QCheckBox, QComboBox, QDialog, QDialogButtonBox, QDockWidget, QFileDialog,
-                               QFormLayout, QHBoxLayout, QLabel, QLineEdit, QPushButton, QVBoxLayout, QWidget)
+from PySide6.QtWidgets import (
+    QCheckBox,
+    QComboBox,
+    QDialog,
+    QDialogButtonBox,
+    QDockWidget,
+    QFileDialog,
+    QFormLayout,
+    QFrame,
+    QHBoxLayout,
+    QLabel,
+    QLineEdit,
+    QPushButton,
+    QScrollArea,
+    QVBoxLayout,
+    QWidget,
+)
 
 from engine.mocap.errors import MocapError
 from engine.mocap.frame_selection import select_frames
@@ -161,7 +175,7 @@ class MarkerPlotDock(QDockWidget):
             return
         try:
             selection = select_frames(session.phones, session.n_frames, session.rate_hz, list(selectors))
-        except Exception as exc:  # noqa: BLE001 — a bad selector is a dialog
+        except Exception as exc:
             show_error(self, TITLE, exc)
             return
         self.state.set_phone_selection(selection)
@@ -177,7 +191,7 @@ class MarkerPlotDock(QDockWidget):
     def import_labels(self, path) -> None:
         try:
             phones = read_labels(path)
-        except Exception as exc:  # noqa: BLE001
+        except Exception as exc:
             show_error(self, TITLE, exc)
             return
         self.state.set_phones(phones)

@@ -36,7 +36,7 @@ class VarianceChart(QWidget):
     def bar_heights_percent(self) -> np.ndarray:
         return 100.0 * self.ratios
 
-    def paintEvent(self, _event) -> None:  # noqa: N802 (Qt's name)
+    def paintEvent(self, _event) -> None:
         painter = QPainter(self)
         painter.fillRect(self.rect(), Qt.GlobalColor.white)
         if not len(self.ratios):

@@ -14,8 +14,8 @@ unexpected error, never a traceback.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from concurrent.futures import Future, ThreadPoolExecutor
-from typing import Callable
 
 from PySide6.QtCore import QObject, Qt, QTimer
 from PySide6.QtWidgets import QMessageBox, QProgressDialog, QWidget
@@ -24,7 +24,7 @@ from engine.errors import UserError
 
 POLL_MS = 25
 _EXECUTOR = ThreadPoolExecutor(max_workers=1, thread_name_prefix="mocap")   # one job at a time: 2 cores shared
-_RUNNING: set["BackgroundJob"] = set()    # jobs whose work has not ended, whoever dropped them
+_RUNNING: set[BackgroundJob] = set()    # jobs whose work has not ended, whoever dropped them
 
 
 class BackgroundJob(QObject):

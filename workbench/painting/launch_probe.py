@@ -24,7 +24,7 @@ class _FirstPaint(QObject):
         self._window, self._path = window, path
         window.viewport.plotter.installEventFilter(self)
 
-    def eventFilter(self, watched, event) -> bool:  # noqa: N802 (Qt's name)
+    def eventFilter(self, watched, event) -> bool:
         if event.type() == QEvent.Type.Paint and self._window.isVisible():
             watched.removeEventFilter(self)
             QTimer.singleShot(0, self._mark)     # after this paint has been drawn

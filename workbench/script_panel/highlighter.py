@@ -33,7 +33,7 @@ class InlineCommandHighlighter(QSyntaxHighlighter):
     ARGUMENTS = _format("#7a7f87")
     STRAY = _format("#c0392b", error=True)
 
-    def highlightBlock(self, text: str) -> None:  # noqa: N802 (Qt's name)
+    def highlightBlock(self, text: str) -> None:
         covered = [False] * len(text)
         for match in _TAG.finditer(text):
             self.setFormat(match.start(), match.end() - match.start(), self.TAG)

@@ -20,11 +20,11 @@ from __future__ import annotations
 
 import threading
 import traceback
-from typing import Callable
+from collections.abc import Callable
 
 from PySide6.QtCore import QCoreApplication, QThread, Signal
 
-_RUNNING: set["Job"] = set()
+_RUNNING: set[Job] = set()
 _QUIT_HOOKED = False
 
 
@@ -39,7 +39,7 @@ class Job(QThread):
     progress = Signal(int, int)
     ended = Signal()
 
-    def __init__(self, work: Callable[["Job"], object]):
+    def __init__(self, work: Callable[[Job], object]):
         super().__init__()
         self._work = work
         self._cancel = threading.Event()
@@ -60,7 +60,7 @@ class Job(QThread):
         """Called by the work (any thread): emits ``progress``."""
         self.progress.emit(int(done), int(total))
 
-    def start(self) -> None:  # noqa: D102 - QThread.start, plus keeping the job alive
+    def start(self) -> None:
         _hook_quit()
         _RUNNING.add(self)
         super().start()
@@ -68,7 +68,7 @@ class Job(QThread):
     def run(self) -> None:  # the worker thread
         try:
             self.result = self._work(self)
-        except BaseException as error:  # noqa: BLE001 - every failure becomes a dialog, never a crash
+        except BaseException as error:
             self.error = error
             self.error_details = traceback.format_exc()
 

@@ -51,7 +51,7 @@ ANIMATION_ACTIONS: tuple[ActionSpec, ...] = (
 )
 
 
-def install(window: "MainWindow") -> None:
+def install(window: MainWindow) -> None:
     """Add the player, the timeline dock and the Animation menu to ``window``."""
     window.player = Player(window.document, window.playhead, window)
     actions = add_actions(window, ANIMATION_ACTIONS)
@@ -62,7 +62,7 @@ def install(window: "MainWindow") -> None:
     window.menus["&View"].addAction(dock.toggleViewAction())
 
 
-def open_animation(window: "MainWindow", path: str | Path) -> bool:
+def open_animation(window: MainWindow, path: str | Path) -> bool:
     """Load ``path`` into the player and show its first frame; a bad file → a dialog, nothing changes."""
     try:
         animation = load_animation(path, window.document.model, settings.library_folders(), fps=DEFAULT_FPS)
@@ -77,7 +77,7 @@ def open_animation(window: "MainWindow", path: str | Path) -> bool:
     return True
 
 
-def open_animation_dialog(window: "MainWindow") -> bool:
+def open_animation_dialog(window: MainWindow) -> bool:
     store = QSettings()
     path, _ = QFileDialog.getOpenFileName(window, "Open animation", str(store.value(settings.LAST_DIR, "")),
                                           FILE_FILTER)

@@ -104,7 +104,7 @@ class TrackView(QWidget):
         self.updateGeometry()
         self.update()
 
-    def sizeHint(self) -> QSize:  # noqa: N802 (Qt's name)
+    def sizeHint(self) -> QSize:
         rows = max(1, len(self.tracks))
         phones = PHONE_HEIGHT if self.player.phones else 0
         return QSize(600, RULER_HEIGHT + rows * TRACK_HEIGHT + phones + 2)
@@ -131,7 +131,7 @@ class TrackView(QWidget):
         return QRectF(0, RULER_HEIGHT + len(self.tracks) * TRACK_HEIGHT, self.width(), PHONE_HEIGHT)
 
     # -- mouse -------------------------------------------------------------
-    def mousePressEvent(self, event: QMouseEvent) -> None:  # noqa: N802
+    def mousePressEvent(self, event: QMouseEvent) -> None:
         if event.button() != Qt.MouseButton.LeftButton:
             return super().mousePressEvent(event)
         x, y = event.position().x(), event.position().y()
@@ -143,11 +143,11 @@ class TrackView(QWidget):
         self._scrubbing = True
         self._scrub_to(x)
 
-    def mouseMoveEvent(self, event: QMouseEvent) -> None:  # noqa: N802
+    def mouseMoveEvent(self, event: QMouseEvent) -> None:
         if self._scrubbing:
             self._scrub_to(event.position().x())
 
-    def mouseReleaseEvent(self, event: QMouseEvent) -> None:  # noqa: N802
+    def mouseReleaseEvent(self, event: QMouseEvent) -> None:
         self._scrubbing = False
 
     def _scrub_to(self, x: float) -> None:
@@ -157,7 +157,7 @@ class TrackView(QWidget):
         self.update()
 
     # -- painting ----------------------------------------------------------
-    def paintEvent(self, _event: QPaintEvent) -> None:  # noqa: N802
+    def paintEvent(self, _event: QPaintEvent) -> None:
         painter = QPainter(self)
         painter.setRenderHint(QPainter.RenderHint.Antialiasing)
         palette = self.palette()

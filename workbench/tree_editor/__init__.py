@@ -29,7 +29,7 @@ from .property_sheet import TOOL_ID, PropertySheet
 if TYPE_CHECKING:
     from ..main_window import MainWindow
 
-__all__ = ["install", "TreeEditor", "TOOL_ID"]
+__all__ = ["TOOL_ID", "TreeEditor", "install"]
 
 MENU = "&Parameters"
 ACTIONS = (
@@ -50,7 +50,7 @@ ACTIONS = (
 )
 
 
-def install(window: "MainWindow") -> None:
+def install(window: MainWindow) -> None:
     """Add the tree editor's dock, property page, gizmo and actions to ``window``."""
     editor = TreeEditor(window)
     window.tree_editor = editor

@@ -12,7 +12,7 @@ live in the rest frame.
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 from PySide6.QtCore import QEvent, QObject, Qt, Signal
@@ -70,7 +70,7 @@ class PivotPicker(QObject):
         self._on_pick(point)
         return True
 
-    def eventFilter(self, watched, event) -> bool:  # noqa: N802 (Qt's name)
+    def eventFilter(self, watched, event) -> bool:
         if not self._armed:
             return False
         kind = event.type()

@@ -13,7 +13,7 @@ the document's ``parameters_changed`` signal like every other widget.
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 from PySide6.QtCore import QByteArray, QMimeData, QModelIndex, QPersistentModelIndex, Qt
 from PySide6.QtGui import QFont, QStandardItem, QStandardItemModel
@@ -114,7 +114,7 @@ class ParameterTreeModel(QStandardItemModel):
         return list(self._items)
 
     # -- rename in place ---------------------------------------------------
-    def setData(self, index, value, role=Qt.ItemDataRole.EditRole) -> bool:  # noqa: N802 (Qt's name)
+    def setData(self, index, value, role=Qt.ItemDataRole.EditRole) -> bool:
         if role != Qt.ItemDataRole.EditRole or index.column() != 0:
             return super().setData(index, value, role)
         old = self.name_at(index)
@@ -124,16 +124,16 @@ class ParameterTreeModel(QStandardItemModel):
         return bool(self._rename(old, new))
 
     # -- drag and drop -----------------------------------------------------
-    def supportedDropActions(self) -> Qt.DropAction:  # noqa: N802 (Qt's name)
+    def supportedDropActions(self) -> Qt.DropAction:
         return Qt.DropAction.MoveAction
 
-    def supportedDragActions(self) -> Qt.DropAction:  # noqa: N802 (Qt's name)
+    def supportedDragActions(self) -> Qt.DropAction:
         return Qt.DropAction.MoveAction
 
-    def mimeTypes(self) -> list[str]:  # noqa: N802 (Qt's name)
+    def mimeTypes(self) -> list[str]:
         return [MIME_TYPE]
 
-    def mimeData(self, indexes) -> QMimeData:  # noqa: N802 (Qt's name)
+    def mimeData(self, indexes) -> QMimeData:
         names = list(dict.fromkeys(n for n in (self.name_at(i) for i in indexes) if n is not None))
         data = QMimeData()
         data.setData(MIME_TYPE, QByteArray("\n".join(names).encode()))
@@ -145,10 +145,10 @@ class ParameterTreeModel(QStandardItemModel):
             return []
         return [n for n in bytes(data.data(MIME_TYPE).data()).decode().split("\n") if n]
 
-    def canDropMimeData(self, data, action, row, column, parent) -> bool:  # noqa: N802 (Qt's name)
+    def canDropMimeData(self, data, action, row, column, parent) -> bool:
         return bool(self.dragged_names(data))
 
-    def dropMimeData(self, data, action, row, column, parent) -> bool:  # noqa: N802 (Qt's name)
+    def dropMimeData(self, data, action, row, column, parent) -> bool:
         """A drop on a row moves the dragged parameters under it (after its children); a drop between
         rows places them there, among those rows' siblings (``row``: the position between them); a
         drop below every row moves them to the top level, last.
