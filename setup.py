@@ -4,8 +4,8 @@
 into the extension module ``engine.deform._kernel`` (the deformation) and
 ``engine/mocap/_text_table.c`` into ``engine.mocap._text_table`` (reading large number
 tables: motion-capture exports) and ``engine/mocap/_rigid_fit.c`` into
-``engine.mocap._rigid_fit`` (Kabsch rotations of every frame: head-motion removal). They need a C compiler and the Python headers
-(Debian: ``build-essential python3-dev``, in ``bootstrap``'s package list).
+``engine.mocap._rigid_fit`` (Kabsch rotations of every frame: head-motion removal). They need a C compiler
+and the Python headers (Debian: ``build-essential python3-dev``, in ``bootstrap``'s package list).
 When compiling fails the install still succeeds (``optional=True``) and the
 engine uses its numpy paths; ``test_deform_kernel.py::test_kernel_is_built_and_current``
 and ``test_mocap_kernels.py::test_kernels_are_built_and_current`` then report it.

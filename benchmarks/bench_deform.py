@@ -91,7 +91,7 @@ class CopyFloor:
         self.dst = [np.empty_like(a) for a in self.src]
 
     def deform(self, values):
-        for s, d in zip(self.src, self.dst):
+        for s, d in zip(self.src, self.dst, strict=True):
             np.copyto(d, s)
         np.copyto(self.out, self.rest)
         return self.out

@@ -61,10 +61,8 @@ def main(argv=None) -> int:
     parser.add_argument("--json", default=None)
     args = parser.parse_args(argv)
     model = load_model()
-    results = []
     with tempfile.TemporaryDirectory() as tmp:
-        for _ in range(args.runs):
-            results.append(run_once(model, Path(tmp)))
+        results = [run_once(model, Path(tmp)) for _ in range(args.runs)]
     keys = ["audio_s", "total_s", "rtf", "festival_s", "festival_rtf", "speak_s", "sample_s", "video_s",
             "deform_s", "render_s", "encode_wait_s"]
     print(f"text → MP4, 640×480 at 30 fps, {results[0]['audio_s']:.1f} s of speech, {args.runs} runs")

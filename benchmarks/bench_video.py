@@ -60,7 +60,7 @@ MOTION = {  # parameter: (centre, amplitude as a fraction of the half range, fre
 
 def motion(model, seconds: float, fps: float):
     """Frame times (ms), the names moved and their values (frames × names), inside each range."""
-    times = np.arange(int(round(seconds * fps))) * (1000.0 / fps)
+    times = np.arange(round(seconds * fps)) * (1000.0 / fps)
     names = [n for n in MOTION if n in model.parameters]
     columns = []
     for k, name in enumerate(names):

@@ -97,11 +97,11 @@ def strip_times(timeline: Timeline, motion) -> tuple[np.ndarray, list[float]]:
     frame onto it, so every extreme of the command is in the strip.
     """
     start, end = timeline.start, timeline.end
-    dense = np.linspace(start, end, int(round(end - start)) + 1)
+    dense = np.linspace(start, end, round(end - start) + 1)
     amount = motion(timeline.sample(dense))
     high = np.concatenate([[False], amount >= 0.98 * amount.max(), [False]])
     edges = np.flatnonzero(np.diff(high.astype(int)))
-    peaks = [(dense[a], dense[b - 1]) for a, b in zip(edges[::2], edges[1::2])]
+    peaks = [(dense[a], dense[b - 1]) for a, b in zip(edges[::2], edges[1::2], strict=True)]
 
     def missed(times):
         return [(lo, hi) for lo, hi in peaks if not ((times >= lo - 1e-6) & (times <= hi + 1e-6)).any()]
@@ -163,7 +163,7 @@ def render_size(model, view: str, region: str | None, shown_width: int):
         shown = (shown_width, round(TILE[1] * scale))
         return (round(shown[0] * SUPERSAMPLE), round(shown[1] * SUPERSAMPLE)), None, shown
     base = (600, 700)
-    left, top, right, bottom = crop_box(model, view, region, base)
+    left, _top, right, _bottom = crop_box(model, view, region, base)
     factor = SUPERSAMPLE * shown_width / (right - left)
     size = (round(base[0] * factor), round(base[1] * factor))
     box = crop_box(model, view, region, size)
@@ -192,7 +192,7 @@ def frames(model, timeline: Timeline, times, view: str, region: str | None, show
     outline = rest_outline(model, view, size) if region is None else None
     images = []
     for row in timeline.sample(times):
-        picture = render_model(model, dict(zip(timeline.parameters, row)), view=view, size=size)
+        picture = render_model(model, dict(zip(timeline.parameters, row, strict=True)), view=view, size=size)
         if outline is not None:
             picture[outline] = (0.45 * picture[outline] + 0.55 * np.array(OUTLINE)).astype(np.uint8)
         picture = Image.fromarray(picture)
@@ -213,7 +213,7 @@ def strip(tiles, times, peaks, title: str, subtitle: str) -> Image.Image:
     draw = ImageDraw.Draw(sheet)
     draw.text((8, 6), title, fill=INK, font=font(17))
     draw.text((8, 29), subtitle, fill=GREY, font=font(13))
-    for i, (tile, t) in enumerate(zip(tiles, times)):
+    for i, (tile, t) in enumerate(zip(tiles, times, strict=True)):
         x = i * (w + gap)
         sheet.paste(tile, (x, head))
         label = f"{t:.0f} ms" + ("  (peak)" if any(abs(t - p) < 1e-6 for p in peaks) else "")
@@ -247,10 +247,10 @@ def shared_palette(images) -> Image.Image:
 
 def write_gif(path: Path, images, times) -> None:
     labelled = []
-    for image, t in zip(images, times):
-        image = image.copy()
-        ImageDraw.Draw(image).text((5, image.height - 4), f"{t:.0f} ms", fill=INK, font=font(11), anchor="ld")
-        labelled.append(image)
+    for image, t in zip(images, times, strict=True):
+        stamped = image.copy()
+        ImageDraw.Draw(stamped).text((5, stamped.height - 4), f"{t:.0f} ms", fill=INK, font=font(11), anchor="ld")
+        labelled.append(stamped)
     palette = shared_palette(labelled)
     paletted = [im.quantize(palette=palette, dither=Image.Dither.NONE) for im in labelled]
     durations = [1000 // FPS] * (len(paletted) - 1) + [HOLD_MS]

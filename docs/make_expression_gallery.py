@@ -161,7 +161,7 @@ def main() -> int:
         print("action-units.png")
 
         left = [crop(renderers["front"].render(head.deform({name: 1.0})), "front", small) for name in LEFT]
-        sheet([labelled(t, n) for t, n in zip(left, LEFT)], 8,
+        sheet([labelled(t, n) for t, n in zip(left, LEFT, strict=True)], 8,
               "The subject's left side only (front)").save(OUT / "action-units-left.png", optimize=True)
         print("action-units-left.png")
 

@@ -52,12 +52,12 @@ class _LoadOnFirstUse:
 
         def load() -> None:
             with lock:
-                if module.__dict__.get("__getattr__") is __getattr__:
+                if module.__dict__.get("__getattr__") is deferred_getattr:
                     del module.__dict__["__getattr__"], module.__dict__["__dir__"]
                     module.__loader__ = module.__spec__.loader = real
                     real.exec_module(module)
 
-        def __getattr__(name: str):
+        def deferred_getattr(name: str):
             # Tools that look modules over ask for dunder names (PySide's import hook asks each newly
             # imported module for ``__wrapped__``): answer those without running the module.
             if name.startswith("__") and name.endswith("__") and name not in LOADING_DUNDERS:
@@ -65,12 +65,12 @@ class _LoadOnFirstUse:
             load()
             return getattr(module, name)
 
-        def __dir__():
+        def deferred_dir():
             load()
             return sorted(module.__dict__)
 
-        module.__getattr__ = __getattr__
-        module.__dir__ = __dir__
+        module.__getattr__ = deferred_getattr      # the module's own __getattr__ and __dir__ (PEP 562)
+        module.__dir__ = deferred_dir
 
 
 class _DeferringFinder:

@@ -48,11 +48,11 @@ class Playhead(QObject):
     @property
     def frame(self) -> int:
         """The frame at the current time (frame ``k`` is at ``k / fps`` s)."""
-        return int(round(self._time * self._fps))
+        return round(self._time * self._fps)
 
     @property
     def n_frames(self) -> int:
-        return int(round(self._duration * self._fps)) + 1
+        return round(self._duration * self._fps) + 1
 
     def set_range(self, duration: float, fps: float = DEFAULT_FPS) -> None:
         """Set the length (s) and frame rate of what is loaded; clamps the time into it."""

@@ -20,6 +20,7 @@ to; otherwise it is stale and removed.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import time
@@ -112,10 +113,8 @@ def _read_entry(info: Path) -> RecoveryEntry | None:
 def _remove_session_files(folder: Path, session: str) -> None:
     # The description first: without it nobody will try to read a half-removed model.
     for suffix in (".json", ".xml", ".h5"):
-        try:
+        with contextlib.suppress(FileNotFoundError):
             os.unlink(folder / f"{session}{suffix}")
-        except FileNotFoundError:
-            pass
 
 
 class RecoverySession:

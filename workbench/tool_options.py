@@ -40,7 +40,8 @@ class ToolOptionsDock(QDockWidget):
                          | QDockWidget.DockWidgetFeature.DockWidgetClosable)
         self.stack = QStackedWidget()
         self._pages: dict[str, QWidget] = {}
-        self._holders: dict[str, QScrollArea] = {}   # each page scrolls down, so a tall page never sets the window's height
+        # each page scrolls down, so a tall page never sets the window's height
+        self._holders: dict[str, QScrollArea] = {}
         placeholder = QLabel("No tool is active.\nTools for painting weights and editing the\n"
                              "parameter tree show their options here.")
         placeholder.setAlignment(Qt.AlignmentFlag.AlignCenter)

@@ -55,7 +55,8 @@ def mouth_centre_and_size(model, renderer, rest_image):
     P = model.vertices
     lm = model.landmarks
     c = P[[lm[k] for k in ("8.3", "8.4", "8.1", "8.2")]]
-    lo, hi = c.min(axis=0) - [0, 1, 30], c.max(axis=0) + [0, 1, 30]
+    margin = np.array([0, 1, 30])
+    lo, hi = c.min(axis=0) - margin, c.max(axis=0) + margin
     lips = np.all((lo <= P) & (hi >= P), axis=1) & (model.vertex_part == model.parts.index("skin"))
     hidden = P.copy()
     hidden[lips] += [0.0, 0.0, -80.0]
@@ -76,7 +77,7 @@ def close_ups(model, poses, views=VIEWS):
                 half = (hx, int(0.62 * hx))
             hx, hy = half
 
-            def crop(image):
+            def crop(image, cx=cx, cy=cy, hx=hx, hy=hy):
                 padded = np.pad(image, ((hy, hy), (hx, hx), (0, 0)), mode="edge")
                 return padded[cy:cy + 2 * hy, cx:cx + 2 * hx]
             out[view] = [crop(renderer.render(model.deform(values))) for _, values in poses]
@@ -93,7 +94,7 @@ def sheet(rows, column_labels, row_labels, scale=0.5, pad=6, label_height=26, la
     draw = ImageDraw.Draw(out)
     for j, text in enumerate(column_labels):
         draw.text((label_width + pad + j * (w + pad) + 4, 8), text, fill=(20, 20, 20))
-    for i, (label, row) in enumerate(zip(row_labels, tiles)):
+    for i, (label, row) in enumerate(zip(row_labels, tiles, strict=False)):
         y = label_height + pad + i * (h + pad)
         draw.text((8, y + h // 2 - 6), label, fill=(20, 20, 20))
         for j, tile in enumerate(row):
@@ -139,7 +140,7 @@ def sections_picture(model, states, xs=(0.0, 6.0, 12.0, 17.0), cell=(330, 200), 
             tile = Image.new("RGB", cell, (250, 250, 250))
             tdraw = ImageDraw.Draw(tile)
 
-            def to_px(p):
+            def to_px(p, z_front=z_front, y_mid=y_mid):
                 return (cell[0] - (z_front - p[0]) * scale, cell[1] / 2 - (p[1] - y_mid) * scale)
             for segments, colour in ((upper, (40, 80, 200)), (lower, (210, 50, 50))):
                 for a, b in segments:

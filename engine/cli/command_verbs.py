@@ -11,9 +11,13 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from engine.cli.common import add_library_option, add_model_option, load_model_argument, positive_number, require_suffix
+
+if TYPE_CHECKING:
+    from engine.commands.command_files import Activation
+    from engine.model import Model
 
 
 def add_verbs(verbs: Any) -> None:
@@ -48,7 +52,7 @@ def _add_library_option(p: argparse.ArgumentParser) -> None:
                         "its commands override shipped ones of the same name (may be repeated)")
 
 
-def _activations(args):
+def _activations(args: argparse.Namespace) -> tuple[list[Activation], Model]:
     from engine.commands import load_library, read_commands, translate
 
     commands = read_commands(args.input)

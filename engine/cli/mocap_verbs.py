@@ -250,7 +250,7 @@ def _marker_list(text: str) -> list[str]:
     return names
 
 
-def _reference_frame(text: str):
+def _reference_frame(text: str) -> str | int:
     if text in ("first", "mean"):
         return text
     try:

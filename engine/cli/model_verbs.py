@@ -133,7 +133,7 @@ def model_report(model: Model) -> str:
     if rows:
         widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
         lines.append("parameters (name, type, group, range, default, scale):")
-        lines += ["  " + "  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows]
+        lines += ["  " + "  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows]
     else:
         lines.append("parameters: none")
     counts = np.bincount(model.vertex_part, minlength=len(model.parts))

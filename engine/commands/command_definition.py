@@ -81,4 +81,4 @@ class CommandDefinition:
 
     def where(self, directive: str | None = None) -> dict:
         """``file=`` and ``line=`` keywords for an error about this command or one directive."""
-        return {"file": self.file, "line": self.lines.get(directive, self.line)}
+        return {"file": self.file, "line": self.line if directive is None else self.lines.get(directive, self.line)}

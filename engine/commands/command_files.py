@@ -33,15 +33,17 @@ HighLevelCommand(name='HeadNod', arguments={'at': 1000.0, 'count': 2.0}, file='<
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import cast
 
 import numpy as np
 from lxml import etree
 
 from engine.errors import CommandError
 from engine.formats.atomic import atomic_write_text
-from engine.formats.xml_io import parse_xml, parse_xml_text, validate
+from engine.formats.xml_io import parse_xml, parse_xml_text, source_line, validate
 
 SCHEMA_NAME = "commands.xsd"
 LOW_LEVEL_ROOT = "low-level-commands"
@@ -93,7 +95,7 @@ class Activation:
     line_number: int | None = field(default=None, compare=False)
     """Where this activation itself was read from (low-level files)."""
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         self.times = np.asarray(self.times, dtype=float)
         self.values = np.asarray(self.values, dtype=float)
 
@@ -134,11 +136,11 @@ def _commands(doc: etree._ElementTree, name: str) -> list[HighLevelCommand | Act
     root = doc.getroot()
     if root.tag not in (HIGH_LEVEL_ROOT, LOW_LEVEL_ROOT):
         raise CommandError(f"not a command file: the root element is <{root.tag}>, expected <{HIGH_LEVEL_ROOT}> "
-                           f"or <{LOW_LEVEL_ROOT}>", file=name, line=root.sourceline)
+                           f"or <{LOW_LEVEL_ROOT}>", file=name, line=source_line(root))
     version = root.get("version")
     if version is not None and version.isdigit() and int(version) > LOW_LEVEL_VERSION:
         raise CommandError(f"command file format version {version} is newer than this program reads "
-                           f"({LOW_LEVEL_VERSION})", file=name, line=root.sourceline)
+                           f"({LOW_LEVEL_VERSION})", file=name, line=source_line(root))
     validate(doc, SCHEMA_NAME, name, CommandError)
     out: list[HighLevelCommand | Activation] = []
     for element in root:
@@ -151,39 +153,44 @@ def _commands(doc: etree._ElementTree, name: str) -> list[HighLevelCommand | Act
     return out
 
 
-def _high_level(element, name: str) -> HighLevelCommand:
+def _high_level(element: etree._Element, name: str) -> HighLevelCommand:
     if len([c for c in element if isinstance(c.tag, str)]) or (element.text or "").strip():
         raise CommandError(f"<{element.tag}> holds content; a high-level command has only attributes",
-                           file=name, line=element.sourceline)
-    arguments = {}
-    for key, text in element.attrib.items():
+                           file=name, line=source_line(element))
+    arguments: dict[str, float] = {}
+    attributes = cast(Mapping[str, str], element.attrib)     # lxml-stubs say str | bytes; Python 3 lxml gives str
+    for key, text in attributes.items():
         if "}" in key:
             raise CommandError(f"<{element.tag}>: attribute '{key}' has a namespace; command arguments have none",
-                               file=name, line=element.sourceline)
-        arguments[key] = _number(text, f"<{element.tag}> argument {key}", name, element.sourceline)
-    return HighLevelCommand(element.tag, arguments, name, element.sourceline)
+                               file=name, line=source_line(element))
+        arguments[key] = _number(text, f"<{element.tag}> argument {key}", name, source_line(element))
+    return HighLevelCommand(element.tag, arguments, name, source_line(element))
 
 
-def _activation(element, name: str) -> Activation:
-    times, values = [], []
+def _activation(element: etree._Element, name: str) -> Activation:
+    times: list[float] = []
+    values: list[float] = []
     for key in element:
         if not isinstance(key.tag, str):
             continue
-        t = _number(key.get("at"), "key time 'at'", name, key.sourceline)
-        v = _number(key.get("value"), "key 'value'", name, key.sourceline)
+        t = _number(key.get("at"), "key time 'at'", name, source_line(key))
+        v = _number(key.get("value"), "key 'value'", name, source_line(key))
         if times and t < times[-1]:
             raise CommandError(f"key times must not decrease: at={t:g} comes after at={times[-1]:g}",
-                               file=name, line=key.sourceline)
+                               file=name, line=source_line(key))
         times.append(t)
         values.append(v)
-    return Activation(element.get("parameter"), np.array(times), np.array(values),
+    parameter = element.get("parameter")
+    if parameter is None:              # the schema requires it; this guards against a mistake
+        raise CommandError(f"<{element.tag}> has no 'parameter' attribute", file=name, line=source_line(element))
+    return Activation(parameter, np.array(times), np.array(values),
                       element.get("interp", "linear"), element.get("command"), element.get("line"),
-                      element.get("source"), file=name, line_number=element.sourceline)
+                      element.get("source"), file=name, line_number=source_line(element))
 
 
 def _number(text: str | None, what: str, file: str, line: int | None) -> float:
     try:
-        value = float(text)
+        value = float(text or "")     # None (a missing attribute) fails as "" does
     except (TypeError, ValueError):
         raise CommandError(f"{what} is not a number: '{text}'", file=file, line=line) from None
     if not math.isfinite(value):
@@ -205,7 +212,7 @@ def low_level_xml(activations: list[Activation]) -> str:
             if getattr(act, attribute):
                 el.set(attribute, str(getattr(act, attribute)))
         el.text = "\n    "
-        for k, (t, v) in enumerate(zip(act.times, act.values)):
+        for k, (t, v) in enumerate(zip(act.times, act.values, strict=True)):
             key = etree.SubElement(el, "key", at=format_number(t), value=format_number(v))
             key.tail = "\n    " if k < len(act.times) - 1 else "\n  "
         el.tail = "\n  " if i < len(activations) - 1 else "\n"

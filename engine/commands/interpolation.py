@@ -23,11 +23,12 @@ array([0.  , 0.  , 0.25, 1.  , 0.  ])
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 INTERPOLATIONS = ("linear", "step", "cubic", "cosine")
 
 
-def interpolate(kind: str, times, values, at: np.ndarray) -> np.ndarray:
+def interpolate(kind: str, times: npt.ArrayLike, values: npt.ArrayLike, at: npt.ArrayLike) -> np.ndarray:
     """Values of the curve through ``(times, values)`` at the times ``at``.
 
     ``times`` must not decrease. Outside ``[times[0], times[-1]]`` the result is 0.

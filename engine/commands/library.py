@@ -24,12 +24,16 @@ a model parameter directly.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from engine.commands.library_format import AMPLITUDE, CommandDefinition, load_library_file
+from engine.commands.library_format import AMPLITUDE, CommandDefinition, Curve, load_library_file
 from engine.errors import LibraryError
 from engine.paths import LIBRARY_DIR
+
+if TYPE_CHECKING:
+    from engine.model.model import Model
 
 LIBRARY_SUFFIX = ".lib"
 
@@ -37,7 +41,7 @@ LIBRARY_SUFFIX = ".lib"
 class Library:
     """Command definitions by name, with the file each came from."""
 
-    def __init__(self, definitions: Iterable[CommandDefinition] = ()):
+    def __init__(self, definitions: Iterable[CommandDefinition] = ()) -> None:
         self._definitions: dict[str, CommandDefinition] = {}
         self.overridden: dict[str, list[CommandDefinition]] = {}
         """Definitions replaced by a later folder, by command name."""
@@ -57,7 +61,7 @@ class Library:
     def __getitem__(self, name: str) -> CommandDefinition:
         return self._definitions[name]
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[str]:
         return iter(sorted(self._definitions))
 
     def __len__(self) -> int:
@@ -66,7 +70,7 @@ class Library:
     def names(self) -> list[str]:
         return sorted(self._definitions)
 
-    def parameters_of(self, command: str, model) -> list[str]:
+    def parameters_of(self, command: str, model: Model) -> list[str]:
         """The model parameter each line of ``command`` drives, in line order.
 
         Raises :class:`LibraryError` (file and line of the line) when the model lacks one.
@@ -74,9 +78,9 @@ class Library:
         definition = self._definitions[command]
         return [parameter_of_line(definition, curve, model) for curve in definition.curves]
 
-    def check(self, model) -> list[LibraryError]:
+    def check(self, model: Model) -> list[LibraryError]:
         """Every problem binding the library to ``model`` would raise, without raising."""
-        problems = []
+        problems: list[LibraryError] = []
         for name in self.names():
             try:
                 self.parameters_of(name, model)
@@ -84,7 +88,7 @@ class Library:
                 problems.append(exc)
         return problems
 
-    def bind(self, model) -> Library:
+    def bind(self, model: Model) -> Library:
         """Check every command against ``model``; raises the first problem. Returns ``self``."""
         problems = self.check(model)
         if problems:
@@ -121,14 +125,13 @@ def _definitions_in(source: Path) -> list[CommandDefinition]:
     return list(found.values())
 
 
-def parameter_of_line(definition: CommandDefinition, curve, model) -> str:
+def parameter_of_line(definition: CommandDefinition, curve: Curve, model: Model) -> str:
     """The model parameter one library line drives (see the module docstring)."""
     tree = model.parameters
-    where = {"file": definition.file, "line": curve.line}
     if curve.name != AMPLITUDE:
         if curve.name not in tree:
             raise LibraryError(f"command {definition.name}: line '{curve.name}' names a parameter the model "
-                               f"'{model.name}' does not have", **where)
+                               f"'{model.name}' does not have", file=definition.file, line=curve.line)
         return curve.name
     if definition.parameter is not None:
         if definition.parameter not in tree:
@@ -141,7 +144,7 @@ def parameter_of_line(definition: CommandDefinition, curve, model) -> str:
             return name
     raise LibraryError(f"command {definition.name}: its line 'amplitude' drives no parameter — the model "
                        f"'{model.name}' has neither '{candidates[0]}' nor '{candidates[1]}'; name one with "
-                       "'$parameter = …'", **where)
+                       "'$parameter = …'", file=definition.file, line=curve.line)
 
 
 def snake_case(name: str) -> str:

@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -136,7 +137,7 @@ def _statements(text: str, file: str) -> list[_Statement]:
     return statements
 
 
-def _continues(previous: _Statement, content: str, match) -> bool:
+def _continues(previous: _Statement, content: str, match: re.Match[str] | None) -> bool:
     """Whether a line continues the previous statement's value (the paper breaks values over lines)."""
     text = content.lstrip()
     if text.startswith("$"):
@@ -273,7 +274,7 @@ def _curve(st: _Statement, file: str) -> Curve:
     return Curve(st.name, tuple(times), tuple(values), st.line, st.scale)
 
 
-def _items(text: str, separator: str):
+def _items(text: str, separator: str) -> Iterator[tuple[int, str]]:
     """(offset, stripped item) for each ``separator``-separated item of ``text``."""
     offset = 0
     for piece in text.split(separator):

@@ -35,10 +35,12 @@ after which library files may say ``$proc = twice``. See ``docs/commands.md``.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TypeVar
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.commands.command_definition import IMPLICIT_ARGUMENTS, CommandDefinition
 from engine.errors import LibraryError
@@ -59,7 +61,7 @@ class Arguments(Mapping[str, float]):
     def __getitem__(self, name: str) -> float:
         return self._values[name]
 
-    def __iter__(self):
+    def __iter__(self) -> Iterator[str]:
         return iter(self._values)
 
     def __len__(self) -> int:
@@ -69,10 +71,17 @@ class Arguments(Mapping[str, float]):
         return name in self.given
 
 
+ProcedureFunction = Callable[[np.ndarray, np.ndarray, tuple[float, float], Arguments],
+                             tuple[npt.ArrayLike, npt.ArrayLike]]
+"""``function(times, values, span, args) -> (times, values)``: one line laid out in time."""
+
+_Function = TypeVar("_Function", bound=ProcedureFunction)
+
+
 @dataclass(frozen=True)
 class Procedure:
     name: str
-    function: Callable
+    function: ProcedureFunction
     arguments: tuple[str, ...]
     """The command arguments the procedure reads (a library may declare any of them)."""
     required: tuple[str, ...]
@@ -85,10 +94,10 @@ PROCEDURES: dict[str, Procedure] = {}
 
 
 def register_procedure(name: str, arguments: tuple[str, ...] = (), required: tuple[str, ...] = (),
-                       accepts_levels: bool = False):
+                       accepts_levels: bool = False) -> Callable[[_Function], _Function]:
     """Decorator: make ``function(times, values, span, args) -> (times, values)`` available as ``$proc = name``."""
 
-    def decorate(function):
+    def decorate(function: _Function) -> _Function:
         PROCEDURES[name] = Procedure(name, function, tuple(arguments), tuple(required), accepts_levels)
         return function
 
@@ -128,7 +137,7 @@ def expand(definition: CommandDefinition, args: Arguments) -> list[tuple[np.ndar
     """Keys (times from ``at``, unscaled values) of every line of a command."""
     procedure = PROCEDURES[definition.procedure]
     span = definition.span()
-    out = []
+    out: list[tuple[np.ndarray, np.ndarray]] = []
     for curve in definition.curves:
         times, values = procedure.function(np.array(curve.times, dtype=float),
                                            np.array(curve.values, dtype=float), span, args)
@@ -148,7 +157,7 @@ def stretch(times: np.ndarray, span: tuple[float, float], start: float, duration
     return start + (times - t0) * (duration / (t1 - t0))
 
 
-def merge_repeated_keys(times: np.ndarray, values: np.ndarray):
+def merge_repeated_keys(times: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Drop a key that repeats the previous one (same time, same value), e.g. where two periods meet.
 
     Two keys at one time with different values are kept: a jump.
@@ -174,7 +183,7 @@ def _non_negative(args: Mapping[str, float], name: str) -> float:
     return value
 
 
-def _listing(names) -> str:
+def _listing(names: Sequence[str]) -> str:
     return ", ".join(f"'{n}'" for n in names) if names else "no arguments"
 
 
@@ -210,10 +219,10 @@ def periodic_timing(args: Arguments, template_length: float) -> tuple[int, float
     for name in PERIODIC_ARGUMENTS:
         if args.is_given(name) and name in args:
             known[name] = _periodic_value(args, name)
-    if "period" in known and "frequency" in known:
-        if not math.isclose(known["period"], 1000.0 / known["frequency"], rel_tol=1e-9):
-            raise ArgumentProblem(f"period={known['period']:g} and frequency={known['frequency']:g} disagree "
-                                  f"(frequency={known['frequency']:g} means period={1000.0 / known['frequency']:g})")
+    if ("period" in known and "frequency" in known
+            and not math.isclose(known["period"], 1000.0 / known["frequency"], rel_tol=1e-9)):
+        raise ArgumentProblem(f"period={known['period']:g} and frequency={known['frequency']:g} disagree "
+                              f"(frequency={known['frequency']:g} means period={1000.0 / known['frequency']:g})")
     quantities = _quantities(known)
     if len(quantities) == 3 and not math.isclose(quantities["count"] * quantities["period"], quantities["end"],
                                                  rel_tol=1e-9):
@@ -253,7 +262,7 @@ def _periodic_value(args: Arguments, name: str) -> float:
 
 
 def _quantities(known: dict[str, float]) -> dict[str, float]:
-    out = {}
+    out: dict[str, float] = {}
     if "count" in known:
         out["count"] = known["count"]
     if "period" in known:
@@ -266,7 +275,8 @@ def _quantities(known: dict[str, float]) -> dict[str, float]:
 
 
 @register_procedure("periodic", arguments=PERIODIC_ARGUMENTS)
-def periodic(times, values, span, args):
+def periodic(times: np.ndarray, values: np.ndarray, span: tuple[float, float],
+             args: Arguments) -> tuple[np.ndarray, np.ndarray]:
     """The template repeated ``count`` times, one repetition per ``period`` (§2.3)."""
     count, period = periodic_timing(args, span[1] - span[0])
     one = stretch(times, span, 0.0, period)
@@ -279,7 +289,8 @@ def periodic(times, values, span, args):
 # ---------------------------------------------------------------------------
 
 @register_procedure("once", arguments=("duration",))
-def once(times, values, span, args):
+def once(times: np.ndarray, values: np.ndarray, span: tuple[float, float],
+         args: Arguments) -> tuple[np.ndarray, np.ndarray]:
     """The template once, stretched to ``duration`` (or as written when there is none)."""
     duration = _positive(args, "duration") if "duration" in args else span[1] - span[0]
     return stretch(times, span, 0.0, duration), values
@@ -291,7 +302,8 @@ def once(times, values, span, args):
 
 @register_procedure("attack-hold-release", arguments=("onset", "apex", "offset"),
                     required=("onset", "apex", "offset"), accepts_levels=True)
-def attack_hold_release(times, values, span, args):
+def attack_hold_release(times: np.ndarray, values: np.ndarray, span: tuple[float, float],
+                        args: Arguments) -> tuple[np.ndarray, np.ndarray]:
     """Onset, apex and offset phases of given durations.
 
     A level (``brow_raise = 1``) becomes 0 → level over ``onset``, level for
@@ -308,7 +320,8 @@ def attack_hold_release(times, values, span, args):
     peaks = np.flatnonzero(magnitude == magnitude.max())
     first, last = int(peaks[0]), int(peaks[-1])
     phases = ((0, first, 0.0, onset), (first, last, onset, apex), (last, times.size - 1, onset + apex, offset))
-    out_t, out_v = [], []
+    out_t: list[np.ndarray] = []
+    out_v: list[np.ndarray] = []
     for i, j, start, duration in phases:
         segment = times[i:j + 1]
         out_t.append(stretch(segment, (segment[0], segment[-1]), start, duration))

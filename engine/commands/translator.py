@@ -20,6 +20,8 @@ The paper's worked example, to the digit:
 from __future__ import annotations
 
 import difflib
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -29,12 +31,15 @@ from engine.commands.library_format import AMPLITUDE, START, CommandDefinition
 from engine.commands.procedures import ArgumentProblem, Arguments, expand
 from engine.errors import CommandError
 
+if TYPE_CHECKING:
+    from engine.model.model import Model
+
 SIGNIFICANT_DIGITS = 12
 """Translated times and values are rounded to this many significant digits, so that
 ``1000 + 333·0.5`` is exactly ``1166.5`` and ``0.15·60 %`` exactly ``0.09``."""
 
 
-def translate(commands, library: Library, model) -> list[Activation]:
+def translate(commands: Iterable[HighLevelCommand | Activation], library: Library, model: Model) -> list[Activation]:
     """Low-level activations for a list of high-level commands (and pass-through activations).
 
     ``model`` decides which parameter a library line drives and must have every
@@ -51,7 +56,7 @@ def translate(commands, library: Library, model) -> list[Activation]:
     return out
 
 
-def translate_command(command: HighLevelCommand, library: Library, model) -> list[Activation]:
+def translate_command(command: HighLevelCommand, library: Library, model: Model) -> list[Activation]:
     """The activations one high-level command expands to."""
     if command.name not in library:
         raise command.error(f"unknown command <{command.name}>{_closest(command.name, library.names())}")
@@ -64,8 +69,8 @@ def translate_command(command: HighLevelCommand, library: Library, model) -> lis
         raise command.error(f"<{command.name}>: {exc}") from None
     scale = args[AMPLITUDE] / 100.0
     source = f"{command.file}:{command.line}" if command.line is not None else command.file
-    activations = []
-    for curve, parameter, (times, values) in zip(definition.curves, parameters, laid_out):
+    activations: list[Activation] = []
+    for curve, parameter, (times, values) in zip(definition.curves, parameters, laid_out, strict=True):
         factor = scale * (args[curve.scale] if curve.scale else 1.0)
         activations.append(Activation(parameter, _tidy(times + args[START]), _tidy(values * factor),
                                       definition.interpolation, command.name, curve.name, source))
@@ -80,7 +85,7 @@ def command_arguments(command: HighLevelCommand, definition: CommandDefinition) 
             known = ", ".join(sorted(accepted))
             raise command.error(f"<{command.name}> has no argument '{name}'{_closest(name, accepted)} "
                                 f"(it accepts: {known}; see {definition.file}:{definition.line})")
-    values = {}
+    values: dict[str, float] = {}
     for name, default in accepted.items():
         if name in command.arguments:
             values[name] = command.arguments[name]
@@ -91,7 +96,7 @@ def command_arguments(command: HighLevelCommand, definition: CommandDefinition) 
     return Arguments(values, set(command.arguments), tuple(definition.optional))
 
 
-def check_activation(activation: Activation, model) -> None:
+def check_activation(activation: Activation, model: Model) -> None:
     """A low-level activation names a parameter of the model."""
     if activation.parameter not in model.parameters:
         raise CommandError(f"<activate> names parameter '{activation.parameter}', which the model "
@@ -103,7 +108,7 @@ def _tidy(x: np.ndarray) -> np.ndarray:
     return np.array([float(f"{v:.{SIGNIFICANT_DIGITS}g}") for v in np.asarray(x, dtype=float)]) + 0.0
 
 
-def _closest(name: str, known) -> str:
+def _closest(name: str, known: Iterable[str]) -> str:
     close = difflib.get_close_matches(name, list(known), n=1)
     return f" (did you mean '{close[0]}'?)" if close else ""
 

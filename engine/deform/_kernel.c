@@ -490,7 +490,8 @@ Plan_deform(Plan *self, PyObject *args)
         goto done;
     }
     if (out.itemsize != 8 || strcmp(of, "d") || out.len != 3 * N * 8) {
-        PyErr_Format(PyExc_ValueError, "out: expected %zd × 3 float64", N);
+        /* the format string must be ASCII; a %s argument may be UTF-8 */
+        PyErr_Format(PyExc_ValueError, "out: expected %zd %s 3 float64", N, "×");
         goto done;
     }
     /* T_k, T'_k, and their deltas from I: four matrices per parameter */

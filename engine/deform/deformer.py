@@ -33,14 +33,24 @@ give :func:`deform_reference` to rounding.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+from types import ModuleType
+from typing import TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 
 from engine.deform.transforms import is_identity
+
+if TYPE_CHECKING:
+    from engine.deform._kernel import Plan
+    from engine.model.model import Model
 
 #: The Plan interface this module builds (``KERNEL_ABI`` in ``_kernel.c``).
 KERNEL_ABI = 1
 
 #: The compiled kernel module ``engine.deform._kernel``, or None (numpy path only).
+compiled: ModuleType | None
 try:
     from engine.deform import _kernel as compiled
 except ImportError:        # not compiled (no C compiler at install time)
@@ -98,7 +108,7 @@ class Deformer:
 
     MAX_RUNS = 64      # a leaf split into more runs than this uses index arrays instead
 
-    def __init__(self, model, kernel: bool | None = None):
+    def __init__(self, model: Model, kernel: bool | None = None) -> None:
         self.revision = model.revision
         tree = model.parameters
         self.names = tree.names
@@ -116,16 +126,18 @@ class Deformer:
         # ---- group-1 weights, normalised per vertex (§2.2) ----
         # (vertex, column, weight) triplets, columns in group-1 order, so each
         # vertex's total adds its weights in parameter order.
-        rows, cols, vals = [], [], []
+        row_parts: list[np.ndarray] = []
+        col_parts: list[np.ndarray] = []
+        val_parts: list[np.ndarray] = []
         for col, k in enumerate(group1):
             region = model.regions[self.names[k]]
             keep = region.weights > 0
-            rows.append(region.indices[keep])
-            cols.append(np.full(int(keep.sum()), col, dtype=np.int64))
-            vals.append(region.weights[keep])
-        rows = np.concatenate(rows) if rows else np.zeros(0, dtype=np.int64)
-        cols = np.concatenate(cols) if cols else np.zeros(0, dtype=np.int64)
-        vals = np.concatenate(vals) if vals else np.zeros(0)
+            row_parts.append(region.indices[keep])
+            col_parts.append(np.full(int(keep.sum()), col, dtype=np.int64))
+            val_parts.append(region.weights[keep])
+        rows = np.concatenate(row_parts) if row_parts else np.zeros(0, dtype=np.int64)
+        cols = np.concatenate(col_parts) if col_parts else np.zeros(0, dtype=np.int64)
+        vals = np.concatenate(val_parts) if val_parts else np.zeros(0)
         nnz_per_row = np.bincount(rows, minlength=n)
         total = np.bincount(rows, weights=vals, minlength=n)
         vals = vals / total[rows]     # divide (not 1/total: subnormal totals overflow)
@@ -171,12 +183,13 @@ class Deformer:
             raise RuntimeError("the compiled deformation kernel engine.deform._kernel is not built "
                                "(pip install -e . needs a C compiler and the Python headers)")
         self.kernel = bool(kernel)
-        self._plan = self._build_plan(model, band, cls, signature, member) if self.kernel else None
+        self._plan: Plan | None = self._build_plan(model, band, cls, signature, member) if self.kernel else None
         if not self.kernel:
             self._build_numpy(model, band, cls)
 
     # ------------------------------------------------------------------
-    def _build_plan(self, model, band, cls, signature, member):
+    def _build_plan(self, model: Model, band: tuple[np.ndarray, np.ndarray, np.ndarray], cls: np.ndarray,
+                    signature: np.ndarray, member: np.ndarray) -> Plan:
         """The compiled kernel's static structure (layout in ``engine/deform/_kernel.c``).
 
         Segments are the runs of the internal order with one group-1 class and one
@@ -191,8 +204,11 @@ class Deformer:
         leaf_params = np.asarray(self._leaf_params, dtype=np.int64)
         params = self.params
         kind = np.array([0 if p.kind == "rotation" else 2 if p.field else 1 for p in params], dtype=np.int64)
-        vec = (lambda attr: np.ascontiguousarray(np.array([getattr(p, attr) for p in params], dtype=float)
-                                                 .reshape(len(params), 3)))
+
+        def vec(attr: str) -> np.ndarray:
+            return np.ascontiguousarray(np.array([getattr(p, attr) for p in params], dtype=float)
+                                        .reshape(len(params), 3))
+
         key = np.stack([cls[perm], signature[perm]], axis=1)
         starts = np.flatnonzero(np.r_[True, (key[1:] != key[:-1]).any(axis=1)]) if n else np.zeros(0, int)
         stops = np.r_[starts[1:], n].astype(int) if n else np.zeros(0, int)
@@ -249,6 +265,7 @@ class Deformer:
         segments = np.stack([starts, stops, carry, seg_first, n_band, seg_first + n_band, n_leaf], axis=1)
         entries = np.stack([entry_param, offset], axis=1)
         i64 = np.int64
+        assert compiled is not None        # __init__ builds a plan only when the kernel imported
         return compiled.Plan(
             kind=kind,
             parent=np.asarray(self.parent_index, dtype=i64),
@@ -263,7 +280,7 @@ class Deformer:
             data=data,
         )
 
-    def _build_numpy(self, model, band, cls):
+    def _build_numpy(self, model: Model, band: tuple[np.ndarray, np.ndarray, np.ndarray], cls: np.ndarray) -> None:
         """Blocks, blended band and leaf runs of the numpy path."""
         n, perm, inv, group1 = self.n_vertices, self.perm, self.inverse, self.group1
         leaves = self._leaf_params
@@ -271,14 +288,15 @@ class Deformer:
         self.rest4[:, :3] = model.vertices[perm]
 
         bounds = np.searchsorted(cls[perm], np.arange(len(group1) + 3))
-        self.blocks = []
+        self.blocks: list[tuple[int, slice]] = []
         for col, k in enumerate(group1):
             s = slice(int(bounds[col]), int(bounds[col + 1]))
             if s.stop > s.start:
                 self.blocks.append((k, s))
         free = slice(int(bounds[len(group1)]), int(bounds[len(group1) + 1]))
-        self.free = free if free.stop > free.start else None
+        self.free: slice | None = free if free.stop > free.start else None
         blend = slice(int(bounds[len(group1) + 1]), n)
+        self.blend: tuple[slice, list[int], np.ndarray] | None
         if blend.stop > blend.start:
             band_rows, band_cols, band_vals = band
             used = np.unique(band_cols)                            # group-1 columns the band uses
@@ -290,7 +308,9 @@ class Deformer:
             self.blend = None
 
         # ---- leaves: runs in the internal order, cached rest points and weights ----
-        self.leaves = []
+        # (parameter, where: contiguous (rows, part) runs or an index array, weights, rest points, field)
+        self.leaves: list[tuple[int, list[tuple[slice, slice]] | np.ndarray, np.ndarray, np.ndarray,
+                                np.ndarray | None]] = []
         for k in leaves:
             region = model.regions[self.names[k]]
             idx = inv[region.indices]
@@ -300,9 +320,10 @@ class Deformer:
             breaks = np.flatnonzero(np.diff(idx) != 1) + 1
             starts = np.concatenate([[0], breaks])
             stops = np.concatenate([breaks, [len(idx)]])
+            where: list[tuple[slice, slice]] | np.ndarray
             if len(starts) <= self.MAX_RUNS:
                 where = [(slice(int(idx[a]), int(idx[b - 1]) + 1), slice(int(a), int(b)))
-                         for a, b in zip(starts, stops)]
+                         for a, b in zip(starts, stops, strict=True)]
             else:
                 where = idx
             rest4 = np.ascontiguousarray(self.rest4[idx])
@@ -332,16 +353,16 @@ class Deformer:
             local[i, 3, :3] = values[i] * direction
         return local
 
-    def transforms(self, values: np.ndarray):
+    def transforms(self, values: npt.ArrayLike) -> tuple[np.ndarray, list[np.ndarray]]:
         """Local ``T_k`` and propagated ``T'_k`` for all parameters (4×4 each)."""
         local = self.local_transforms(np.asarray(values, dtype=float))
-        world = [None] * len(local)
+        world = list(local)               # every entry is replaced below, parents first
         for k in self.topological:
             parent = self.parent_index[k]
             world[k] = local[k] if parent < 0 else local[k] @ world[parent]
         return local, world
 
-    def deform(self, values) -> np.ndarray:
+    def deform(self, values: npt.ArrayLike) -> np.ndarray:
         """Deformed vertex positions (N, 3) in the model's vertex order, mm."""
         values = np.asarray(values, dtype=float)
         if values.shape != (len(self.params),):
@@ -401,7 +422,7 @@ class Deformer:
         return _floats(_rows(out)[self.inverse])
 
 
-def optimise_vertex_order(model):
+def optimise_vertex_order(model: Model) -> tuple[Model, np.ndarray]:
     """A copy of ``model`` whose vertex order is the deformer's internal order, and that order.
 
     Deforming the copy skips the final reordering of every frame (about a
@@ -421,7 +442,7 @@ def _floats(rows: np.ndarray) -> np.ndarray:
     return rows.view(np.float64).reshape(-1, 3)
 
 
-def deform_reference(model, values=None) -> np.ndarray:
+def deform_reference(model: Model, values: Mapping[str, float] | None = None) -> np.ndarray:
     """The same deformation written literally, one vertex at a time.
 
     Slow (pure Python loops over vertices); used by the tests to check the
@@ -429,7 +450,7 @@ def deform_reference(model, values=None) -> np.ndarray:
     the formulation in ``docs/deformation.md``.
     """
     tree = model.parameters
-    vals = dict(zip(tree.names, model.values_array(values)))
+    vals = dict(zip(tree.names, model.values_array(values), strict=True))
     local = {n: tree[n].transform(vals[n]) for n in tree.names}
     world: dict[str, np.ndarray] = {}
     for n in tree.topological():
@@ -439,7 +460,7 @@ def deform_reference(model, values=None) -> np.ndarray:
     group1 = [n for n in tree.names if not tree.is_leaf(n)]
     leaves = [n for n in tree.names if tree.is_leaf(n)]
     dense = {n: model.regions[n].dense(n_vertices) for n in tree.names}
-    fields = {}
+    fields: dict[str, np.ndarray] = {}
     for n in leaves:
         r = model.regions[n]
         if r.displacements is not None:

@@ -15,12 +15,13 @@ propagation ``T'_c = T_c · T_p``). Lengths are millimetres, angles degrees.
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 IDENTITY = np.eye(4)
 IDENTITY.setflags(write=False)
 
 
-def rotation_about_axis(axis, pivot, degrees: float) -> np.ndarray:
+def rotation_about_axis(axis: npt.ArrayLike, pivot: npt.ArrayLike, degrees: float) -> np.ndarray:
     """Rotation by ``degrees`` about the line through ``pivot`` along ``axis``.
 
     Positive angles turn counter-clockwise when looking from the tip of
@@ -48,14 +49,14 @@ def rotation_about_axis(axis, pivot, degrees: float) -> np.ndarray:
     return T
 
 
-def translation(displacement) -> np.ndarray:
+def translation(displacement: npt.ArrayLike) -> np.ndarray:
     """Translation by ``displacement`` (mm) as a row-convention 4×4 matrix."""
     T = np.eye(4)
     T[3, :3] = np.asarray(displacement, dtype=float)
     return T
 
 
-def apply(T: np.ndarray, points) -> np.ndarray:
+def apply(T: np.ndarray, points: npt.ArrayLike) -> np.ndarray:
     """Transform an (N, 3) array of points: ``[p, 1] · T`` for every row."""
     P = np.asarray(points, dtype=float)
     return P @ T[:3, :3] + T[3, :3]

@@ -7,6 +7,7 @@
 from __future__ import annotations
 
 import difflib
+from collections.abc import Sequence
 
 from engine.errors import UserError
 
@@ -15,7 +16,7 @@ class FittingError(UserError):
     """A pose, region or option that cannot be fitted."""
 
 
-def suggest_name(name, known) -> str:
+def suggest_name(name: str, known: Sequence[str]) -> str:
     """`` (did you mean 'X'?)`` with the closest of ``known``, else `` (known: …)``: the end of a message."""
     close = difflib.get_close_matches(name, list(known), n=1)
     return f" (did you mean '{close[0]}'?)" if close else f" (known: {', '.join(known)})"

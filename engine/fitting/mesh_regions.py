@@ -6,13 +6,20 @@
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
+
 import numpy as np
+import numpy.typing as npt
 from scipy import sparse
 
 from engine.fitting.errors import FittingError, suggest_name
 
+if TYPE_CHECKING:
+    from engine.model.model import Model
 
-def mesh_edges(faces) -> np.ndarray:
+
+def mesh_edges(faces: npt.ArrayLike) -> np.ndarray:
     """The unique edges (E, 2), smaller index first, of a flat polygon cell array."""
     from engine.model.cells import cell_sizes, cell_starts
 
@@ -29,7 +36,8 @@ def mesh_edges(faces) -> np.ndarray:
     return np.unique(e[e[:, 0] != e[:, 1]], axis=0)
 
 
-def vertices_near(seed, allowed, edges, n, rings):
+def vertices_near(seed: np.ndarray, allowed: np.ndarray, edges: npt.ArrayLike | None, n: int,
+                  rings: int) -> np.ndarray:
     """``seed`` and the vertices of ``allowed`` within ``rings`` edges of it (walking inside ``allowed``)."""
     if rings == 0 or edges is None:
         return seed
@@ -45,7 +53,7 @@ def vertices_near(seed, allowed, edges, n, rings):
     return np.flatnonzero(reached)
 
 
-def _checked_edges(edges, n):
+def _checked_edges(edges: npt.ArrayLike, n: int) -> np.ndarray:
     e = np.asarray(edges)
     if e.ndim != 2 or e.shape[1] != 2 or (len(e) and (not np.issubdtype(e.dtype, np.integer)
                                                       or e.min() < 0 or e.max() >= n)):
@@ -53,7 +61,7 @@ def _checked_edges(edges, n):
     return e.astype(np.int64)
 
 
-def edge_incidence(edges, allowed, n):
+def edge_incidence(edges: npt.ArrayLike | None, allowed: np.ndarray, n: int) -> sparse.csr_matrix:
     """Signed edge–vertex incidence matrix over the region's vertices (edges with both ends inside)."""
     if edges is None:
         return sparse.csr_matrix((0, len(allowed)))
@@ -68,7 +76,7 @@ def edge_incidence(edges, allowed, n):
     return sparse.csr_matrix((vals, (rows, e.ravel())), shape=(m, len(allowed)))
 
 
-def region_indices(region, n) -> np.ndarray:
+def region_indices(region: npt.ArrayLike | None, n: int) -> np.ndarray:
     """Sorted vertex indices of a region given as indices or an (n,) boolean mask; all vertices for None."""
     if region is None:
         return np.arange(n)
@@ -87,7 +95,7 @@ def region_indices(region, n) -> np.ndarray:
     return r
 
 
-def resolve_region(model, region):
+def resolve_region(model: Model, region: str | Sequence[str] | npt.ArrayLike | None) -> npt.ArrayLike | None:
     """Part name(s) to vertex indices; anything else is checked by :func:`region_indices`."""
     if isinstance(region, str):
         region = [region]

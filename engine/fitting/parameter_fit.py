@@ -9,8 +9,11 @@ method and the measured residuals are in ``docs/fitting.md``. Lengths are mm.
 from __future__ import annotations
 
 import time
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any, TypedDict
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.fitting.errors import FittingError
 from engine.fitting.mesh_regions import edge_incidence, mesh_edges, region_indices, resolve_region, vertices_near
@@ -19,6 +22,9 @@ from engine.fitting.solvers import fit_motion, initial_direction, initial_rotati
 from engine.model.model import InfluenceRegion
 from engine.model.parameters import ROTATION, TRANSLATION, Parameter
 
+if TYPE_CHECKING:
+    from engine.model.model import Model
+
 FIT_KINDS = ("rotation", "translation", "field")
 DEFAULT_SMOOTHNESS = 0.01
 DEFAULT_CORE = 0.9
@@ -26,9 +32,19 @@ FADE_RINGS = 3            # with smoothness, weights may fade out this many edge
 MOVING_MM = 1e-9          # a vertex moved by less than this does not move (as in reference-poses.h5)
 
 
-def fit_parameter(model, displacements, kind: str = "rotation", *, name: str = "fitted",
-                  parent: str | None = None, region=None, smoothness: float = DEFAULT_SMOOTHNESS,
-                  **options) -> FitResult:
+class _SharedFields(TypedDict):
+    """The new parameter's fields that do not depend on the kind of fit."""
+
+    parent: str | None
+    minimum: float
+    maximum: float
+    default: float
+    description: str
+
+
+def fit_parameter(model: Model, displacements: npt.ArrayLike, kind: str = "rotation", *, name: str = "fitted",
+                  parent: str | None = None, region: str | Sequence[str] | npt.ArrayLike | None = None,
+                  smoothness: float = DEFAULT_SMOOTHNESS, **options: Any) -> FitResult:
     """Fit one new leaf parameter of ``model`` to a pose; the model is not changed.
 
     ``displacements``: (N, 3) mm per vertex of the rest mesh (see
@@ -46,7 +62,8 @@ def fit_parameter(model, displacements, kind: str = "rotation", *, name: str = "
                     smoothness=smoothness, name=name, parent=parent, **options)
 
 
-def fit_pose(vertices, displacements, kind: str = "rotation", *, edges=None, region=None,
+def fit_pose(vertices: npt.ArrayLike, displacements: npt.ArrayLike, kind: str = "rotation", *,
+             edges: npt.ArrayLike | None = None, region: npt.ArrayLike | None = None,
              smoothness: float = DEFAULT_SMOOTHNESS, core: float = DEFAULT_CORE, name: str = "fitted",
              parent: str | None = None, value_range: tuple[float, float] = (0.0, 1.0),
              min_weight: float = 1e-4, max_iterations: int = 50, description: str = "") -> FitResult:
@@ -77,8 +94,8 @@ def fit_pose(vertices, displacements, kind: str = "rotation", *, edges=None, reg
         raise FittingError(f"the pose moves none of the {len(allowed)} vertices of the region")
     if kind == "rotation" and moving.sum() < 3:
         raise FittingError("a rotation needs at least 3 moving vertices in the region")
-    common = dict(parent=parent, minimum=value_range[0], maximum=value_range[1], default=0.0,
-                  description=description)
+    common: _SharedFields = dict(parent=parent, minimum=value_range[0], maximum=value_range[1], default=0.0,
+                                 description=description)
 
     if kind == "field":          # a blendshape: the pose itself, exact inside the region
         idx = allowed[moving]
@@ -122,7 +139,7 @@ def fit_pose(vertices, displacements, kind: str = "rotation", *, edges=None, reg
                      time.perf_counter() - started)
 
 
-def _points(values, what) -> np.ndarray:
+def _points(values: npt.ArrayLike, what: str) -> np.ndarray:
     try:
         a = np.asarray(values, dtype=float)
     except (TypeError, ValueError):
@@ -136,5 +153,5 @@ def _points(values, what) -> np.ndarray:
     return a
 
 
-def _is_number(value) -> bool:
+def _is_number(value: object) -> bool:
     return isinstance(value, (int, float, np.number)) and bool(np.isfinite(value))

@@ -5,12 +5,14 @@ Each is a dense (N, 3) displacement of the default head's rest vertices, mm.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 
 from engine.fitting.errors import FittingError, suggest_name
 
 
-def reference_pose_names(path=None) -> list[str]:
+def reference_pose_names(path: str | Path | None = None) -> list[str]:
     """Names of the reference poses, ``"<group>/<pose>"`` (``arkit/jawOpen``, ``expression_units/...``)."""
     import h5py
 
@@ -20,7 +22,7 @@ def reference_pose_names(path=None) -> list[str]:
         return [f"{g}/{n}" for g in ("arkit", "expression_units") if g in f for n in f[g]]
 
 
-def reference_pose(name: str, path=None) -> np.ndarray:
+def reference_pose(name: str, path: str | Path | None = None) -> np.ndarray:
     """One reference pose of the default head as dense (N, 3) displacements, mm.
 
     ``name`` is ``"arkit/jawOpen"`` or, when unambiguous, just ``"jawOpen"``.

@@ -10,7 +10,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from engine.fitting.errors import FittingError
-from engine.model.model import InfluenceRegion
+from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import ROTATION, Parameter
 
 
@@ -71,7 +71,7 @@ class FitResult:
         """Share of the pose's squared displacement (whole mesh) that the parameter reproduces."""
         return 1.0 - float(np.sum(self.residual ** 2) / np.sum(self.target ** 2))
 
-    def apply(self, model) -> None:
+    def apply(self, model: Model) -> None:
         """Add the parameter and its region to ``model`` (a new leaf; the model announces the edit).
 
         Refuses a parent that is itself a leaf with an influence region: a
@@ -103,9 +103,9 @@ class FitResult:
                 f"{self.explained:.1%} of the pose")
 
 
-def _rms(a) -> float:
+def _rms(a: np.ndarray) -> float:
     return float(np.sqrt(np.mean(np.sum(a ** 2, axis=1)))) if len(a) else 0.0
 
 
-def _fmt(v, digits) -> str:
+def _fmt(v: np.ndarray, digits: int) -> str:
     return ", ".join(f"{x:.{digits}f}" for x in v)

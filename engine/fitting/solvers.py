@@ -18,13 +18,24 @@ are held at weight 1: the motion is that of the part that moves fully.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Protocol
+
 import numpy as np
+import numpy.typing as npt
 from scipy import sparse
 from scipy.optimize import least_squares
 from scipy.sparse.linalg import spsolve
 
 
-def fit_motion(motion, x0, D, B, mu, pin, max_iterations):
+class Motion(Protocol):
+    """``motion(x, rows)``: the (n, 3) displacement at weight 1 of the vertices ``rows`` (default all), mm."""
+
+    def __call__(self, x: np.ndarray, rows: slice | np.ndarray = ..., /) -> np.ndarray: ...
+
+
+def fit_motion(motion: Motion, x0: np.ndarray, D: np.ndarray, B: sparse.csr_matrix, mu: float, pin: np.ndarray,
+               max_iterations: int) -> tuple[np.ndarray, np.ndarray, int]:
     """Fit the parameters ``x`` of ``motion(x)`` (n, 3: each vertex's displacement at weight 1) and the weights.
 
     First the motion alone, each vertex taking its best weight in closed
@@ -35,28 +46,29 @@ def fit_motion(motion, x0, D, B, mu, pin, max_iterations):
     """
     lm = dict(method="lm", xtol=1e-10, ftol=1e-10, gtol=1e-10, max_nfev=1000)
 
-    def residual(x):
+    def residual(x: np.ndarray) -> np.ndarray:
         R = motion(x)
         return (D - _best_weights(R, D, pin)[:, None] * R).ravel()
 
     x = least_squares(residual, x0, **lm).x
     if mu == 0 or B.shape[0] == 0:
         return x, _best_weights(motion(x), D, pin), 0
-    cost_before, it = np.inf, 0
-    for it in range(1, max_iterations + 1):
+    cost_before, rounds = np.inf, 0
+    while rounds < max_iterations:
+        rounds += 1
         w = _weight_step(motion(x), D, B, mu, pin)
         use = np.flatnonzero(w > 0)
         if 3 * len(use) < len(x):               # too few weighted vertices to move the transform
             break
-        x = least_squares(lambda x: (D[use] - w[use, None] * motion(x, use)).ravel(), x, **lm).x
+        x = least_squares(lambda x, use=use, w=w: (D[use] - w[use, None] * motion(x, use)).ravel(), x, **lm).x
         cost = _cost(D, w[:, None] * motion(x), w, B, mu)
         if cost_before - cost <= 1e-4 * cost:       # the rounds gain < 1 % in all (docs/fitting.md)
             break
         cost_before = cost
-    return x, _weight_step(motion(x), D, B, mu, pin), it
+    return x, _weight_step(motion(x), D, B, mu, pin), rounds
 
 
-def initial_rotation(P, D):
+def initial_rotation(P: np.ndarray, D: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Kabsch on the vertices moving at least half the most, taken as rigid with weight 1."""
     mag = np.linalg.norm(D, axis=1)
     strong = np.flatnonzero(mag >= 0.5 * mag.max())
@@ -81,7 +93,7 @@ def initial_rotation(P, D):
     return omega, pivot
 
 
-def initial_direction(D):
+def initial_direction(D: np.ndarray) -> np.ndarray:
     """The direction u maximising Σ max(0, D_i · u)², scaled to the largest projection.
 
     The top principal axis of the vertices moving along it, by a fixed-point
@@ -101,7 +113,8 @@ def initial_direction(D):
     return u * (D @ u).max()
 
 
-def rotation_motion(P, omega, pivot):
+def rotation_motion(P: np.ndarray, omega: np.ndarray, pivot: np.ndarray,
+                    ) -> tuple[np.ndarray, Motion, Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]]:
     """Five unknowns around a rotation: ``ω`` (radians) and the pivot's shift across the axis.
 
     Sliding the pivot along the axis changes nothing, so it moves only in the
@@ -115,16 +128,16 @@ def rotation_motion(P, omega, pivot):
     size = float(np.sqrt(((P - P.mean(axis=0)) ** 2).sum(axis=1).mean())) or 1.0
     across = np.stack([e1, np.cross(u, e1)]) * size
 
-    def unpack(x):
+    def unpack(x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         return x[:3], pivot + x[3:] @ across
 
-    def motion(x, rows=slice(None)):
+    def motion(x: np.ndarray, rows: slice | np.ndarray = slice(None)) -> np.ndarray:
         return _chords(P[rows], *unpack(x))
 
     return np.concatenate([omega, [0.0, 0.0]]), motion, unpack
 
 
-def _best_weights(R, D, pin):
+def _best_weights(R: np.ndarray, D: np.ndarray, pin: np.ndarray) -> np.ndarray:
     """Each vertex's best weight in [0, 1] for the motion ``R`` (closed form), 1 where ``pin``."""
     h = np.einsum("ij,ij->i", R, R)
     g = np.einsum("ij,ij->i", R, D)
@@ -133,7 +146,7 @@ def _best_weights(R, D, pin):
     return w
 
 
-def _weight_step(R, D, B, mu, pin):
+def _weight_step(R: np.ndarray, D: np.ndarray, B: sparse.csr_matrix, mu: float, pin: np.ndarray) -> np.ndarray:
     """Weights in [0, 1], 1 where ``pin``, minimising Σ |D_i − w_i R_i|² + μ |B w|² (a sparse box QP)."""
     h = np.einsum("ij,ij->i", R, R)
     g = np.einsum("ij,ij->i", R, D)
@@ -142,7 +155,7 @@ def _weight_step(R, D, B, mu, pin):
     return _box_qp(H, g, pin)
 
 
-def _box_qp(H, g, pin, max_iterations: int = 100):
+def _box_qp(H: sparse.csr_matrix, g: np.ndarray, pin: np.ndarray, max_iterations: int = 100) -> np.ndarray:
     """argmin ½ wᵀHw − gᵀw over 0 ≤ w ≤ 1 with w = 1 where ``pin``: primal-dual active set.
 
     H = diagonal + μ·Laplacian is an M-matrix, for which the method ends in
@@ -157,7 +170,8 @@ def _box_qp(H, g, pin, max_iterations: int = 100):
     for _ in range(max_iterations):
         # ties (a still vertex at 0 with nothing pulling it up) go to the bounds: smaller solves
         new_lower, new_upper = (lam + c * w < 0) & ~pin, (lam + c * (w - 1.0) > 0) | pin
-        if lower is not None and np.array_equal(new_lower, lower) and np.array_equal(new_upper, upper):
+        if (lower is not None and upper is not None
+                and np.array_equal(new_lower, lower) and np.array_equal(new_upper, upper)):
             break
         lower, upper = new_lower, new_upper
         free = ~(lower | upper)
@@ -170,16 +184,16 @@ def _box_qp(H, g, pin, max_iterations: int = 100):
     return np.clip(w, 0.0, 1.0)
 
 
-def _cost(D, fitted, w, B, mu):
+def _cost(D: np.ndarray, fitted: np.ndarray, w: np.ndarray, B: sparse.csr_matrix, mu: float) -> float:
     return float(np.sum((D - fitted) ** 2) + mu * np.sum((B @ w) ** 2))
 
 
-def _chords(P, omega, pivot):
+def _chords(P: np.ndarray, omega: np.ndarray, pivot: np.ndarray) -> np.ndarray:
     """``P · T − P`` for the rotation by the vector ``ω`` (radians) about an axis through ``pivot``."""
     return (P - pivot) @ (_rotation_matrix(omega).T - np.eye(3))
 
 
-def _rotation_matrix(omega):
+def _rotation_matrix(omega: npt.ArrayLike) -> np.ndarray:
     """Rodrigues: the rotation by |ω| radians about ω (column convention)."""
     theta = float(np.linalg.norm(omega))
     if theta == 0.0:
@@ -189,7 +203,7 @@ def _rotation_matrix(omega):
     return np.eye(3) + np.sin(theta) * K + (1.0 - np.cos(theta)) * (K @ K)
 
 
-def _rotation_vector(R):
+def _rotation_vector(R: np.ndarray) -> np.ndarray:
     """The rotation vector (axis × angle, radians) of a rotation matrix, also near 180°."""
     from scipy.spatial.transform import Rotation
 

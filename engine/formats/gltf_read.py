@@ -16,11 +16,13 @@ from __future__ import annotations
 import base64
 import json
 import struct
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NoReturn
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import UserError
 
@@ -36,7 +38,7 @@ class GltfFileError(UserError):
     """A glTF file is malformed, or is not one this module can read."""
 
 
-def _quaternion_matrix(q) -> np.ndarray:
+def _quaternion_matrix(q: npt.ArrayLike) -> np.ndarray:
     """Rotation matrix of a unit quaternion (x, y, z, w)."""
     x, y, z, w = np.asarray(q, dtype=float) / np.linalg.norm(q)
     return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
@@ -102,10 +104,12 @@ class GltfMesh:
             if p.model_vertex is None:
                 raise UserError(f"primitive '{p.name}' has no {MODEL_VERTEX} attribute")
             P = p.positions.astype(np.float64)
-            for weight, target in zip(w, p.targets):
+            for weight, target in zip(w, p.targets, strict=True):
                 if weight:
                     P = P + weight * target["POSITION"]
             if skinning is not None:
+                if p.joints is None or p.weights is None:
+                    raise UserError(f"primitive '{p.name}' has no JOINTS_0 and WEIGHTS_0 to skin with")
                 blended = np.einsum("vk,vkij->vij", p.weights, skinning[p.joints])
                 P = np.einsum("vij,vj->vi", blended[:, :3, :3], P) + blended[:, :3, 3]
             out[p.model_vertex] = P
@@ -168,7 +172,7 @@ def read_gltf(path: str | Path) -> GltfMesh:
 
 
 def _split_glb(blob: bytes, path: Path) -> tuple[dict, dict[int, bytes]]:
-    def fail(what):
+    def fail(what: str) -> NoReturn:
         raise GltfFileError(f"not a valid binary glTF: {what}", file=path)
 
     if len(blob) < 20:
@@ -178,7 +182,8 @@ def _split_glb(blob: bytes, path: Path) -> tuple[dict, dict[int, bytes]]:
         fail(f"magic {magic:#x}, container version {version} (expected glTF, 2)")
     if length != len(blob):
         fail(f"the header says {length} bytes, the file has {len(blob)}")
-    chunks, offset = [], 12
+    chunks: list[tuple[int, bytes]] = []
+    offset = 12
     while offset < length:
         if offset + 8 > length:
             fail("a chunk header runs past the end")
@@ -198,7 +203,7 @@ def _split_glb(blob: bytes, path: Path) -> tuple[dict, dict[int, bytes]]:
 
 
 def _parse(path: Path, document: dict, embedded: dict[int, bytes]) -> GltfMesh:
-    def fail(what):
+    def fail(what: str) -> NoReturn:
         raise GltfFileError(what, file=path)
 
     try:
@@ -208,7 +213,8 @@ def _parse(path: Path, document: dict, embedded: dict[int, bytes]) -> GltfMesh:
 
 
 class _Reader:
-    def __init__(self, path, document, embedded, fail):
+    def __init__(self, path: Path, document: dict, embedded: dict[int, bytes],
+                 fail: Callable[[str], NoReturn]) -> None:
         self.path, self.doc, self.fail = path, document, fail
         if not isinstance(document, dict) or str(document.get("asset", {}).get("version")) != "2.0":
             fail("not a glTF 2.0 document (asset.version must be \"2.0\")")

@@ -24,14 +24,23 @@ import contextlib
 import io
 import re
 import warnings
+from collections.abc import Iterator, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import MeshImportError, UserError
 from engine.formats.atomic import atomic_write_bytes
 from engine.model.cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
 from engine.model.model import Model
+
+if TYPE_CHECKING:
+    import pyvista as pv
+
+#: What the readers return: vertices (N, 3), flat cell array, part names, each face's part index.
+_MeshArrays = tuple[np.ndarray, np.ndarray, list[str], np.ndarray]
 
 WRITE_FORMATS = (".obj", ".ply", ".npz")
 _DEFAULT_PART = "surface"
@@ -86,7 +95,7 @@ def import_mesh(path: str | Path, scale: float | None = None, name: str | None =
         raise MeshImportError(exc.message, file=path) from None
 
 
-def _check_scale(scale) -> float:
+def _check_scale(scale: float | None) -> float:
     if scale is None:
         return 1.0
     try:
@@ -98,7 +107,7 @@ def _check_scale(scale) -> float:
     return factor
 
 
-def _read_obj(path: Path):
+def _read_obj(path: Path) -> _MeshArrays:
     """Wavefront OBJ: ``v`` and ``f`` records, ``g``/``o`` as parts; everything else ignored."""
     try:
         text = path.read_bytes().decode("utf-8", errors="replace")
@@ -166,7 +175,7 @@ def _part_slot(label: str, names: list[str], index: dict[str, int]) -> int:
     return index[label]
 
 
-def _read_with_pyvista(path: Path):
+def _read_with_pyvista(path: Path) -> _MeshArrays:
     import pyvista as pv
     from vtkmodules.vtkCommonCore import vtkObject
 
@@ -189,50 +198,55 @@ def _read_with_pyvista(path: Path):
     finally:
         vtkObject.SetGlobalWarningDisplay(shown)
 
-    pieces = list(_leaf_datasets(pv, data, None))
+    pieces = list(_leaf_datasets(data, None))
     if not pieces:
         raise MeshImportError("holds no mesh (the file is empty, damaged or not a mesh)", file=path)
-    vertex_blocks, cell_blocks, part_names, face_part = [], [], [], []
+    vertex_blocks: list[np.ndarray] = []
+    cell_blocks: list[np.ndarray] = []
+    part_names: list[str] = []
+    face_part: list[np.ndarray] = []
     part_index: dict[str, int] = {}
     offset = 0
     for label, ds in pieces:
         if isinstance(ds, (pv.ImageData, pv.RectilinearGrid)):
             raise MeshImportError(f"holds an image or grid ({type(ds).__name__}), not a polygon surface",
                                   file=path)
-        if not isinstance(ds, pv.PolyData):
-            ds = _boundary_surface(pv, ds)
-        if ds.n_points == 0:
+        surface = ds if isinstance(ds, pv.PolyData) else _boundary_surface(ds)
+        if surface.n_points == 0:
             continue
-        cells = _polys_and_strips(ds)
+        cells = _polys_and_strips(surface)
         if len(cells) == 0:
             continue
         counts = cell_sizes(cells)
         shifted = cells.copy()
         shifted[index_mask(cells, counts)] += offset
         slot = _part_slot(label if len(pieces) > 1 else _DEFAULT_PART, part_names, part_index)
-        vertex_blocks.append(np.asarray(ds.points, dtype=float))
+        vertex_blocks.append(np.asarray(surface.points, dtype=float))
         cell_blocks.append(shifted)
         face_part.append(np.full(len(counts), slot, dtype=np.int64))
-        offset += ds.n_points
+        offset += surface.n_points
     if not cell_blocks:
         return np.zeros((0, 3)), np.zeros(0, dtype=np.int64), [], np.zeros(0, dtype=np.int64)
     return (np.concatenate(vertex_blocks), np.concatenate(cell_blocks), part_names,
             np.concatenate(face_part))
 
 
-def _leaf_datasets(pv, data, label):
+def _leaf_datasets(data: pv.DataObject | None, label: str | None) -> Iterator[tuple[str, pv.DataObject]]:
     """(name, dataset) for every non-empty dataset in a possibly nested MultiBlock."""
+    import pyvista as pv
+
     if data is None:
         return
     if isinstance(data, pv.MultiBlock):
-        for key, block in zip(data.keys(), data):
-            yield from _leaf_datasets(pv, block, key or label)
+        for key, block in zip(data.keys(), data, strict=True):
+            yield from _leaf_datasets(block, key or label)
     elif data.n_points:
         yield (label or _DEFAULT_PART), data
 
 
-def _boundary_surface(pv, ds):
+def _boundary_surface(ds: pv.DataObject) -> pv.PolyData:
     """The outer surface of a volume mesh or grid, as PolyData (VTK's filter, stable across pyvista versions)."""
+    import pyvista as pv
     from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
 
     surface = vtkDataSetSurfaceFilter()
@@ -241,7 +255,7 @@ def _boundary_surface(pv, ds):
     return pv.wrap(surface.GetOutput())
 
 
-def _polys_and_strips(ds) -> np.ndarray:
+def _polys_and_strips(ds: pv.PolyData) -> np.ndarray:
     """The polygons of a PolyData as a flat cell array, triangle strips split into triangles."""
     polys = np.asarray(ds.faces, dtype=np.int64) if ds.GetNumberOfPolys() else np.zeros(0, dtype=np.int64)
     if not ds.GetNumberOfStrips():
@@ -254,7 +268,8 @@ def _polys_and_strips(ds) -> np.ndarray:
     return np.concatenate([polys, np.array(tris, dtype=np.int64).reshape(-1)])
 
 
-def _compact(vertices, faces, face_part, part_names):
+def _compact(vertices: np.ndarray, faces: np.ndarray, face_part: np.ndarray,
+             part_names: list[str]) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """Drop vertices no polygon uses (keeping order) and give every vertex the part of its first face."""
     counts = cell_sizes(faces)
     mask = index_mask(faces, counts)
@@ -301,7 +316,8 @@ def _part_names(labels: list[str]) -> list[str]:
 # Writing
 # ---------------------------------------------------------------------------
 
-def write_mesh(path: str | Path, vertices, faces, *, parts=None, vertex_part=None,
+def write_mesh(path: str | Path, vertices: npt.ArrayLike, faces: npt.ArrayLike, *,
+               parts: Sequence[str] | None = None, vertex_part: npt.ArrayLike | None = None,
                binary: bool = True, name: str | None = None) -> Path:
     """Write a polygon mesh as ``.obj``, ``.ply`` or ``.npz``, chosen by the file's extension.
 
@@ -348,17 +364,17 @@ def write_mesh(path: str | Path, vertices, faces, *, parts=None, vertex_part=Non
     return path
 
 
-def _obj_bytes(vertices, faces, parts, vertex_part, name) -> bytes:
+def _obj_bytes(vertices: np.ndarray, faces: np.ndarray, parts: Sequence[str] | None,
+               vertex_part: np.ndarray | None, name: str | None) -> bytes:
     out = io.StringIO()
     out.write("# Artificial Person mesh; units: mm\n")
     if name:
         out.write(f"o {name}\n")
     out.write("".join(f"v {x!r} {y!r} {z!r}\n" for x, y, z in vertices.tolist()))
     polygons = split_cells(faces)
-    grouped = parts is not None and vertex_part is not None
     last = None
     for poly in polygons:
-        if grouped:
+        if parts is not None and vertex_part is not None:
             part = int(vertex_part[poly[0]])
             if part != last:
                 out.write(f"g {parts[part]}\n")
@@ -367,7 +383,7 @@ def _obj_bytes(vertices, faces, parts, vertex_part, name) -> bytes:
     return out.getvalue().encode("utf-8")
 
 
-def _ply_bytes(vertices, faces, binary: bool) -> bytes:
+def _ply_bytes(vertices: np.ndarray, faces: np.ndarray, binary: bool) -> bytes:
     counts = cell_sizes(faces)
     count_type = "uchar" if not len(counts) or counts.max() <= 255 else "int"
     header = (
@@ -400,12 +416,14 @@ def _ply_bytes(vertices, faces, binary: bool) -> bytes:
     return header + vertex_bytes + buf.tobytes()
 
 
-def _npz_bytes(vertices, faces, parts, vertex_part) -> bytes:
+def _npz_bytes(vertices: np.ndarray, faces: np.ndarray, parts: Sequence[str] | None,
+               vertex_part: np.ndarray | None) -> bytes:
     arrays = {"vertices": np.ascontiguousarray(vertices, dtype=np.float64), "faces": faces,
               "triangles": cells_to_triangles(faces).astype(np.int64)}
     if parts is not None and vertex_part is not None:
         arrays["parts"] = np.array(list(parts), dtype=str)
         arrays["vertex_part"] = vertex_part
     out = io.BytesIO()
-    np.savez_compressed(out, **arrays)
+    # numpy's stub types **kwds against the allow_pickle flag; these keys are array names only
+    np.savez_compressed(out, **arrays)  # type: ignore[arg-type]
     return out.getvalue()

@@ -17,15 +17,18 @@ True
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from pathlib import Path
+from typing import Any
 
 import h5py
 import numpy as np
+import numpy.typing as npt
 from lxml import etree
 
 from engine.errors import ModelFileError, ParameterError, UserError
 from engine.formats.atomic import atomic_files
-from engine.formats.xml_io import parse_xml, validate
+from engine.formats.xml_io import parse_xml, source_line, validate
 from engine.model.landmarks import FEATURE_POINTS
 from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
@@ -60,76 +63,81 @@ def load_model(path: str | Path | None = None) -> Model:
     root = doc.getroot()
     if root.tag != "model":
         raise ModelFileError(f"not a model description: root element is <{root.tag}>, expected <model>",
-                             file=path, line=root.sourceline)
+                             file=path, line=source_line(root))
     version = _integer(root.get("version"))
     if version is not None and version > VERSION:
         raise ModelFileError(f"model format version {version} is newer than this program reads ({VERSION})",
-                             file=path, line=root.sourceline)
+                             file=path, line=source_line(root))
     validate(doc, SCHEMA_NAME, path, ModelFileError)
 
-    parts, colors = [], {}
-    for el in root.find("parts"):
+    parts: list[str] = []
+    colors: dict[str, str] = {}
+    for el in _child(root, "parts", path):
         if not isinstance(el.tag, str):
             continue
-        name = el.get("name")
+        name = _required(el, "name", path)
         if name in parts:
-            raise ModelFileError(f"part '{name}' is defined twice", file=path, line=el.sourceline)
+            raise ModelFileError(f"part '{name}' is defined twice", file=path, line=source_line(el))
         parts.append(name)
-        if el.get("color"):
-            colors[name] = el.get("color")
+        color = el.get("color")
+        if color:
+            colors[name] = color
 
     params: list[Parameter] = []
-    lines: dict[str, int] = {}
+    lines: dict[str, int | None] = {}
 
-    def read_param(el, parent):
-        name = el.get("name")
+    def read_param(el: etree._Element, parent: str | None) -> None:
+        name = _required(el, "name", path)
         if name in lines:
             raise ModelFileError(f"parameter '{name}' is defined twice (first on line {lines[name]})",
-                                 file=path, line=el.sourceline)
-        lines[name] = el.sourceline
-        kind = el.get("type")
+                                 file=path, line=source_line(el))
+        lines[name] = source_line(el)
+        kind = _required(el, "type", path)
         body = el.find(kind)
         if body is None:
             other = "translation" if kind == "rotation" else "rotation"
             raise ModelFileError(f"parameter '{name}' has type=\"{kind}\" but a <{other}> element",
-                                 file=path, line=el.sourceline)
+                                 file=path, line=source_line(el))
         desc = el.findtext("description") or ""
-        kw = dict(name=name, kind=kind, parent=parent, minimum=float(el.get("min")),
-                  maximum=float(el.get("max")), default=float(el.get("default", "0")), description=desc.strip())
+        kw: dict[str, Any] = dict(
+            name=name, kind=kind, parent=parent, minimum=float(_required(el, "min", path)),
+            maximum=float(_required(el, "max", path)), default=float(el.get("default", "0")),
+            description=desc.strip())
         if kind == "rotation":
-            kw.update(axis=_vec(body.get("axis")), pivot=_vec(body.get("pivot")),
-                      degrees_per_unit=float(body.get("degrees-per-unit")))
+            kw.update(axis=_vec(_required(body, "axis", path)), pivot=_vec(_required(body, "pivot", path)),
+                      degrees_per_unit=float(_required(body, "degrees-per-unit", path)))
         else:
             is_field = body.get("field", "false").strip() in ("true", "1")
             if not is_field and body.get("direction") is None:
                 raise ModelFileError(f"translation '{name}' needs a direction or field=\"true\"",
-                                     file=path, line=body.sourceline)
+                                     file=path, line=source_line(body))
             kw.update(field=is_field, direction=_vec(body.get("direction") or "0 0 0"))
         try:
             params.append(Parameter(**kw))
         except ParameterError as exc:
-            raise ModelFileError(exc.message, file=path, line=el.sourceline) from None
+            raise ModelFileError(exc.message, file=path, line=source_line(el)) from None
         for child in el.findall("parameter"):
             read_param(child, name)
 
-    for el in root.find("parameters").findall("parameter"):
+    for el in _child(root, "parameters", path).findall("parameter"):
         read_param(el, None)
     try:
         tree = ParameterTree(params)
     except ParameterError as exc:
         raise ModelFileError(exc.message, file=path) from None
 
-    landmarks, landmark_lines = {}, {}
+    landmarks: dict[str, int] = {}
+    landmark_lines: dict[str, int | None] = {}
     lm_root = root.find("landmarks")
     if lm_root is not None:
         for el in lm_root.findall("landmark"):
-            key = el.get("id")
+            key = _required(el, "id", path)
             if key in landmarks:
-                raise ModelFileError(f"landmark {key} is defined twice", file=path, line=el.sourceline)
-            landmarks[key] = int(el.get("vertex"))
-            landmark_lines[key] = el.sourceline
+                raise ModelFileError(f"landmark {key} is defined twice", file=path, line=source_line(el))
+            landmarks[key] = int(_required(el, "vertex", path))
+            landmark_lines[key] = source_line(el)
 
-    arrays_path = (path.parent / root.get("arrays")).resolve()
+    arrays_path = (path.parent / _required(root, "arrays", path)).resolve()
     vertices, faces, vertex_part, regions, colors_rgb = _read_arrays(arrays_path, tree, len(parts))
     n = len(vertices)
     for key, v in landmarks.items():
@@ -139,10 +147,26 @@ def load_model(path: str | Path | None = None) -> Model:
     desc = root.findtext("description") or ""
     try:
         return Model(vertices, faces, parts, vertex_part, tree, regions, landmarks,
-                     name=root.get("name"), description=desc.strip(), part_colors=colors,
+                     name=_required(root, "name", path), description=desc.strip(), part_colors=colors,
                      vertex_colors=colors_rgb)
     except UserError as exc:
         raise ModelFileError(exc.message, file=arrays_path) from None
+
+
+def _child(el: etree._Element, tag: str, path: Path) -> etree._Element:
+    """The child ``<tag>`` the schema requires (validated before, so this only guards against a mistake)."""
+    child = el.find(tag)
+    if child is None:
+        raise ModelFileError(f"<{el.tag}> has no <{tag}>", file=path, line=source_line(el))
+    return child
+
+
+def _required(el: etree._Element, key: str, path: Path) -> str:
+    """Attribute ``key`` the schema requires (validated before, so this only guards against a mistake)."""
+    value = el.get(key)
+    if value is None:
+        raise ModelFileError(f"<{el.tag}> has no '{key}' attribute", file=path, line=source_line(el))
+    return value
 
 
 def _integer(text: str | None) -> int | None:
@@ -157,7 +181,8 @@ def _vec(text: str) -> np.ndarray:
     return np.array([float(t) for t in text.split()])
 
 
-def _read_arrays(path: Path, tree: ParameterTree, n_parts: int):
+def _read_arrays(path: Path, tree: ParameterTree, n_parts: int
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, InfluenceRegion], np.ndarray | None]:
     if not path.exists():
         raise ModelFileError("the arrays file named by the model description does not exist", file=path)
     try:
@@ -175,7 +200,7 @@ def _read_arrays(path: Path, tree: ParameterTree, n_parts: int):
             raise ModelFileError(f"arrays format version {version} is not one this program reads ({VERSION})",
                                  file=path)
 
-        def dataset(name, dtype, shape_tail=None):
+        def dataset(name: str, dtype: npt.DTypeLike, shape_tail: tuple[int, ...] | None = None) -> np.ndarray:
             if name not in f:
                 raise ModelFileError(f"missing HDF5 dataset '/{name}'", file=path)
             data = f[name]
@@ -198,13 +223,13 @@ def _read_arrays(path: Path, tree: ParameterTree, n_parts: int):
         if len(vertex_part) and vertex_part.max() >= n_parts:
             raise ModelFileError(f"'/mesh/part' names part {vertex_part.max()} but the model has {n_parts} parts",
                                  file=path)
-        colors = None
+        colors: np.ndarray | None = None
         if "mesh/colors" in f:
             colors = dataset("mesh/colors", np.int64, (3,))
             if len(colors) != len(vertices) or colors.min() < 0 or colors.max() > 255:
                 raise ModelFileError("'/mesh/colors' must hold one sRGB triple (0-255) per vertex", file=path)
             colors = colors.astype(np.uint8)
-        regions = {}
+        regions: dict[str, InfluenceRegion] = {}
         for p in tree:
             base = f"parameters/{p.name}"
             if base not in f:
@@ -282,15 +307,15 @@ def model_to_xml(model: Model, arrays_name: str) -> bytes:
     params = etree.SubElement(root, "parameters")
     tree = model.parameters
 
-    def write(name, parent_el):
+    def write(name: str, parent_el: etree._Element) -> None:
         p = tree[name]
         el = etree.SubElement(parent_el, "parameter", name=p.name, type=p.kind, min=_num(p.minimum),
                               max=_num(p.maximum), default=_num(p.default))
         if p.description:
             etree.SubElement(el, "description").text = _xml_text(p.description, f"parameter '{p.name}' description")
         if p.kind == "rotation":
-            etree.SubElement(el, "rotation", axis=_nums(p.axis), pivot=_nums(p.pivot),
-                             **{"degrees-per-unit": _num(p.degrees_per_unit)})
+            etree.SubElement(el, "rotation", {"axis": _nums(p.axis), "pivot": _nums(p.pivot),
+                                              "degrees-per-unit": _num(p.degrees_per_unit)})
         elif p.field:
             etree.SubElement(el, "translation", field="true")
         else:
@@ -319,7 +344,7 @@ def _xml_text(value: str, what: str) -> str:
     return value
 
 
-def _landmark_order(key: str):
+def _landmark_order(key: str) -> tuple[tuple[int, ...], str]:
     try:
         return tuple(int(t) for t in key.split(".")), key
     except ValueError:
@@ -330,7 +355,7 @@ def _num(x: float) -> str:
     return repr(float(x))
 
 
-def _nums(v) -> str:
+def _nums(v: Iterable[float]) -> str:
     return " ".join(_num(x) for x in v)
 
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from functools import cache
 from pathlib import Path
+from typing import cast
 
 from lxml import etree
 
@@ -56,6 +57,12 @@ def parse_xml_bytes(data: bytes, name: str | Path, error: type[UserError] = User
         raise error(f"malformed XML: {exc}", file=name) from None
 
 
+def source_line(element: etree._Element) -> int | None:
+    """The line ``element`` starts on in its file (None for an element built in memory)."""
+    # lxml-stubs write ``sourceline = ...  # Optional[int]``, which mypy reads as an ellipsis
+    return cast("int | None", element.sourceline)
+
+
 @cache
 def schema(name: str) -> etree.XMLSchema:
     """The XML schema ``engine/formats/schemas/<name>`` (parsed once)."""
@@ -71,7 +78,8 @@ def validate(doc: etree._ElementTree, schema_name: str, name: str | Path,
     except etree.LxmlError as exc:
         raise error(f"cannot validate: {exc}", file=name) from None
     if not valid:
-        err = checker.error_log.filter_from_errors()[0]
+        # lxml-stubs declare _ErrorLog without members; a schema's error_log is a _ListErrorLog
+        err = checker.error_log.filter_from_errors()[0]  # type: ignore[attr-defined]
         raise error(schema_message(err.message), file=name, line=err.line)
 
 

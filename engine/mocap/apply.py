@@ -56,9 +56,12 @@ longer than true surface distances on a coarse mesh. Lengths are mm.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import ParameterError, UserError
 from engine.mocap.errors import MocapError
@@ -66,6 +69,9 @@ from engine.mocap.marker_alignment import align_to_landmarks
 from engine.mocap.pca import Articulation, describe_component
 from engine.mocap.surface_interpolation import articulation_region, surface_graph, surface_rbf
 from engine.model.parameters import NAME_PATTERN, Parameter
+
+if TYPE_CHECKING:
+    from engine.model.model import Model
 
 DEFAULT_PREFIX = "pca"
 _ARTICULATORY = {"lowering": "lips_lower", "raising": "lips_raise", "protrusion": "lip_protrude",
@@ -97,7 +103,7 @@ class AppliedArticulation:
     marker_displacements: np.ndarray = field(default_factory=lambda: np.zeros((0, 0, 3)))
     """(C, used markers, 3) model-space displacement of the marker vertices for value 1, mm."""
 
-    def to_model(self, positions) -> np.ndarray:
+    def to_model(self, positions: npt.ArrayLike) -> np.ndarray:
         """Marker-space positions (…, 3) → model space, mm."""
         return self.scale * np.asarray(positions, dtype=float) @ self.rotation.T + self.translation
 
@@ -118,7 +124,8 @@ class AppliedArticulation:
         return "\n".join(lines) + "\n"
 
 
-def component_names(art: Articulation, names=None, prefix: str | None = None) -> list[str]:
+def component_names(art: Articulation, names: str | Sequence[str] | None = None,
+                    prefix: str | None = None) -> list[str]:
     """The parameter names for the components of ``art``.
 
     ``names=None``: ``pca1`` … ``pcaN`` (``prefix`` replaces ``pca``).
@@ -132,7 +139,8 @@ def component_names(art: Articulation, names=None, prefix: str | None = None) ->
     if names is None:
         out = [f"{DEFAULT_PREFIX if prefix is None else prefix}{k + 1}" for k in range(n)]
     elif isinstance(names, str) and names == "articulatory":
-        out, seen = [], {}
+        out = []
+        seen: dict[str, int] = {}
         for k in range(n):
             word = describe_component(art, k)
             base = "jaw_open" if word.startswith("jaw opening") else _ARTICULATORY.get(word, "articulation")
@@ -151,7 +159,8 @@ def component_names(art: Articulation, names=None, prefix: str | None = None) ->
     return out
 
 
-def apply_articulation(model, art: Articulation, *, names=None, prefix: str | None = None, parent: str | None = "auto",
+def apply_articulation(model: Model, art: Articulation, *, names: str | Sequence[str] | None = None,
+                       prefix: str | None = None, parent: str | None = "auto",
                        value_range: tuple[float, float] = (-3.0, 3.0), inner_mm: float = 8.0,
                        outer_mm: float = 20.0, neighbour_ratio: float = 1.3, part: str = "skin",
                        rest_offset: bool = True) -> AppliedArticulation:
@@ -205,7 +214,7 @@ def apply_articulation(model, art: Articulation, *, names=None, prefix: str | No
     columns = [art.markers.index(m) for m in used]
     vertices = np.array([model.landmarks[m] for m in used], dtype=np.int64)
     part_index = model.parts.index(part)
-    off = [m for m, v in zip(used, vertices) if model.vertex_part[v] != part_index]
+    off = [m for m, v in zip(used, vertices, strict=True) if model.vertex_part[v] != part_index]
     if off:
         raise MocapError(f"landmarks {', '.join(off)} are not on the part '{part}'")
 
@@ -246,7 +255,7 @@ def apply_articulation(model, art: Articulation, *, names=None, prefix: str | No
                                region, weights, parent_name, marker_disp)
 
 
-def _parent(model, markers, vertices) -> str | None:
+def _parent(model: Model, markers: list[str], vertices: np.ndarray) -> str | None:
     """The group-1 parameter with the most weight at the upper-lip marker (8.1, else the first marker)."""
     vertex = vertices[markers.index("8.1")] if "8.1" in markers else vertices[0]
     tree = model.parameters

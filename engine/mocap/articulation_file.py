@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import NoReturn
 
 import h5py
 import numpy as np
@@ -77,13 +78,13 @@ def load_articulation_file(path: str | Path) -> Articulation:
     path = Path(path)
     with open_versioned(path, ARTICULATION_FORMAT, ARTICULATION_VERSION, ArticulationFileError,
                         "an articulation file", "mocap pca") as f:
-        def dataset(name):
+        def dataset(name: str) -> np.ndarray:
             if name not in f or not isinstance(f[name], h5py.Dataset):
                 raise ArticulationFileError(f"missing dataset '/{name}'", file=path)
             return np.asarray(f[name][()])
 
-        markers = [text_attribute(m) for m in np.atleast_1d(dataset("markers")).tolist()]
-        numbers = {}
+        markers = [text_attribute(m) or "" for m in np.atleast_1d(dataset("markers")).tolist()]
+        numbers: dict[str, np.ndarray] = {}
         for name in ("mean", "components", "explained_variance_ratio", "stages"):
             try:
                 numbers[name] = dataset(name).astype(float)
@@ -108,8 +109,8 @@ def load_articulation_file(path: str | Path) -> Articulation:
     return art
 
 
-def _check_arrays(art: Articulation, path) -> None:
-    def fail(message):
+def _check_arrays(art: Articulation, path: str | Path) -> None:
+    def fail(message: str) -> NoReturn:
         raise ArticulationFileError(message, file=path)
 
     m = len(art.markers)

@@ -13,11 +13,15 @@ from __future__ import annotations
 
 import warnings
 from pathlib import Path
+from typing import TYPE_CHECKING, BinaryIO
 
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
 from engine.mocap.recording import Recording, unit_scale, zero_triplets_to_nan
+
+if TYPE_CHECKING:
+    import c3d
 
 
 def read_c3d(path: str | Path) -> Recording:
@@ -60,8 +64,8 @@ def read_c3d(path: str | Path) -> Recording:
                      units=units or "mm", start_ms=1000.0 * (int(reader.first_frame) - 1) / rate)
 
 
-def _labels(reader) -> list[str]:
-    labels = []
+def _labels(reader: c3d.Reader) -> list[str]:
+    labels: list[str] = []
     for key in ["POINT:LABELS"] + [f"POINT:LABELS{k}" for k in range(2, 100)]:
         param = reader.get(key)
         if param is None:
@@ -84,7 +88,8 @@ def _unique(labels: list[str]) -> list[str]:
     return out
 
 
-def _read_points(fh, reader, n_frames, n_points, path):
+def _read_points(fh: BinaryIO, reader: c3d.Reader, n_frames: int, n_points: int,
+                 path: Path) -> tuple[np.ndarray, np.ndarray]:
     """All frames' point words in one read: (F, P, 3) coordinates (scaled) and (F, P) validity."""
     is_float = reader.point_scale < 0
     word = 4 if is_float else 2
@@ -113,7 +118,7 @@ def _read_points(fh, reader, n_frames, n_points, path):
     return xyz, valid
 
 
-def _read_points_slowly(reader, n_frames, n_points, path):
+def _read_points_slowly(reader: c3d.Reader, n_frames: int, n_points: int, path: Path) -> tuple[np.ndarray, np.ndarray]:
     xyz = np.full((n_frames, n_points, 3), np.nan)
     valid = np.zeros((n_frames, n_points), bool)
     count = 0

@@ -7,6 +7,7 @@ the image and, given a path, writes it as PNG. Lengths are mm, sizes pixels.
 
 from __future__ import annotations
 
+from itertools import pairwise
 from pathlib import Path
 
 import numpy as np
@@ -38,7 +39,8 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
     # their largest marker motion is at least 4 % of the picture's span.
     span = max(float(np.ptp(art.mean, axis=0).max()), 1e-6)
     gains = [_gain(amplitude * np.abs(c).max(), 0.04 * span) for c in art.components]
-    shapes = [art.mean] + [art.mean + s * g * amplitude * c for c, g in zip(art.components, gains) for s in (1, -1)]
+    shapes = [art.mean] + [art.mean + s * g * amplitude * c for c, g in zip(art.components, gains, strict=True)
+                         for s in (1, -1)]
     pts = np.concatenate(shapes)
     n_rows = art.n_components
     width, height = 2 * PANEL, n_rows * (PANEL + HEADER) + 2 * HEADER
@@ -49,7 +51,7 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
     draw_text(image, "GREY MEAN", 8, 4, grey)
     draw_text(image, f"RED +{amplitude:g} SD", 140, 4, red)
     draw_text(image, f"BLUE -{amplitude:g} SD", 290, 4, blue)
-    for col, (title, ax, ay) in enumerate(views):
+    for col, (title, _, _) in enumerate(views):
         draw_text(image, title, col * PANEL + PANEL // 2 - 6 * len(title) // 2, HEADER + 4, (0, 0, 0))
     contour = [art.markers.index(m) for m in LIP_CONTOUR if m in art.markers]
     for k in range(n_rows):
@@ -63,7 +65,8 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
             left = col * PANEL
             centre = np.array([pts[:, ax].min() + pts[:, ax].max(), pts[:, ay].min() + pts[:, ay].max()]) / 2
 
-            def to_px(p, left=left, ax=ax, ay=ay, centre=centre):
+            def to_px(p: np.ndarray, left: int = left, ax: int = ax, ay: int = ay, centre: np.ndarray = centre,
+                      top: int = top) -> np.ndarray:
                 return np.column_stack([left + PANEL / 2 + (p[:, ax] - centre[0]) * scale,
                                         top + HEADER + PANEL / 2 - (p[:, ay] - centre[1]) * scale])
 
@@ -73,7 +76,7 @@ def plot_components(art: Articulation, path: str | Path | None = None, amplitude
             minus_px = to_px(art.mean - shown)
             for shape, colour in ((mean_px, grey), (minus_px, blue), (plus_px, red)):
                 if len(contour) > 1:
-                    for a, b in zip(contour[:-1], contour[1:]):
+                    for a, b in pairwise(contour):
                         draw_line(image, shape[a], shape[b], colour)
             for i in range(len(art.markers)):
                 draw_line(image, mean_px[i], plus_px[i], red)

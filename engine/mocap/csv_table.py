@@ -66,7 +66,7 @@ def read_csv(path: str | Path, layout: CsvLayout | None = None) -> Recording:
     header_line = first + 1
     delimiter = max(",;\t", key=lines[first].count)
     names = [c.strip().strip('"') for c in lines[first].split(delimiter)]
-    markers, ignored = _marker_columns(names, layout.columns, path, header_line)
+    markers, _ = _marker_columns(names, layout.columns, path, header_line)
     time_index, time_unit = _time_column(names, layout, path, header_line)
     table = parse_rows(lines[first + 1:], header_line + 1, len(names), path, delimiter=delimiter,
                        empty_is_missing=True)
@@ -92,7 +92,7 @@ def read_csv(path: str | Path, layout: CsvLayout | None = None) -> Recording:
                      units=layout.units, start_ms=start_ms, events=[])
 
 
-def _pattern_regex(pattern: str) -> re.Pattern:
+def _pattern_regex(pattern: str) -> re.Pattern[str]:
     if pattern.count("{marker}") != 1 or pattern.count("{axis}") != 1:
         raise ValueError("a column pattern needs exactly one {marker} and one {axis}")
     parts = re.split(r"(\{marker\}|\{axis\})", pattern)
@@ -101,7 +101,8 @@ def _pattern_regex(pattern: str) -> re.Pattern:
     return re.compile(regex)
 
 
-def _marker_columns(names, pattern, path, line):
+def _marker_columns(names: list[str], pattern: str | None, path: Path,
+                    line: int) -> tuple[dict[str, list[int]], list[str]]:
     """{marker: [x, y, z column]} for markers with all three axes, and the columns left over."""
     patterns = [pattern] if pattern else list(DEFAULT_PATTERNS)
     for p in patterns:
@@ -128,7 +129,7 @@ def _marker_columns(names, pattern, path, line):
                           "(give the pattern with --columns, e.g. '{marker}_pos_{axis}')", file=path, line=line)
 
 
-def _time_column(names, layout, path, line):
+def _time_column(names: list[str], layout: CsvLayout, path: Path, line: int) -> tuple[int | None, str | None]:
     lowered = [n.lower() for n in names]
     if layout.time_column is not None:
         if layout.time_column not in names:
@@ -142,7 +143,7 @@ def _time_column(names, layout, path, line):
     return None, None
 
 
-def _rate_from_times(times, path, first_line):
+def _rate_from_times(times: np.ndarray, path: Path, first_line: int) -> tuple[float, float]:
     if not np.all(np.isfinite(times)):
         k = int(np.flatnonzero(~np.isfinite(times))[0])
         raise MarkerFileError("the time column has an empty or non-finite cell", file=path, line=first_line + k)

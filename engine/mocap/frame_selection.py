@@ -18,14 +18,33 @@ Times are ms; frame ``i`` of a recording is at ``i · 1000 / rate_hz`` ms.
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
+from typing import Protocol, TypeAlias, runtime_checkable
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.mocap.errors import MocapError
 
 VOWELS = frozenset(["a", "e", "i", "o", "u", "y", "@", "7"])          # Suopuhe's Finnish vowels (@ = ä, 7 = ö)
 PAUSES = frozenset(["#", "##", "pau", "sil", "_"])
+
+
+@runtime_checkable
+class TimedPhone(Protocol):
+    """A phone and its time span in ms, such as :class:`engine.speech.synthesis.Segment`."""
+
+    @property
+    def label(self) -> str: ...
+    @property
+    def start_ms(self) -> float: ...
+    @property
+    def end_ms(self) -> float: ...
+
+
+#: Phones as ``(start_ms, end_ms, label)`` triples or :class:`TimedPhone` objects (segments).
+Phones: TypeAlias = Iterable[tuple[float, float, str] | TimedPhone]
 
 
 @dataclass
@@ -42,8 +61,8 @@ class FrameSelection:
         return len(self.frames)
 
 
-def select_frames(phones, n_frames: int, rate_hz: float, selectors=("V", "C"),
-                  position: float = 0.5) -> FrameSelection:
+def select_frames(phones: Phones | None, n_frames: int, rate_hz: float,
+                  selectors: str | Sequence[str] = ("V", "C"), position: float = 0.5) -> FrameSelection:
     """The frames at the middle of the phones that match any of ``selectors``.
 
     Parameters
@@ -83,7 +102,7 @@ def select_frames(phones, n_frames: int, rate_hz: float, selectors=("V", "C"),
         right = labels[i + 1] if i + 1 < len(labels) else "#"
         if not any(_matches(label, t) and _matches(left, lft) and _matches(right, rgt) for t, lft, rgt in rules):
             continue
-        frame = int(round((start + position * (end - start)) * rate_hz / 1000.0))
+        frame = round((start + position * (end - start)) * rate_hz / 1000.0)
         if not 0 <= frame < n_frames:
             outside += 1
             continue
@@ -93,7 +112,7 @@ def select_frames(phones, n_frames: int, rate_hz: float, selectors=("V", "C"),
     return FrameSelection(frames, [chosen[f] for f in frames], description, outside)
 
 
-def reselect_frames(selection: str, phones, n_frames: int, rate_hz: float) -> np.ndarray:
+def reselect_frames(selection: str, phones: Phones | None, n_frames: int, rate_hz: float) -> np.ndarray:
     """The frames an :attr:`~engine.mocap.pca.Articulation.selection` text describes, chosen again.
 
     The phones and frames are those of the recording the PCA analysed.
@@ -147,7 +166,7 @@ def parse_frame_list(text: str, n_frames: int | None = None) -> FrameSelection:
     return FrameSelection(ordered, [""] * len(ordered), f"frames {text}", outside)
 
 
-def frame_list_text(frames, limit: int = 30000) -> str:
+def frame_list_text(frames: npt.ArrayLike, limit: int = 30000) -> str:
     """``"frames 0-4,7,10-20"`` for a frame list (``parse_frame_list`` reads it back); a count if too long.
 
     ``limit`` is the longest text in characters; a longer list becomes ``"N listed frames"``.
@@ -157,11 +176,11 @@ def frame_list_text(frames, limit: int = 30000) -> str:
         return "frames (none)"
     breaks = np.flatnonzero(np.diff(f) != 1)
     starts, ends = f[np.r_[0, breaks + 1]], f[np.r_[breaks, len(f) - 1]]
-    text = "frames " + ",".join(str(a) if a == b else f"{a}-{b}" for a, b in zip(starts, ends))
+    text = "frames " + ",".join(str(a) if a == b else f"{a}-{b}" for a, b in zip(starts, ends, strict=True))
     return text if len(text) <= limit else f"{len(f)} listed frames"    # HDF5 attributes stay under 64 kB
 
 
-def _parse_selector(text: str):
+def _parse_selector(text: str) -> tuple[frozenset[str], ...]:
     text = str(text).strip()
     if not text:
         raise MocapError("an empty phone selector (write e.g. V, C, a or a/p_p)")
@@ -176,10 +195,10 @@ def _parse_selector(text: str):
     return tuple(frozenset(x for x in part.split(",") if x) or frozenset("*") for part in (target, left, right))
 
 
-def _matches(label: str, items) -> bool:
+def _matches(label: str, items: Iterable[str]) -> bool:
     base = label[:-1] if label.endswith(":") else label
     for item in items:
-        if item == "*" or item == label or item == base:
+        if item in ("*", label, base):
             return True
         if item == "V" and base in VOWELS:
             return True
@@ -190,10 +209,10 @@ def _matches(label: str, items) -> bool:
     return False
 
 
-def _phone_triples(phones) -> list[tuple[float, float, str]]:
+def _phone_triples(phones: Phones | None) -> list[tuple[float, float, str]]:
     out = []
     for p in phones or []:
-        if hasattr(p, "label"):
+        if isinstance(p, TimedPhone):
             out.append((float(p.start_ms), float(p.end_ms), str(p.label)))
         else:
             start, end, label = p[:3]

@@ -12,8 +12,11 @@ from pathlib import Path
 
 import h5py
 
+from engine.errors import UserError
 
-def open_versioned(path: str | Path, fmt: str, version: int, error, what: str, writer: str) -> h5py.File:
+
+def open_versioned(path: str | Path, fmt: str, version: int, error: type[UserError], what: str,
+                   writer: str) -> h5py.File:
     """Open ``path`` for reading after checking its ``format`` and ``version`` attributes.
 
     Raises ``error`` (a :class:`~engine.errors.UserError` subclass) naming the
@@ -45,7 +48,7 @@ def open_versioned(path: str | Path, fmt: str, version: int, error, what: str, w
     return f
 
 
-def text_attribute(value) -> str | None:
+def text_attribute(value: object) -> str | None:
     """An HDF5 string attribute as ``str`` (h5py may give ``bytes``)."""
     if isinstance(value, bytes):
         return value.decode("utf-8", errors="replace")

@@ -19,10 +19,14 @@ True
 
 from __future__ import annotations
 
+from types import ModuleType
+from typing import Any
+
 import numpy as np
 
 from engine.mocap.errors import MocapError
 
+_rigid_fit: ModuleType | None
 try:  # the compiled batched Kabsch (engine/mocap/_rigid_fit.c); numpy's batched SVD otherwise
     from engine.mocap import _rigid_fit
 except ImportError:  # pragma: no cover - exercised where the extension is not built
@@ -100,7 +104,8 @@ def apply_alignment(positions: np.ndarray, alignment: np.ndarray) -> np.ndarray:
 
 
 def remove_head_motion(positions: np.ndarray, missing: np.ndarray, reference: list[int],
-                       reference_frame: str | int = "first", filled: np.ndarray | None = None):
+                       reference_frame: str | int = "first", filled: np.ndarray | None = None,
+                       ) -> tuple[np.ndarray, np.ndarray, dict[str, Any]]:
     """Align every frame's reference markers to a reference frame; returns ``(aligned, alignment, info)``.
 
     ``positions`` (F, M, 3) mm with NaN where ``missing`` (F, M); ``reference``

@@ -9,10 +9,12 @@ into the analysed recording's coordinates. Lengths are mm.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.mocap.errors import MocapError
 from engine.mocap.marker_alignment import similarity_fit
@@ -20,6 +22,7 @@ from engine.mocap.pca import Articulation
 
 if TYPE_CHECKING:
     from engine.mocap.apply import AppliedArticulation
+    from engine.model.model import Model
 
 @dataclass
 class HeldOutError:
@@ -47,8 +50,8 @@ class HeldOutError:
                 f"face at rest {self.rest_rms_mm:.3f} mm\n")
 
 
-def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation, markers, positions,
-                         register: bool = False) -> HeldOutError:
+def reconstruct_held_out(model: Model, applied: AppliedArticulation, art: Articulation, markers: Sequence[str],
+                         positions: npt.ArrayLike, register: bool = False) -> HeldOutError:
     """Fit the new parameters to held-out frames, deform the model, measure at the landmarks.
 
     ``markers`` names the columns of ``positions`` ((F, M, 3), mm, head
@@ -95,7 +98,7 @@ def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation,
         v = np.linalg.lstsq(A[rows], (target[f] - rest).reshape(-1)[rows], rcond=None)[0]
         fitted[f] = v
         values = base.copy()
-        for name, value in zip(applied.names, v):
+        for name, value in zip(applied.names, v, strict=True):
             values[order[name]] = value
         moved = deformer.deform(values)
         errors[f, ok] = np.linalg.norm(moved[ok] - target[f, ok], axis=1)
@@ -117,7 +120,8 @@ def reconstruct_held_out(model, applied: AppliedArticulation, art: Articulation,
         values=fitted)
 
 
-def register_recording(art: Articulation, markers, positions, iterations: int = 30):
+def register_recording(art: Articulation, markers: Sequence[str], positions: npt.ArrayLike,
+                       iterations: int = 30) -> tuple[np.ndarray, np.ndarray]:
     """The rigid motion (R, t) that takes another recording into the coordinates ``art`` was computed in.
 
     Minimises ``Σ_f |R x_f + t − (mean + Σ_k v_fk C_k)|²`` over one rotation

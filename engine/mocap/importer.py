@@ -14,6 +14,7 @@ elsewhere (a generator, another tool).
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -26,14 +27,19 @@ from engine.mocap.recording import Recording
 from engine.mocap.session import Session
 from engine.model.landmarks import landmark_sort_key
 
+if TYPE_CHECKING:
+    from engine.mocap.csv_table import CsvLayout
+    from engine.speech.synthesis import Synthesizer
+
 DEFAULT_MAX_GAP_MS = 100.0
 
 
-def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str | Path | dict | None = None,
+def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str | Path | dict[str, str] | None = None,
                        max_gap_ms: float = DEFAULT_MAX_GAP_MS, reference: list[str] | None = None,
                        reference_frame: str | int = "first", labels: str | Path | None = None,
                        tier: str | None = None, text: str | None = None, voice: str | None = None,
-                       stretch_text: bool = False, csv_layout=None, synthesizer=None) -> Session:
+                       stretch_text: bool = False, csv_layout: CsvLayout | None = None,
+                       synthesizer: Synthesizer | None = None) -> Session:
     """Read a marker file and prepare it for analysis.
 
     ``mapping`` is a mapping file or a ``{label: id}`` dict; ``max_gap_ms``
@@ -66,15 +72,17 @@ def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str |
     return session
 
 
-def build_session(recording: Recording, *, mapping: dict | None = None, max_gap_ms: float = DEFAULT_MAX_GAP_MS,
-                  reference: list[str] | None = None, reference_frame: str | int = "first",
-                  phones: list | None = None) -> Session:
+def build_session(recording: Recording, *, mapping: dict[str, str] | None = None,
+                  max_gap_ms: float = DEFAULT_MAX_GAP_MS, reference: list[str] | None = None,
+                  reference_frame: str | int = "first",
+                  phones: list[tuple[float, float, str]] | None = None) -> Session:
     """Name, gap-fill and head-align a :class:`~engine.mocap.recording.Recording` (positions in mm)."""
     if not (np.isfinite(max_gap_ms) and max_gap_ms >= 0):
         raise MocapError(f"the longest gap to fill must be 0 ms or more, not {max_gap_ms}")
     names, naming = marker_names(recording.labels, mapping)
-    keep = [k for k, n in enumerate(names) if n is not None]
-    markers = [names[k] for k in keep]
+    kept = [(k, n) for k, n in enumerate(names) if n is not None]
+    keep = [k for k, _ in kept]
+    markers = [n for _, n in kept]
     if not markers:
         raise MocapError("no markers left to import (the mapping drops them all)")
     raw = np.asarray(recording.positions, dtype=float)
@@ -131,7 +139,8 @@ def build_session(recording: Recording, *, mapping: dict | None = None, max_gap_
 def format_report(session: Session) -> str:
     """The import report as text: the recording, gaps per marker, head motion, phones."""
     r = session.report
-    lines = [f"{session.source}: {FORMAT_NAMES.get(r.get('format'), r.get('format'))}, {session.n_frames} frames "
+    fmt = str(r.get("format"))
+    lines = [f"{session.source}: {FORMAT_NAMES.get(fmt, fmt)}, {session.n_frames} frames "
              f"at {session.rate_hz:g} Hz, {session.n_markers} markers (file units {r.get('units_in_file', 'mm')})"]
     naming = r.get("naming") or {}
     if naming.get("renamed"):
@@ -151,7 +160,8 @@ def format_report(session: Session) -> str:
             rows.append((m, str(g["gaps"]), str(g["filled_gaps"]), str(g["filled_frames"]), str(g["missing_gaps"]),
                          str(g["missing_frames"])))
         widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
-        lines += ["  " + "  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(row, widths)))
+        lines += ["  " + "  ".join(c.rjust(w) if i else c.ljust(w)
+                                   for i, (c, w) in enumerate(zip(row, widths, strict=True)))
                   for row in rows]
     hm = r.get("head_motion")
     if hm:

@@ -25,8 +25,12 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from engine.mocap.errors import LabelFileError
+
+if TYPE_CHECKING:
+    from engine.speech.synthesis import Synthesizer
 
 PHONE_TIER_NAMES = ("phones", "phone", "phonemes", "segments", "segment")
 _UNITS = re.compile(r"#\s*units?\s*[:=]?\s*(ms|s)\s*$", re.IGNORECASE)
@@ -63,7 +67,7 @@ def _read_text(path: Path) -> str:
         return data.decode("latin-1")
 
 
-def parse_label_lines(lines: list[str], path) -> list[tuple[float, float, str]]:
+def parse_label_lines(lines: list[str], path: str | Path) -> list[tuple[float, float, str]]:
     """``start end label`` lines (seconds, or ms after ``# units: ms``) as ms triples."""
     scale = 1000.0
     out = []
@@ -108,7 +112,7 @@ def _phones_csv(text: str, path: Path) -> list[tuple[float, float, str]]:
     return out
 
 
-def parse_textgrid(text: str, path, tier: str | None = None) -> list[tuple[float, float, str]]:
+def parse_textgrid(text: str, path: str | Path, tier: str | None = None) -> list[tuple[float, float, str]]:
     """The intervals of one interval tier of a Praat TextGrid (text or short text format), in ms."""
     tokens = [(m.group(0), m.start()) for m in _TOKEN.finditer(text) if not m.group(0).startswith("[")]
     pos = 0
@@ -116,7 +120,8 @@ def parse_textgrid(text: str, path, tier: str | None = None) -> list[tuple[float
     def line_of(offset: int) -> int:
         return text.count("\n", 0, offset) + 1
 
-    def take(kind: str):
+    def take(kind: str) -> tuple[str, int]:
+        """The next token (a ``string`` unquoted, a ``flag``, a ``number`` as written) and its offset."""
         nonlocal pos
         if pos >= len(tokens):
             raise LabelFileError(f"the TextGrid ends early (expected {kind})", file=path,
@@ -127,38 +132,40 @@ def parse_textgrid(text: str, path, tier: str | None = None) -> list[tuple[float
             if not token.startswith('"'):
                 raise LabelFileError(f"expected a quoted text, found '{token}'", file=path, line=line_of(offset))
             return token[1:-1].replace('""', '"'), offset
-        if kind == "flag":
-            return token, offset
-        if token.startswith(('"', "<")):
+        if kind == "number" and token.startswith(('"', "<")):
             raise LabelFileError(f"expected a number, found {token}", file=path, line=line_of(offset))
+        return token, offset
+
+    def take_number() -> tuple[float, int]:
+        token, offset = take("number")
         return float(token), offset
 
     file_type, _ = take("string")
     object_class, offset = take("string")
     if file_type != "ooTextFile" or object_class != "TextGrid":
         raise LabelFileError(f"not a Praat TextGrid (object class '{object_class}')", file=path, line=line_of(offset))
-    take("number")
-    take("number")
+    take_number()
+    take_number()
     flag, offset = take("flag")
     if flag != "<exists>":
         raise LabelFileError("the TextGrid has no tiers", file=path, line=line_of(offset))
-    n_tiers = int(take("number")[0])
+    n_tiers = int(take_number()[0])
     tiers = []
     for _ in range(n_tiers):
         kind, offset = take("string")
         name, _ = take("string")
-        take("number")
-        take("number")
-        n = int(take("number")[0])
+        take_number()
+        take_number()
+        n = int(take_number()[0])
         items = []
         for _ in range(n):
             if kind == "IntervalTier":
-                start, _ = take("number")
-                end, at = take("number")
+                start, _ = take_number()
+                end, at = take_number()
                 label, _ = take("string")
                 items.append((start, end, label, at))
             elif kind == "TextTier":
-                take("number")
+                take_number()
                 take("string")
             else:
                 raise LabelFileError(f"unknown tier class '{kind}'", file=path, line=line_of(offset))
@@ -183,7 +190,7 @@ def parse_textgrid(text: str, path, tier: str | None = None) -> list[tuple[float
 
 
 def festival_phones(text: str, voice: str | None = None, duration_ms: float | None = None,
-                    synthesizer=None) -> list[tuple[float, float, str]]:
+                    synthesizer: Synthesizer | None = None) -> list[tuple[float, float, str]]:
     """Phone labels from Festival's synthesis of ``text`` (Suopuhe phone names, pauses ``#``).
 
     With ``duration_ms`` the timings are stretched linearly so the utterance

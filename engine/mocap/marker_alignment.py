@@ -13,7 +13,8 @@ import numpy as np
 from engine.mocap.errors import MocapError
 
 
-def align_to_landmarks(mean, comps, target, rest_offset: bool, ridge: float = 1e-6):
+def align_to_landmarks(mean: np.ndarray, comps: np.ndarray, target: np.ndarray, rest_offset: bool,
+                       ridge: float = 1e-6) -> tuple[float, np.ndarray, np.ndarray, np.ndarray, float]:
     """Similarity transform marker → model, and the component values of the model's rest pose.
 
     ``mean`` (K, 3) and ``comps`` (C, K, 3) are the PCA model at the K
@@ -35,7 +36,7 @@ def align_to_landmarks(mean, comps, target, rest_offset: bool, ridge: float = 1e
         flat = comps.reshape(c, -1)
         weight = np.sqrt(ridge * np.sum(flat ** 2) / c)
 
-        def residuals(p):
+        def residuals(p: np.ndarray) -> np.ndarray:
             rot = Rotation.from_rotvec(p[:3]).as_matrix()
             shape = mean + np.tensordot(p[7:], comps, axes=1)
             fit = np.exp(p[3]) * shape @ rot.T + p[4:7] - target
@@ -50,7 +51,8 @@ def align_to_landmarks(mean, comps, target, rest_offset: bool, ridge: float = 1e
     return scale, rotation, translation, values, rms
 
 
-def similarity_fit(source, target, scale: bool = True):
+def similarity_fit(source: np.ndarray, target: np.ndarray,
+                   scale: bool = True) -> tuple[float, np.ndarray, np.ndarray]:
     """Scale s, rotation R, translation t minimising Σ |s R x + t − y|² (Umeyama 1991); s = 1 if not ``scale``.
 
     ``source`` and ``target`` are (K, 3) corresponding points (column-vector

@@ -36,9 +36,12 @@ rate_hz`` ms. ``docs/mocap-pca.md`` gives the mathematics and the file layout.
 from __future__ import annotations
 
 import fnmatch
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import Protocol, runtime_checkable
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.mocap.errors import MocapError
 from engine.mocap.frame_selection import FrameSelection, frame_list_text
@@ -51,7 +54,7 @@ class Stage:
     markers: tuple[str, ...]
     components: int = 1
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         markers = (self.markers,) if isinstance(self.markers, str) else tuple(self.markers)
         object.__setattr__(self, "markers", tuple(str(m) for m in markers))
         if not self.markers:
@@ -126,7 +129,7 @@ class Articulation:
     def n_components(self) -> int:
         return int(self.components.shape[0])
 
-    def values(self, positions, markers=None) -> np.ndarray:
+    def values(self, positions: npt.ArrayLike, markers: Sequence[str] | None = None) -> np.ndarray:
         """Least-squares component values (F, C) for marker positions (F, M, 3) or (M, 3), mm.
 
         ``markers`` names the columns of ``positions`` (default: this model's
@@ -146,12 +149,12 @@ class Articulation:
             out[f] = np.linalg.lstsq(basis[ok[f]], x[f, ok[f]], rcond=None)[0]
         return out[0] if single else out
 
-    def reconstruct(self, values) -> np.ndarray:
+    def reconstruct(self, values: npt.ArrayLike) -> np.ndarray:
         """Marker positions (F, M, 3) mm for component values (F, C) (or (M, 3) for one (C,))."""
         v = np.asarray(values, dtype=float)
         return self.mean + np.tensordot(v, self.components, axes=(-1, 0))
 
-    def _take(self, positions, markers) -> np.ndarray:
+    def _take(self, positions: npt.ArrayLike, markers: Sequence[str] | None) -> np.ndarray:
         x = np.asarray(positions, dtype=float)
         if markers is not None:
             markers = [str(m) for m in markers]
@@ -179,13 +182,25 @@ class Articulation:
         lines.append("")
         lines.append(" PC  stage  explained  cumulative  largest marker motion at +1 SD          looks like")
         cumulative = np.cumsum(self.explained_variance_ratio)
-        for k in range(self.n_components):
-            lines.append(f"{k + 1:3d}  {self.stages[k]:5d}  {100 * self.explained_variance_ratio[k]:7.1f} %"
-                         f"  {100 * cumulative[k]:8.1f} %  {_largest_motion(self, k):<38s}  {describe_component(self, k)}")
+        lines.extend(f"{k + 1:3d}  {self.stages[k]:5d}  {100 * self.explained_variance_ratio[k]:7.1f} %"
+                     f"  {100 * cumulative[k]:8.1f} %  {_largest_motion(self, k):<38s}  {describe_component(self, k)}"
+                     for k in range(self.n_components))
         return "\n".join(lines) + "\n"
 
 
-def multistage_pca(source, positions=None, *, stages=DEFAULT_STAGES, frames=None, analysed=None,
+@runtime_checkable
+class MarkerData(Protocol):
+    """Named marker trajectories, such as a :class:`~engine.mocap.session.Session`: (F, M, 3) positions, mm."""
+
+    @property
+    def markers(self) -> Sequence[str]: ...
+    @property
+    def positions(self) -> np.ndarray: ...
+
+
+def multistage_pca(source: Sequence[str] | MarkerData, positions: npt.ArrayLike | None = None, *,
+                   stages: Sequence[Stage | str] | None = DEFAULT_STAGES,
+                   frames: FrameSelection | npt.ArrayLike | None = None, analysed: str | Sequence[str] | None = None,
                    rate_hz: float | None = None, source_name: str = "") -> Articulation:
     """Multistage (guided) PCA of marker positions (§3.1.2).
 
@@ -263,7 +278,7 @@ def multistage_pca(source, positions=None, *, stages=DEFAULT_STAGES, frames=None
         raise MocapError("the analysed markers do not move in the selected frames")
     marker_pos = {m: i for i, m in enumerate(analysed)}
     comps, ratios, stage_of, stds = [], [], [], []
-    for number, (stage, group) in enumerate(zip(stage_list, stage_names), start=1):
+    for number, (stage, group) in enumerate(zip(stage_list, stage_names, strict=True), start=1):
         cols = np.concatenate([np.arange(3) + 3 * marker_pos[m] for m in group])
         block = residual[:, cols]
         if stage.components > len(cols):
@@ -297,10 +312,11 @@ def multistage_pca(source, positions=None, *, stages=DEFAULT_STAGES, frames=None
         source=source_name or src, frames=used)
 
 
-def _unpack(source, positions, rate_hz):
+def _unpack(source: Sequence[str] | MarkerData, positions: npt.ArrayLike | None, rate_hz: float | None,
+            ) -> tuple[list[str], np.ndarray, float | None, np.ndarray | None, str]:
     missing = None
     src = ""
-    if hasattr(source, "markers") and hasattr(source, "positions"):
+    if isinstance(source, MarkerData):
         names = list(source.markers)
         positions = source.positions if positions is None else positions
         rate_hz = getattr(source, "rate_hz", None) if rate_hz is None else rate_hz
@@ -323,10 +339,10 @@ def _unpack(source, positions, rate_hz):
     return names, positions, rate_hz, missing, src
 
 
-def _expand(patterns, names) -> list[str]:
+def _expand(patterns: str | Sequence[str], names: list[str]) -> list[str]:
     """Marker names matching the patterns, in the data's order; an error for patterns matching none."""
     patterns = [patterns] if isinstance(patterns, str) else list(patterns)
-    out = []
+    out: list[str] = []
     for p in patterns:
         hits = [m for m in names if m == p or fnmatch.fnmatchcase(m, p)]
         if not hits:

@@ -88,7 +88,7 @@ def read_qtm_tsv(path: str | Path) -> Recording:
     if not data_lines:
         raise MarkerFileError(f"the file ends before its data (NO_OF_FRAMES is {n_frames})", file=path,
                               line=max(len(lines), 1))
-    if columns is None:  # no column-header row: 3·M values, or frame and time first
+    if columns is None or n_columns is None:  # no column-header row: 3·M values, or frame and time first
         first = data_lines[0].split("\t")
         if len(first) == 3 * n_markers + 2:
             n_columns = 3 * n_markers + 2
@@ -117,7 +117,7 @@ def read_qtm_tsv(path: str | Path) -> Recording:
                      units="mm", start_ms=start_ms, events=events)
 
 
-def _count(header, key, path) -> int:
+def _count(header: dict[str, tuple[list[str], int]], key: str, path: Path) -> int:
     values, line = header[key]
     text = values[0] if values else ""
     try:
@@ -129,7 +129,7 @@ def _count(header, key, path) -> int:
     return n
 
 
-def _rate(header, path) -> float:
+def _rate(header: dict[str, tuple[list[str], int]], path: Path) -> float:
     values, line = header["FREQUENCY"]
     text = values[0] if values else ""
     if text.upper() == "EXT":
@@ -141,7 +141,8 @@ def _rate(header, path) -> float:
     return rate
 
 
-def _columns(lines, i, names, path):
+def _columns(lines: list[str], i: int, names: list[str], path: Path,
+             ) -> tuple[np.ndarray | None, int | None, int, int | None]:
     """Column indices (x, y, z of each marker, flattened) from the column-header row, if there is one."""
     if i >= len(lines) or lines[i].split("\t", 1)[0].strip().lower() != "frame":
         return None, None, i, None

@@ -17,7 +17,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from engine.mocap.c3d_file import read_c3d
-from engine.mocap.csv_table import read_csv
+from engine.mocap.csv_table import CsvLayout, read_csv
 from engine.mocap.errors import MarkerFileError
 from engine.mocap.qtm_tsv import read_qtm_tsv
 from engine.mocap.recording import Recording
@@ -49,7 +49,7 @@ def detect_format(path: str | Path) -> str:
                           "(give --format tsv|c3d|trc|csv if it is one of them)", file=path, line=1)
 
 
-def read_marker_file(path: str | Path, format: str = "auto", csv_layout=None) -> Recording:
+def read_marker_file(path: str | Path, format: str = "auto", csv_layout: CsvLayout | None = None) -> Recording:
     """Read a marker file of any supported format (``format="auto"`` detects it).
 
     ``csv_layout`` (a :class:`engine.mocap.csv_table.CsvLayout`) says how a

@@ -37,9 +37,11 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import h5py
 import numpy as np
+import numpy.typing as npt
 
 from engine.formats.atomic import atomic_path
 from engine.mocap.errors import MocapError, SessionFileError
@@ -69,13 +71,13 @@ class Session:
     """(F, 4, 4) row-vector transforms, ``[raw, 1] · alignment[f] = [positions, 1]``; NaN where unaligned."""
     phones: list[tuple[float, float, str]] = field(default_factory=list)
     source: str = ""
-    report: dict = field(default_factory=dict)
+    report: dict[str, Any] = field(default_factory=dict)
     filled: np.ndarray | None = None
     """(F, M) bool, True where the file had a gap that the spline filled (None: nothing filled)."""
     reference: list[str] = field(default_factory=list)
     """The head-fixed markers the alignment used."""
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         self.markers = [str(m) for m in self.markers]
         self.positions = np.asarray(self.positions, dtype=float)
         self.raw = np.asarray(self.raw, dtype=float)
@@ -185,7 +187,7 @@ def load_session(path: str | Path) -> Session:
             if not (len(starts) == len(ends) == len(labels)):
                 raise SessionFileError("the phones/start_ms, phones/end_ms and phones/label datasets differ "
                                        "in length", file=path)
-            phones = list(zip(starts.tolist(), ends.tolist(), labels))
+            phones = list(zip(starts.tolist(), ends.tolist(), labels, strict=True))
         try:
             return Session(
                 markers=markers, positions=positions,
@@ -206,7 +208,7 @@ def load_session(path: str | Path) -> Session:
 class _Reader:
     """Dataset access that turns every surprise into a :class:`SessionFileError` naming the dataset."""
 
-    def __init__(self, f: h5py.File, path: Path):
+    def __init__(self, f: h5py.File, path: Path) -> None:
         self.f, self.path = f, path
 
     def _dataset(self, name: str) -> h5py.Dataset:
@@ -217,7 +219,7 @@ class _Reader:
             raise SessionFileError(f"'/{name}' is not a dataset", file=self.path)
         return data
 
-    def array(self, name: str, dtype, ndim: int, shape: tuple | None = None) -> np.ndarray:
+    def array(self, name: str, dtype: npt.DTypeLike, ndim: int, shape: tuple[int, ...] | None = None) -> np.ndarray:
         data = self._dataset(name)
         try:
             arr = np.asarray(data[()]).astype(dtype)
@@ -234,7 +236,7 @@ class _Reader:
         if arr.ndim != 1:
             raise SessionFileError(f"dataset '/{name}' has shape {arr.shape}, expected a list of names",
                                    file=self.path)
-        return [text_attribute(v) for v in arr.tolist()]
+        return [text_attribute(v) or "" for v in arr.tolist()]
 
-    def scalar(self, name: str):
+    def scalar(self, name: str) -> object:
         return self._dataset(name)[()]

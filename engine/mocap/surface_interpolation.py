@@ -15,13 +15,16 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.mocap.errors import MocapError
 
 if TYPE_CHECKING:
     from scipy import sparse
 
-def surface_graph(model, part: str = "skin") -> sparse.csr_matrix:
+    from engine.model.model import Model
+
+def surface_graph(model: Model, part: str = "skin") -> sparse.csr_matrix:
     """The edges of ``part``'s polygons as a sparse (N × N) graph weighted by length, mm."""
     from scipy import sparse  # here, not at import: scipy.sparse costs the workbench 0.15 s at start
 
@@ -35,7 +38,8 @@ def surface_graph(model, part: str = "skin") -> sparse.csr_matrix:
     return graph.maximum(graph.T).tocsr()
 
 
-def articulation_region(graph, vertices, inner_mm: float, outer_mm: float, neighbour_ratio: float = 1.3):
+def articulation_region(graph: sparse.csr_matrix, vertices: npt.ArrayLike, inner_mm: float, outer_mm: float,
+                        neighbour_ratio: float = 1.3) -> tuple[np.ndarray, np.ndarray]:
     """The influence region: vertex indices and weights (1 near the markers, 0 beyond ``outer_mm``).
 
     The markers are joined by shortest paths along ``graph`` (each to every
@@ -68,7 +72,7 @@ def articulation_region(graph, vertices, inner_mm: float, outer_mm: float, neigh
     return indices, weight[indices]
 
 
-def surface_coordinates(graph, region, dims: int = 3) -> np.ndarray:
+def surface_coordinates(graph: sparse.csr_matrix, region: npt.ArrayLike, dims: int = 3) -> np.ndarray:
     """(len(region), dims) coordinates whose straight-line distances approximate surface distances.
 
     Classical multidimensional scaling of the shortest-path distances
@@ -96,7 +100,8 @@ def surface_coordinates(graph, region, dims: int = 3) -> np.ndarray:
     return eigenvectors[:, top] * np.sqrt(np.maximum(eigenvalues[top], 0.0))
 
 
-def surface_rbf(graph, vertices, region, displacements) -> np.ndarray:
+def surface_rbf(graph: sparse.csr_matrix, vertices: np.ndarray, region: np.ndarray,
+                displacements: np.ndarray) -> np.ndarray:
     """(C, len(region), 3) thin-plate RBF of marker displacements in surface coordinates, mm.
 
     ``vertices`` (K,) are the marker vertices (all inside ``region``) and

@@ -39,11 +39,20 @@ Lengths are mm, times ms; frame ``i`` is at ``i · 1000 / rate_hz`` ms.
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import UserError
+from engine.mocap.frame_selection import Phones, TimedPhone
+
+if TYPE_CHECKING:
+    from engine.model.model import Model
+    from engine.speech.articulation import ArticulationTable
+    from engine.speech.synthesis import Segment, Synthesizer
 
 #: Markers of the lip contour and the jaw: what the paper analysed (§3.1.1, "8.x and 2.1").
 ARTICULATION_MARKERS = ("2.1", "8.1", "8.2", "8.3", "8.4", "8.5", "8.6", "8.7", "8.8")
@@ -53,7 +62,7 @@ REFERENCE_MARKERS = ("9.12", "11.1", "11.2", "11.3")
 #: Eye corners: still during speech, captured like the paper's other markers.
 EYE_MARKERS = ("3.7", "3.8", "3.11", "3.12")
 #: The default marker set: articulation markers, the chin boss, eye corners and the reference markers.
-DEFAULT_MARKERS = ARTICULATION_MARKERS + ("2.10",) + EYE_MARKERS + REFERENCE_MARKERS
+DEFAULT_MARKERS = (*ARTICULATION_MARKERS, "2.10", *EYE_MARKERS, *REFERENCE_MARKERS)
 #: Sentences with every Finnish vowel and most consonants, bilabial closures and rounding.
 DEFAULT_TEXT = "Papu ja kala. Hyvää päivää, mitä kuuluu? Öljyä ja syötävää."
 
@@ -98,19 +107,19 @@ class SyntheticRecording:
     def times_ms(self) -> np.ndarray:
         return np.arange(self.n_frames) * (1000.0 / self.rate_hz)
 
-    def marker_index(self, names) -> np.ndarray:
+    def marker_index(self, names: Iterable[str]) -> np.ndarray:
         """Columns of the named markers."""
         return np.array([self.markers.index(n) for n in names], dtype=np.int64)
 
 
-def synthesize_recording(text: str | None = None, *, phones=None, model=None, table=None,
-                         markers=DEFAULT_MARKERS, rate_hz: float = 60.0, linear: bool = False,
-                         head_motion: bool = True, head_rotation_deg: float = 3.0,
-                         head_translation_mm: float = 4.0, noise_mm: float = 0.2,
+def synthesize_recording(text: str | None = None, *, phones: Phones | None = None, model: Model | None = None,
+                         table: ArticulationTable | None = None, markers: Iterable[str] = DEFAULT_MARKERS,
+                         rate_hz: float = 60.0, linear: bool = False, head_motion: bool = True,
+                         head_rotation_deg: float = 3.0, head_translation_mm: float = 4.0, noise_mm: float = 0.2,
                          gaps: bool = True, dropout_probability: float = 0.002,
                          gaps_per_minute: float = 4.0, gap_frames: tuple[int, int] = (2, 30),
                          long_gap_frames: int = 90, seed: int = 0, voice: str | None = None,
-                         synthesizer=None) -> SyntheticRecording:
+                         synthesizer: Synthesizer | None = None) -> SyntheticRecording:
     """Make up a marker recording of ``text`` spoken by the default head.
 
     Parameters
@@ -221,7 +230,7 @@ def synthesize_recording(text: str | None = None, *, phones=None, model=None, ta
         reference=[m for m in markers if m in REFERENCE_MARKERS], text=text or "")
 
 
-def marker_vertices(model, markers) -> dict[str, int]:
+def marker_vertices(model: Model, markers: Iterable[str]) -> dict[str, int]:
     """Vertex of every marker: the model's landmark of that id, else a head-fixed point placed on the skin.
 
     Placed points (where the model has no landmark): ``9.12`` nose bridge
@@ -248,7 +257,7 @@ _PLACED = {"9.12": (0.0, ("3.8", "3.11"), 0.0), "11.1": (0.0, ("4.3", "4.4"), 45
            "11.2": (-35.0, ("4.3", "4.4"), 40.0), "11.3": (35.0, ("4.3", "4.4"), 40.0)}
 
 
-def _place(model, x, base, above, marker) -> int:
+def _place(model: Model, x: float, base: tuple[str, ...], above: float, marker: str) -> int:
     if not all(b in model.landmarks for b in base) or "skin" not in model.parts:
         raise UserError(f"cannot place marker {marker}: the model needs landmarks {' and '.join(base)} and a skin part")
     y = np.mean([model.vertices[model.landmarks[b], 1] for b in base]) + above
@@ -260,7 +269,7 @@ def _place(model, x, base, above, marker) -> int:
     return int(near[np.argmax(v[near, 2])])
 
 
-def model_at_landmarks(model, keys):
+def model_at_landmarks(model: Model, keys: Iterable[str]) -> Model:
     """A copy of ``model`` reduced to the vertices of the landmarks ``keys`` (in that order).
 
     It deforms exactly like the full model at those vertices, in microseconds
@@ -275,7 +284,7 @@ def model_at_landmarks(model, keys):
     return model_at_vertices(model, vertices, landmarks={k: i for i, k in enumerate(keys)})
 
 
-def model_at_vertices(model, vertices, landmarks=None):
+def model_at_vertices(model: Model, vertices: npt.ArrayLike, landmarks: Mapping[str, int] | None = None) -> Model:
     """A copy of ``model`` reduced to the given vertex indices (no faces); see :func:`model_at_landmarks`.
 
     A vertex listed twice appears twice, with the same weights.
@@ -301,22 +310,22 @@ def model_at_vertices(model, vertices, landmarks=None):
 class _Subtable:
     """The articulation table restricted to the parameters the model has."""
 
-    def __init__(self, table, names):
+    def __init__(self, table: ArticulationTable, names: Iterable[str]) -> None:
         self._table, self.parameters, self.exponent = table, list(names), table.exponent
         self._columns = [table.parameters.index(n) for n in names]
 
-    def arrays(self, labels):
+    def arrays(self, labels: list[str]) -> tuple[np.ndarray, ...]:
         return tuple(a[:, self._columns] for a in self._table.arrays(labels))
 
 
-def _segments(phones):
+def _segments(phones: Phones) -> list[Segment]:
     from engine.speech.synthesis import Segment
 
     out = []
     for p in phones:
         if isinstance(p, Segment):
             out.append(p)
-        elif hasattr(p, "label"):
+        elif isinstance(p, TimedPhone):
             out.append(Segment(str(p.label), float(p.start_ms), float(p.end_ms)))
         else:
             start, end, label = p[:3]
@@ -324,7 +333,7 @@ def _segments(phones):
     return out
 
 
-def _jacobian(sub, names, step: float = 1e-4) -> np.ndarray:
+def _jacobian(sub: Model, names: Iterable[str], step: float = 1e-4) -> np.ndarray:
     """(P, M, 3) derivative of the marker positions with respect to each parameter at rest (central)."""
     out = []
     for name in names:
@@ -334,7 +343,7 @@ def _jacobian(sub, names, step: float = 1e-4) -> np.ndarray:
     return np.array(out)
 
 
-def _head_pivot(model) -> np.ndarray:
+def _head_pivot(model: Model) -> np.ndarray:
     """Where the head turns: the pivot of the head nod if the model has one, else the mesh centre."""
     for name in ("head_nod", "head_turn", "head_tilt"):
         if name in model.parameters and model.parameters[name].kind == "rotation":
@@ -342,7 +351,7 @@ def _head_pivot(model) -> np.ndarray:
     return model.vertices.mean(axis=0)
 
 
-def _smooth_noise(rng, times_ms, n: int, amplitude: float) -> np.ndarray:
+def _smooth_noise(rng: np.random.Generator, times_ms: np.ndarray, n: int, amplitude: float) -> np.ndarray:
     """(F, n) smooth random signals: three sines per channel, 0.1–0.7 Hz, RMS ≈ ``amplitude``/√2."""
     t = times_ms / 1000.0
     out = np.zeros((len(t), n))
@@ -364,7 +373,8 @@ def _rotations(angles: np.ndarray) -> np.ndarray:
     return rz @ ry @ rx
 
 
-def _dropouts(rng, n_frames, markers, rate_hz, probability, per_minute, gap_frames, long_gap) -> np.ndarray:
+def _dropouts(rng: np.random.Generator, n_frames: int, markers: Sequence[str], rate_hz: float, probability: float,
+              per_minute: float, gap_frames: tuple[int, int], long_gap: int) -> np.ndarray:
     missing = rng.random((n_frames, len(markers))) < probability
     minutes = n_frames / rate_hz / 60.0
     lo, hi = gap_frames

@@ -15,11 +15,13 @@ from __future__ import annotations
 import io
 import warnings
 from pathlib import Path
+from types import ModuleType
 
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
 
+_text_table: ModuleType | None
 try:  # the compiled table reader (engine/mocap/_text_table.c); numpy's loadtxt otherwise
     from engine.mocap import _text_table
 except ImportError:  # pragma: no cover - exercised where the extension is not built
@@ -75,16 +77,17 @@ def parse_rows(lines: list[str], first_line: int, n_columns: int, path: Path, de
                        last_line_complete)
 
 
-def _parse_fast(lines, n_columns, delimiter, empty_is_missing):
+def _parse_fast(lines: list[str], n_columns: int, delimiter: str | None,
+                empty_is_missing: bool) -> np.ndarray | None:
     """A C parser for the common case of a well-formed table; None when anything is unusual.
 
     The compiled ``engine.mocap._text_table`` when it is built (one pass, the same
     doubles as ``float``), else numpy's ``loadtxt``.
     """
     if _text_table is not None and len(delimiter or " ") == 1:
-        text = "\n".join(lines).encode("utf-8")
+        encoded = "\n".join(lines).encode("utf-8")
         out = np.empty((len(lines), n_columns))
-        rows = _text_table.parse_table(text, out, n_columns, ord(delimiter) if delimiter is not None else -1,
+        rows = _text_table.parse_table(encoded, out, n_columns, ord(delimiter) if delimiter is not None else -1,
                                        empty_is_missing)
         return out[:rows] if rows >= 0 else None
     kept = [ln for ln in lines if ln.strip()]
@@ -109,8 +112,8 @@ def _parse_fast(lines, n_columns, delimiter, empty_is_missing):
     return data
 
 
-def _parse_slow(lines, first_line, n_columns, path, delimiter, empty_is_missing, short_rows_at,
-                last_line_complete):
+def _parse_slow(lines: list[str], first_line: int, n_columns: int, path: Path, delimiter: str | None,
+                empty_is_missing: bool, short_rows_at: int | None, last_line_complete: bool) -> np.ndarray:
     """Line by line, to report exactly where and what is wrong (and to accept short TRC rows)."""
     rows = []
     lead = n_columns % short_rows_at if short_rows_at else 0

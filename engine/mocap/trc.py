@@ -40,7 +40,7 @@ def read_trc(path: str | Path) -> Recording:
     if len(values) < len(keys):
         raise MarkerFileError(f"{len(values)} header values for {len(keys)} header keys on line 2", file=path,
                               line=3)
-    header = dict(zip(keys, values))
+    header = dict(zip(keys, values, strict=False))
     missing = [k for k in REQUIRED_KEYS if k not in header]
     if missing:
         raise MarkerFileError(f"the TRC header lacks {', '.join(missing)}", file=path, line=2)

@@ -15,11 +15,12 @@ array([[0, 1, 2],
 from __future__ import annotations
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import UserError
 
 
-def cell_sizes(cells) -> np.ndarray:
+def cell_sizes(cells: npt.ArrayLike) -> np.ndarray:
     """Vertex count of every polygon; :class:`UserError` if the array is not a valid cell list."""
     cells = np.asarray(cells, dtype=np.int64).reshape(-1)
     if len(cells) == 0:
@@ -27,7 +28,8 @@ def cell_sizes(cells) -> np.ndarray:
     k = int(cells[0])
     if k >= 3 and len(cells) % (k + 1) == 0 and np.all(cells[::k + 1] == k):   # one size throughout
         return np.full(len(cells) // (k + 1), k, dtype=np.int64)
-    sizes, i = [], 0
+    sizes: list[int] = []
+    i = 0
     while i < len(cells):
         k = int(cells[i])
         if k < 3 or i + k >= len(cells):
@@ -43,21 +45,21 @@ def cell_starts(sizes: np.ndarray) -> np.ndarray:
     return np.concatenate([[0], np.cumsum(sizes[:-1] + 1)]).astype(np.int64) if len(sizes) else sizes
 
 
-def index_mask(cells, sizes: np.ndarray) -> np.ndarray:
+def index_mask(cells: np.ndarray, sizes: np.ndarray) -> np.ndarray:
     """True where the flat array holds a vertex index, False at the counts."""
     mask = np.ones(len(cells), dtype=bool)
     mask[cell_starts(sizes)] = False
     return mask
 
 
-def split_cells(cells) -> list[np.ndarray]:
+def split_cells(cells: npt.ArrayLike) -> list[np.ndarray]:
     """The polygons as a list of index arrays."""
     cells = np.asarray(cells, dtype=np.int64).reshape(-1)
     sizes = cell_sizes(cells)
-    return [cells[s + 1:s + 1 + k] for s, k in zip(cell_starts(sizes), sizes)]
+    return [cells[s + 1:s + 1 + k] for s, k in zip(cell_starts(sizes), sizes, strict=True)]
 
 
-def check_cell_array(cells, n_vertices: int) -> None:
+def check_cell_array(cells: npt.ArrayLike, n_vertices: int) -> None:
     """Raise :class:`UserError` unless ``cells`` is a valid cell array over ``n_vertices`` vertices."""
     cells = np.asarray(cells, dtype=np.int64).reshape(-1)
     sizes = cell_sizes(cells)
@@ -67,7 +69,7 @@ def check_cell_array(cells, n_vertices: int) -> None:
             raise UserError(f"a face names a vertex outside 0..{n_vertices - 1}")
 
 
-def cells_to_triangles(cells) -> np.ndarray:
+def cells_to_triangles(cells: npt.ArrayLike) -> np.ndarray:
     """Fan-triangulate every polygon into (T, 3) indices, in polygon order."""
     cells = np.asarray(cells, dtype=np.int64).reshape(-1)
     sizes = cell_sizes(cells)

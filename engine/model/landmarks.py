@@ -44,7 +44,7 @@ FEATURE_POINTS = {
 }
 
 
-def landmark_sort_key(key: str):
+def landmark_sort_key(key: str) -> tuple[tuple[int, ...], str]:
     """Sort MPEG-4 feature point ids numerically (2.2 before 2.10); other ids last, by name.
 
     >>> sorted(["2.10", "nose", "2.2", "10.1"], key=landmark_sort_key)

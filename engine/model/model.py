@@ -13,14 +13,19 @@ True
 from __future__ import annotations
 
 import re
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.errors import ParameterError, UserError
 from engine.model.cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
 from engine.model.parameters import NAME_PATTERN, Parameter, ParameterTree
+
+if TYPE_CHECKING:
+    from engine.deform.deformer import Deformer
 
 COLOR_PATTERN = re.compile(r"#[0-9a-fA-F]{6}")
 LANDMARK_PATTERN = re.compile(r"[A-Za-z0-9_.\-]+")
@@ -39,7 +44,7 @@ class InfluenceRegion:
     weights: np.ndarray = field(default_factory=lambda: np.zeros(0))
     displacements: np.ndarray | None = None
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         idx = np.asarray(self.indices, dtype=np.int64).reshape(-1)
         w = np.asarray(self.weights, dtype=float).reshape(-1)
         if idx.shape != w.shape:
@@ -91,9 +96,11 @@ class Model:
         renderers prefer it to ``part_colors``.
     """
 
-    def __init__(self, vertices, faces, parts=None, vertex_part=None, parameters=None,
-                 regions=None, landmarks=None, name: str = "model", description: str = "",
-                 part_colors: Mapping[str, str] | None = None, vertex_colors=None):
+    def __init__(self, vertices: npt.ArrayLike, faces: npt.ArrayLike, parts: Sequence[str] | None = None,
+                 vertex_part: npt.ArrayLike | None = None, parameters: ParameterTree | None = None,
+                 regions: Mapping[str, InfluenceRegion] | None = None, landmarks: Mapping[str, int] | None = None,
+                 name: str = "model", description: str = "",
+                 part_colors: Mapping[str, str] | None = None, vertex_colors: npt.ArrayLike | None = None) -> None:
         self.vertices = np.ascontiguousarray(np.asarray(vertices, dtype=float).reshape(-1, 3))
         self.faces = np.asarray(faces, dtype=np.int64).reshape(-1)
         n = len(self.vertices)
@@ -110,7 +117,7 @@ class Model:
         self.part_colors = dict(part_colors or {})
         self.vertex_colors = None if vertex_colors is None else np.asarray(vertex_colors, dtype=np.uint8)
         self.revision = 0
-        self._deformer = None
+        self._deformer: Deformer | None = None
         self.validate()
 
     # -- validation ------------------------------------------------------
@@ -214,7 +221,7 @@ class Model:
             out[index[name]] = float(v)
         return out
 
-    def deformer(self):
+    def deformer(self) -> Deformer:
         """The cached :class:`~engine.deform.Deformer`, rebuilt after edits."""
         from engine.deform.deformer import Deformer
 
@@ -251,11 +258,14 @@ class Model:
         try:
             self.validate()
         except UserError:
-            self.regions[name] = old
+            if old is None:
+                del self.regions[name]
+            else:
+                self.regions[name] = old
             raise
         self.changed()
 
-    def reordered(self, order) -> Model:
+    def reordered(self, order: npt.ArrayLike) -> Model:
         """A copy with vertex ``i`` taken from old vertex ``order[i]``; faces, regions and
         landmarks renumbered. ``order`` must be a permutation of ``range(n_vertices)``."""
         order = np.asarray(order, dtype=np.int64)

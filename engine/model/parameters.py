@@ -21,10 +21,12 @@ are added or removed.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Collection, Iterable, Iterator
 from dataclasses import dataclass, field, replace
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
 from engine.deform.transforms import rotation_about_axis, translation
 from engine.errors import ParameterError
@@ -77,7 +79,7 @@ class Parameter:
     field: bool = False
     description: str = ""
 
-    def __post_init__(self):
+    def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not NAME_PATTERN.fullmatch(self.name):
             raise ParameterError(
                 f"parameter name {self.name!r} is not allowed: use letters, digits, '_', '.' and '-', "
@@ -120,13 +122,13 @@ class Parameter:
             return np.eye(4)
         return translation(value * self.direction)
 
-    def copy(self, **changes) -> Parameter:
+    def copy(self, **changes: Any) -> Parameter:
         """A copy with some attributes changed (arrays are copied)."""
         base = replace(self, axis=self.axis.copy(), pivot=self.pivot.copy(), direction=self.direction.copy())
         return replace(base, **changes) if changes else base
 
 
-def _vector(value, name: str, what: str) -> np.ndarray:
+def _vector(value: npt.ArrayLike, name: str, what: str) -> np.ndarray:
     try:
         v = np.array(value, dtype=float).reshape(3)
     except (TypeError, ValueError):
@@ -199,7 +201,7 @@ class ParameterTree:
         done: list[str] = []
         seen: set[str] = set()
 
-        def visit(n: str):
+        def visit(n: str) -> None:
             if n in seen:
                 return
             parent = self._params[n].parent
@@ -277,7 +279,7 @@ class ParameterTree:
                     "so it cannot have children (it must stay a leaf, group 2)")
 
 
-def _suggest(name: str, known) -> str:
+def _suggest(name: str, known: Collection[str]) -> str:
     import difflib
 
     close = difflib.get_close_matches(str(name), list(known), n=1)

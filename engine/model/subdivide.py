@@ -22,14 +22,15 @@ from scipy import sparse
 from engine.model.model import InfluenceRegion, Model
 
 
-def subdivision_matrix(polygons: list[np.ndarray], n_vertices: int, k: int):
+def subdivision_matrix(polygons: list[np.ndarray], n_vertices: int,
+                       k: int) -> tuple[sparse.csr_matrix, list[list[int]]]:
     """Sparse ``S`` (new × old) and the new polygons for a k × k split of every polygon.
 
     Old vertex ``i`` keeps index ``i``; shared edge points are created once.
     """
     if k < 1:
         raise ValueError("k must be at least 1")
-    keys: dict[tuple, int] = {}
+    keys: dict[tuple[tuple[int, int], ...], int] = {}
     rows, cols, vals = list(range(n_vertices)), list(range(n_vertices)), [1.0] * n_vertices
     for i in range(n_vertices):
         keys[((i, k * k),)] = i
@@ -47,25 +48,24 @@ def subdivision_matrix(polygons: list[np.ndarray], n_vertices: int, k: int):
             vals.append(w / (k * k))
         return idx
 
-    new_polys = []
+    new_polys: list[list[int]] = []
     for poly in polygons:
-        poly = [int(v) for v in poly]
-        if len(poly) == 4:
-            a, b, c, d = poly
+        corners = [int(v) for v in poly]
+        if len(corners) == 4:
+            a, b, c, d = corners
             grid = [[point({a: (k - i) * (k - j), b: i * (k - j), c: i * j, d: (k - i) * j})
                      for j in range(k + 1)] for i in range(k + 1)]
-            for i in range(k):
-                for j in range(k):
-                    new_polys.append([grid[i][j], grid[i + 1][j], grid[i + 1][j + 1], grid[i][j + 1]])
-        elif len(poly) == 3:
-            a, b, c = poly
-            grid = {(i, j): point({a: (k - i - j) * k, b: i * k, c: j * k})
-                    for i in range(k + 1) for j in range(k + 1 - i)}
+            new_polys.extend([grid[i][j], grid[i + 1][j], grid[i + 1][j + 1], grid[i][j + 1]]
+                             for i in range(k) for j in range(k))
+        elif len(corners) == 3:
+            a, b, c = corners
+            tri_grid = {(i, j): point({a: (k - i - j) * k, b: i * k, c: j * k})
+                        for i in range(k + 1) for j in range(k + 1 - i)}
             for i in range(k):
                 for j in range(k - i):
-                    new_polys.append([grid[i, j], grid[i + 1, j], grid[i, j + 1]])
+                    new_polys.append([tri_grid[i, j], tri_grid[i + 1, j], tri_grid[i, j + 1]])
                     if i + j < k - 1:
-                        new_polys.append([grid[i + 1, j], grid[i + 1, j + 1], grid[i, j + 1]])
+                        new_polys.append([tri_grid[i + 1, j], tri_grid[i + 1, j + 1], tri_grid[i, j + 1]])
         else:
             raise ValueError("subdivision handles triangles and quads only")
     S = sparse.csr_matrix((vals, (rows, cols)), shape=(len(keys), n_vertices))

@@ -16,7 +16,13 @@ mm, angles degrees.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
+from numpy.typing import ArrayLike
+
+if TYPE_CHECKING:
+    from engine.model import Model
 
 VIEWS = {
     # direction from the head towards the camera; the head faces +Z, +Y up,
@@ -30,7 +36,7 @@ MARGIN = 0.06                          # fraction of the picture kept free aroun
 NECK_SHOWN = 0.10                      # neck shown below the chin, as a fraction of chin-to-crown height
 
 
-def framed_points(model) -> np.ndarray:
+def framed_points(model: Model) -> np.ndarray:
     """Rest-pose points the camera must show: the head down to a little below the chin.
 
     With a chin landmark (MPEG-4 2.1) the neck below it is left to be cropped, so
@@ -48,7 +54,7 @@ def framed_points(model) -> np.ndarray:
     return points[keep]
 
 
-def place_camera(camera, points: np.ndarray, toward_camera, width: int, height: int) -> None:
+def place_camera(camera: Any, points: np.ndarray, toward_camera: ArrayLike, width: int, height: int) -> None:
     """Set a pyvista camera to :func:`camera_pose` (perspective, fits every point with a margin).
 
     ``points`` (N, 3) mm; ``toward_camera`` the direction from the model to
@@ -62,7 +68,8 @@ def place_camera(camera, points: np.ndarray, toward_camera, width: int, height: 
     camera.clipping_range = near_far
 
 
-def camera_pose(points: np.ndarray, toward_camera, width: int, height: int):
+def camera_pose(points: np.ndarray, toward_camera: ArrayLike, width: int,
+                height: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, tuple[float, float]]:
     """Focal point, position, view-up and clipping range (mm) of a perspective camera
     looking along ``-toward_camera`` that fits every point with a margin."""
     back = np.asarray(toward_camera, dtype=float)

@@ -35,8 +35,10 @@ import struct
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from engine.errors import UserError
 from engine.formats.gltf_read import (
@@ -53,6 +55,10 @@ from engine.formats.gltf_read import (
     read_gltf,
 )
 
+if TYPE_CHECKING:
+    from engine.model import Model, Parameter
+    from engine.outputs.part_layout import PartLayout
+
 __all__ = ["GltfFileError", "MorphTarget", "export_gltf", "glb_bytes", "gltf_document", "parameter_targets",
            "pose_targets", "read_gltf", "skeleton_parameters", "target_value"]
 
@@ -61,9 +67,6 @@ POSES_FORMAT = "artificial-person-poses"
 
 _FLOAT, _UBYTE, _USHORT, _UINT = 5126, 5121, 5123, 5125
 _ARRAY_BUFFER, _ELEMENT_ARRAY_BUFFER = 34962, 34963
-
-
-
 
 
 @dataclass
@@ -85,7 +88,7 @@ class MorphTarget:
     chord_error_mm: float = 0.0
 
     def metadata(self) -> dict:
-        out = {"name": self.name, "source": self.source}
+        out: dict[str, object] = {"name": self.name, "source": self.source}
         if self.value is not None:
             out.update(value=self.value, linearised=self.linearised, chord_error_mm=round(self.chord_error_mm, 4))
         return out
@@ -93,7 +96,7 @@ class MorphTarget:
 
 # -- targets -------------------------------------------------------------------
 
-def target_value(parameter) -> float:
+def target_value(parameter: Parameter) -> float:
     """The value a parameter's target shows at weight 1: 1 where 1 is in the parameter's
     range, else its maximum, else (a range that ends at the default) its minimum."""
     if parameter.minimum <= 1.0 <= parameter.maximum:
@@ -101,7 +104,7 @@ def target_value(parameter) -> float:
     return parameter.maximum if parameter.maximum != parameter.default else parameter.minimum
 
 
-def parameter_targets(model, names: Iterable[str] | None = None,
+def parameter_targets(model: Model, names: Iterable[str] | None = None,
                       values: Mapping[str, float] | None = None) -> list[MorphTarget]:
     """Morph targets for the named parameters (default: all, in tree order as ``info`` shows them).
 
@@ -110,19 +113,19 @@ def parameter_targets(model, names: Iterable[str] | None = None,
     model.deform()`` in mm, the other parameters at their defaults.
     """
     tree = model.parameters
-    names = [n for n, _ in tree.depth_first()] if names is None else list(names)
+    selected = [n for n, _ in tree.depth_first()] if names is None else list(names)
     values = dict(values or {})
-    for name in list(names) + list(values):
+    for name in selected + list(values):
         tree[name]                                   # unknown names raise with a suggestion
-    if len(set(names)) != len(names):
+    if len(set(selected)) != len(selected):
         raise UserError("a parameter is named twice in the selection")
-    stray = sorted(set(values) - set(names))
+    stray = sorted(set(values) - set(selected))
     if stray:
         raise UserError(f"a target value is given for '{stray[0]}', which is not exported")
     model.check_values(values)
     rest = model.deform()
     targets = []
-    for name in names:
+    for name in selected:
         p = tree[name]
         value = float(values.get(name, target_value(p)))
         if value == p.default:
@@ -137,7 +140,7 @@ def parameter_targets(model, names: Iterable[str] | None = None,
     return targets
 
 
-def pose_targets(model, path: str | Path | None = None, group: str = "arkit",
+def pose_targets(model: Model, path: str | Path | None = None, group: str = "arkit",
                  names: Iterable[str] | None = None) -> list[MorphTarget]:
     """Morph targets from a file of displacement fields (format ``artificial-person-poses``,
     ``/<group>/<name>/{indices, displacements}`` in mm; default: the shipped
@@ -191,8 +194,11 @@ def pose_targets(model, path: str | Path | None = None, group: str = "arkit",
 class _Buffer:
     """The binary buffer, one bufferView per array, each aligned to 4 bytes."""
 
-    def __init__(self):
-        self.chunks, self.length, self.views, self.accessors = [], 0, [], []
+    def __init__(self) -> None:
+        self.chunks: list[bytes] = []
+        self.length = 0
+        self.views: list[dict[str, int]] = []
+        self.accessors: list[dict[str, object]] = []
 
     def add(self, array: np.ndarray, target: int | None, bounds: bool = True, kind: str | None = None) -> int:
         array = np.ascontiguousarray(array)
@@ -206,8 +212,9 @@ class _Buffer:
         self.length += len(data) + pad
         component = {np.dtype(np.float32): _FLOAT, np.dtype(np.uint8): _UBYTE, np.dtype(np.uint16): _USHORT,
                      np.dtype(np.uint32): _UINT}[array.dtype]
-        accessor = {"bufferView": len(self.views) - 1, "componentType": component, "count": int(array.shape[0]),
-                    "type": kind or ("SCALAR" if array.ndim == 1 else f"VEC{array.shape[1]}")}
+        accessor: dict[str, object] = {
+            "bufferView": len(self.views) - 1, "componentType": component, "count": int(array.shape[0]),
+            "type": kind or ("SCALAR" if array.ndim == 1 else f"VEC{array.shape[1]}")}
         if bounds and len(array):
             flat = array.reshape(len(array), -1)
             # float32 values written as Python floats: the JSON numbers round-trip to the same float32
@@ -220,11 +227,11 @@ class _Buffer:
         return b"".join(self.chunks)
 
 
-def _number(v):
+def _number(v: np.integer | np.floating) -> int | float:
     return int(v) if isinstance(v, np.integer) else float(v)
 
 
-def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bool = True,
+def gltf_document(model: Model, targets: Iterable[MorphTarget] = (), target_normals: bool = True,
                   skeleton: bool = False) -> tuple[dict, bytes]:
     """The glTF JSON document (without ``buffers[0].uri``) and its binary buffer.
 
@@ -257,14 +264,16 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
     points = points.copy()                  # the layout hands out one buffer, refilled on every call
     moved = [layout.points_and_normals(rest + t.displacements)[1] for t in targets] if target_normals else []
     buf = _Buffer()
-    primitives, materials = [], []
+    primitives: list[dict[str, object]] = []
+    materials: list[dict[str, object]] = []
     for k, part in enumerate(layout.parts):
         start, stop = layout.slices[k]
         used = layout.used(k)
         colour, _, _, _, power = part_material(part, model.part_colors)
         rgb = None if model.vertex_colors is None else model.vertex_colors[used]
         if rgb is not None and np.all(rgb == rgb[0]):
-            colour, rgb = "#%02x%02x%02x" % tuple(int(c) for c in rgb[0]), None
+            red, green, blue = (int(c) for c in rgb[0])
+            colour, rgb = f"#{red:02x}{green:02x}{blue:02x}", None
         base = [1.0, 1.0, 1.0] if rgb is not None else _srgb_to_linear(_hex_rgb(colour)).tolist()
         materials.append({"name": part, "doubleSided": True,
                           "pbrMetallicRoughness": {"baseColorFactor": [round(c, 6) for c in base] + [1.0],
@@ -279,14 +288,15 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
             attributes["JOINTS_0"] = buf.add(rig.joints[used], _ARRAY_BUFFER, bounds=False)
             attributes["WEIGHTS_0"] = buf.add(rig.weights[used], _ARRAY_BUFFER, bounds=False)
         triangles = np.asarray(_triangles(layout, k), dtype=np.uint16 if stop - start < 65535 else np.uint32)
-        primitive = {"attributes": attributes, "indices": buf.add(triangles.reshape(-1), _ELEMENT_ARRAY_BUFFER,
-                                                                  bounds=False),
-                     "material": k, "mode": _TRIANGLES, "extras": {"part": part}}
+        indices = buf.add(triangles.reshape(-1), _ELEMENT_ARRAY_BUFFER, bounds=False)
+        primitive: dict[str, object] = {"attributes": attributes, "indices": indices,
+                                        "material": k, "mode": _TRIANGLES, "extras": {"part": part}}
         if targets:
-            zero = None
-            primitive["targets"] = []
+            zero: int | None = None
+            entries: list[dict[str, int]] = []
+            primitive["targets"] = entries
             for i, t in enumerate(targets):
-                entry = {}
+                entry: dict[str, int] = {}
                 arrays = {"POSITION": (t.displacements[used] * METRES_PER_MM).astype(np.float32)}
                 if target_normals:
                     arrays["NORMAL"] = (moved[i][start:stop] - normals[start:stop]).astype(np.float32)
@@ -297,22 +307,23 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
                         entry[key] = zero
                     else:
                         entry[key] = buf.add(array, _ARRAY_BUFFER)
-                primitive["targets"].append(entry)
+                entries.append(entry)
         primitives.append(primitive)
-    mesh = {"name": model.name, "primitives": primitives}
+    mesh: dict[str, object] = {"name": model.name, "primitives": primitives}
     if targets:
         mesh["weights"] = [0.0] * len(targets)
         mesh["extras"] = {"targetNames": names, "targets": [t.metadata() for t in targets]}
     from engine import __version__
 
-    nodes, roots = [{"name": model.name, "mesh": 0}], [0]
+    nodes: list[dict[str, Any]] = [{"name": model.name, "mesh": 0}]
+    roots = [0]
     skins = []
     if rig is not None:
         nodes[0]["skin"] = 0
         roots.append(len(nodes))
         skins.append(rig.skin(nodes, buf))
     data = buf.data()
-    document = {
+    document: dict[str, object] = {
         "asset": {"version": "2.0", "generator": f"Artificial Person {__version__}",
                   "extras": {"model": model.name, "description": model.description, "units": "metres"}},
         "scene": 0, "scenes": [{"name": model.name, "nodes": roots}],
@@ -324,7 +335,7 @@ def gltf_document(model, targets: Iterable[MorphTarget] = (), target_normals: bo
     return document, data
 
 
-def skeleton_parameters(model) -> list[str]:
+def skeleton_parameters(model: Model) -> list[str]:
     """The parameters a skeleton exports as joints: the rigid group-1 (non-leaf) ones, in tree order."""
     tree = model.parameters
     return [name for name, _ in tree.depth_first() if tree.group(name) == 1]
@@ -343,7 +354,7 @@ class _Rig:
     to the four largest and renormalised).
     """
 
-    def __init__(self, model):
+    def __init__(self, model: Model) -> None:
         tree = model.parameters
         self.names = skeleton_parameters(model)
         for name in self.names:
@@ -368,16 +379,18 @@ class _Rig:
         self.frames = {name: _joint_frame(tree[name]) for name in self.names}
         self.tree = tree
 
-    def skin(self, nodes: list[dict], buf: _Buffer) -> dict:
+    def skin(self, nodes: list[dict[str, Any]], buf: _Buffer) -> dict:
         """Append the joint nodes to ``nodes``; return the skin."""
         first = len(nodes)
-        index = {name: first + 1 + i for i, name in enumerate(self.names)}
+        index: dict[str | None, int] = {name: first + 1 + i for i, name in enumerate(self.names)}
         nodes.append({"name": "root", "children": []})
         ibm = [np.eye(4)]
         for name in self.names:
             p = self.tree[name]
             rotation, origin = self.frames[name]
-            parent_rotation, parent_origin = self.frames.get(p.parent, (np.eye(3), np.zeros(3)))
+            # a root parameter, or one whose parent is not a joint, hangs from the root joint
+            parent_rotation, parent_origin = self.frames[p.parent] if p.parent in self.frames \
+                else (np.eye(3), np.zeros(3))
             local = parent_rotation.T @ rotation
             node = {"name": name, "translation": (parent_rotation.T @ (origin - parent_origin)).tolist(),
                     "rotation": _quaternion(local).tolist(),
@@ -397,7 +410,7 @@ class _Rig:
                 "inverseBindMatrices": buf.add(matrices, None, bounds=False, kind="MAT4")}
 
 
-def _joint_frame(p) -> tuple[np.ndarray, np.ndarray]:
+def _joint_frame(p: Parameter) -> tuple[np.ndarray, np.ndarray]:
     """Rest orientation (local +X along the axis or direction) and origin (the pivot, metres) of a joint."""
     if p.kind == "rotation":
         return _rotation_from_x(p.axis), p.pivot * METRES_PER_MM
@@ -423,21 +436,18 @@ def _quaternion(r: np.ndarray) -> np.ndarray:
     k = int(np.argmax(options))
     s = 2 * np.sqrt(options[k])
     if k == 0:
-        q = [(r[2, 1] - r[1, 2]) / s, (r[0, 2] - r[2, 0]) / s, (r[1, 0] - r[0, 1]) / s, s / 4]
+        components = [(r[2, 1] - r[1, 2]) / s, (r[0, 2] - r[2, 0]) / s, (r[1, 0] - r[0, 1]) / s, s / 4]
     elif k == 1:
-        q = [s / 4, (r[0, 1] + r[1, 0]) / s, (r[0, 2] + r[2, 0]) / s, (r[2, 1] - r[1, 2]) / s]
+        components = [s / 4, (r[0, 1] + r[1, 0]) / s, (r[0, 2] + r[2, 0]) / s, (r[2, 1] - r[1, 2]) / s]
     elif k == 2:
-        q = [(r[0, 1] + r[1, 0]) / s, s / 4, (r[1, 2] + r[2, 1]) / s, (r[0, 2] - r[2, 0]) / s]
+        components = [(r[0, 1] + r[1, 0]) / s, s / 4, (r[1, 2] + r[2, 1]) / s, (r[0, 2] - r[2, 0]) / s]
     else:
-        q = [(r[0, 2] + r[2, 0]) / s, (r[1, 2] + r[2, 1]) / s, s / 4, (r[1, 0] - r[0, 1]) / s]
-    q = np.array(q)
+        components = [(r[0, 2] + r[2, 0]) / s, (r[1, 2] + r[2, 1]) / s, s / 4, (r[1, 0] - r[0, 1]) / s]
+    q = np.array(components)
     return q / np.linalg.norm(q)
 
 
-
-
-
-def _triangles(layout, k: int) -> np.ndarray:
+def _triangles(layout: PartLayout, k: int) -> np.ndarray:
     from engine.model.cells import cells_to_triangles
 
     return cells_to_triangles(layout.cells[k])
@@ -447,10 +457,10 @@ def _hex_rgb(colour: str) -> np.ndarray:
     return np.array([int(colour[i:i + 2], 16) for i in (1, 3, 5)]) / 255.0
 
 
-def _srgb_to_linear(c) -> np.ndarray:
+def _srgb_to_linear(c: ArrayLike) -> np.ndarray:
     """sRGB in [0, 1] → linear light, as glTF's colour factors and COLOR_0 are."""
-    c = np.asarray(c, dtype=float)
-    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+    srgb = np.asarray(c, dtype=float)
+    return np.where(srgb <= 0.04045, srgb / 12.92, ((srgb + 0.055) / 1.055) ** 2.4)
 
 
 def glb_bytes(document: dict, data: bytes) -> bytes:
@@ -463,7 +473,7 @@ def glb_bytes(document: dict, data: bytes) -> bytes:
             + struct.pack("<II", len(data), GLB_BIN) + data)
 
 
-def export_gltf(model, path: str | Path, targets: Iterable[MorphTarget] = (),
+def export_gltf(model: Model, path: str | Path, targets: Iterable[MorphTarget] = (),
                 target_normals: bool = True, skeleton: bool = False) -> GltfMesh:
     """Write ``model`` with ``targets`` as ``path`` (``.glb``, or ``.gltf`` with a ``.bin`` beside it).
 

@@ -10,7 +10,12 @@ Lengths are mm.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
+
+if TYPE_CHECKING:
+    from engine.model import Model
 
 
 class PartLayout:
@@ -24,7 +29,7 @@ class PartLayout:
     sparse product for all parts at once.
     """
 
-    def __init__(self, model):
+    def __init__(self, model: Model) -> None:
         from scipy import sparse
 
         from engine.model.cells import cell_sizes, cell_starts, cells_to_triangles, index_mask
@@ -33,8 +38,12 @@ class PartLayout:
         counts = cell_sizes(faces)
         starts = cell_starts(counts)
         face_part = model.vertex_part[faces[starts + 1]] if len(counts) else counts
-        self.parts, self.slices, self.cells = [], [], []
-        gather, triangles, offset = [], [], 0
+        self.parts: list[str] = []
+        self.slices: list[tuple[int, int]] = []
+        self.cells: list[np.ndarray] = []
+        gather: list[np.ndarray] = []
+        triangles: list[np.ndarray] = []
+        offset = 0
         for part_index, part in enumerate(model.parts):
             keep = face_part == part_index
             if not keep.any():
@@ -66,7 +75,7 @@ class PartLayout:
         start, stop = self.slices[k]
         return self.gather[start:stop]
 
-    def points_and_normals(self, positions: np.ndarray):
+    def points_and_normals(self, positions: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The stacked mesh points for ``positions`` and their unit normals (zero where undefined)."""
         points = np.take(positions, self.gather, axis=0, out=self._points)
         # one gather of every corner's coordinates, laid out (xyz, corner, triangle)

@@ -35,7 +35,7 @@ _PUPIL, _IRIS, _IRIS_RIM = "#141110", "#5b7a8f", "#2e3e49"
 _PUPIL_DEGREES, _IRIS_DEGREES = 11.0, 30.0   # half-angles on the eyeball, seen from its centre
 
 
-def part_material(name: str, colors: Mapping[str, str] | None = None):
+def part_material(name: str, colors: Mapping[str, str] | None = None) -> tuple[str, float, float, float, float]:
     """(hex colour, ambient, diffuse, specular, specular power) for a part, by its name."""
     lowered = name.lower()
     material = _SKIN
@@ -44,7 +44,7 @@ def part_material(name: str, colors: Mapping[str, str] | None = None):
             material = candidate
             break
     if colors and name in colors:
-        material = (colors[name],) + material[1:]
+        material = (colors[name], *material[1:])
     return material
 
 

@@ -12,7 +12,14 @@ True
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 import numpy as np
+
+Colour = Sequence[int] | np.ndarray
+"""An RGB colour: three values 0–255."""
+Point = Sequence[float] | np.ndarray
+"""A point (x, y) in pixels."""
 
 _ROWS = {
     "0": "01110 10001 10011 10101 11001 10001 01110", "1": "00100 01100 00100 00100 00100 00100 01110",
@@ -43,7 +50,7 @@ def glyph(ch: str) -> np.ndarray:
     return GLYPHS.get(ch, GLYPHS.get(ch.upper(), GLYPHS[" "]))
 
 
-def draw_text(image: np.ndarray, text: str, x: int, y: int, colour, scale: int = 2) -> None:
+def draw_text(image: np.ndarray, text: str, x: int, y: int, colour: Colour, scale: int = 2) -> None:
     """Write ``text`` with its top left at (x, y); each glyph is 5 × 7 cells of ``scale`` pixels."""
     for ch in text:
         mask = glyph(ch).repeat(scale, 0).repeat(scale, 1)
@@ -54,7 +61,7 @@ def draw_text(image: np.ndarray, text: str, x: int, y: int, colour, scale: int =
         x += 6 * scale
 
 
-def draw_line(image: np.ndarray, a, b, colour, thick: bool = True) -> None:
+def draw_line(image: np.ndarray, a: Point, b: Point, colour: Colour, thick: bool = True) -> None:
     """A straight line from point ``a`` to ``b`` (x, y), two pixels thick unless ``thick=False``."""
     n = int(max(abs(b[0] - a[0]), abs(b[1] - a[1]))) + 1
     t = np.linspace(0.0, 1.0, n + 1)
@@ -67,14 +74,14 @@ def draw_line(image: np.ndarray, a, b, colour, thick: bool = True) -> None:
         image[y[keep], x[keep]] = colour
 
 
-def draw_dot(image: np.ndarray, p, colour, radius: int) -> None:
+def draw_dot(image: np.ndarray, p: Point, colour: Colour, radius: int) -> None:
     """A filled square of side ``2·radius + 1`` centred on ``p`` (x, y)."""
-    x, y = int(round(p[0])), int(round(p[1]))
+    x, y = round(float(p[0])), round(float(p[1]))
     h, w = image.shape[:2]
     image[max(y - radius, 0):min(y + radius + 1, h), max(x - radius, 0):min(x + radius + 1, w)] = colour
 
 
-def draw_box(image: np.ndarray, x: int, y: int, w: int, h: int, colour) -> None:
+def draw_box(image: np.ndarray, x: int, y: int, w: int, h: int, colour: Colour) -> None:
     """The outline of a ``w`` × ``h`` rectangle with its top left at (x, y)."""
     image[y, x:x + w] = colour
     image[min(y + h, image.shape[0] - 1), x:x + w] = colour

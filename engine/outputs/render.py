@@ -25,11 +25,13 @@ their colours :mod:`engine.outputs.part_materials` and the PNG writer
 
 from __future__ import annotations
 
+import contextlib
 import ctypes.util
 import os
 import sys
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from pathlib import Path
+from typing import TYPE_CHECKING, SupportsInt
 
 import numpy as np
 
@@ -38,6 +40,15 @@ from engine.outputs.camera import VIEW_ANGLE, VIEWS, camera_pose, framed_points
 from engine.outputs.part_layout import PartLayout
 from engine.outputs.part_materials import colour_rgb, eye_colours, hex_rgb, is_eyeball, part_material
 from engine.outputs.png_file import write_png
+
+if TYPE_CHECKING:
+    from vtkmodules.vtkCommonCore import vtkDataArray
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow
+
+    from engine.model import Model
+
+    _MeshArrays = tuple[vtkDataArray, np.ndarray, vtkDataArray, np.ndarray]
+    """A part's VTK points and normals arrays, each with a writable numpy view on it."""
 
 # VIEWS (engine.outputs.camera) and write_png (engine.outputs.png_file) are importable from here too.
 __all__ = ["BACKGROUND", "DEFAULT_SIZE", "MAX_SIZE", "VIEWS", "FrameRenderer", "check_size", "render_model",
@@ -48,7 +59,7 @@ MAX_SIZE = 8192
 BACKGROUND = ("#cfd1d4", "#eef0f2")   # bottom, top of a faint vertical gradient
 
 
-def render_model(model, values: Mapping[str, float] | None = None, view: str = "front",
+def render_model(model: Model, values: Mapping[str, float] | None = None, view: str = "front",
                  size: tuple[int, int] = DEFAULT_SIZE, path: str | Path | None = None) -> np.ndarray:
     """Render one pose of ``model`` offscreen and return the picture.
 
@@ -113,8 +124,8 @@ class FrameRenderer:
     plotter would also import matplotlib, which alone takes about a second.
     """
 
-    def __init__(self, model, size: tuple[int, int] = (640, 480), view: str = "front",
-                 antialias: bool = True):
+    def __init__(self, model: Model, size: tuple[int, int] = (640, 480), view: str = "front",
+                 antialias: bool = True) -> None:
         if view not in VIEWS:
             raise UserError(f"unknown view '{view}' (use {', '.join(VIEWS)})")
         self.width, self.height = check_size(size)
@@ -122,8 +133,8 @@ class FrameRenderer:
         self.view = view
         self.antialias = bool(antialias)
         self._layout = PartLayout(model)
-        self._window = None
-        self._meshes = []
+        self._window: vtkRenderWindow | None = None
+        self._meshes: list[_MeshArrays] = []
         _choose_offscreen_backend()
         from vtkmodules.util.numpy_support import vtk_to_numpy
         from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
@@ -144,7 +155,7 @@ class FrameRenderer:
             raise ValueError(f"expected ({self.model.n_vertices}, 3) positions, got shape {positions.shape}")
         points, normals = self._layout.points_and_normals(positions)
         for (start, stop), (point_array, point_view, normal_array, normal_view) in zip(
-                self._layout.slices, self._meshes):
+                self._layout.slices, self._meshes, strict=True):
             point_view[...] = points[start:stop]
             normal_view[...] = normals[start:stop]
             point_array.Modified()
@@ -155,6 +166,8 @@ class FrameRenderer:
         """Draw, then read the front buffer (as pyvista's screenshot does: with
         multisampling, it holds the gamma-correct resolve of the frame)."""
         window = self._window
+        if window is None:
+            raise RuntimeError("this FrameRenderer is closed")
         window.Render()
         window.GetPixelData(0, 0, self.width - 1, self.height - 1, 1, self._pixels, 0)
         image = self._vtk_to_numpy(self._pixels).reshape(self.height, self.width, -1)
@@ -171,17 +184,15 @@ class FrameRenderer:
     def __enter__(self) -> FrameRenderer:
         return self
 
-    def __exit__(self, *exc) -> None:
+    def __exit__(self, *exc: object) -> None:
         self.close()
 
-    def __del__(self):
-        try:
+    def __del__(self) -> None:
+        with contextlib.suppress(Exception):     # interpreter shutting down
             self.close()
-        except Exception:     # interpreter shutting down
-            pass
 
 
-def check_size(size) -> tuple[int, int]:
+def check_size(size: Iterable[SupportsInt]) -> tuple[int, int]:
     """``(width, height)`` as two ints in 1..8192 pixels, or :class:`UserError`."""
     try:
         width, height = (int(s) for s in size)
@@ -192,7 +203,8 @@ def check_size(size) -> tuple[int, int]:
     return width, height
 
 
-def _build_scene(model, layout: PartLayout, view: str, width: int, height: int, antialias: bool):
+def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height: int,
+                 antialias: bool) -> tuple[vtkRenderWindow, list[_MeshArrays]]:
     """Render window with the background, one actor per part (at the rest pose),
     lights, camera and anti-aliasing.
 
@@ -216,12 +228,12 @@ def _build_scene(model, layout: PartLayout, view: str, width: int, height: int, 
     renderer.GradientBackgroundOn()
     renderer.AutomaticLightCreationOff()
     points, normals = layout.points_and_normals(model.vertices)
-    meshes = []
-    for k, (part, cells) in enumerate(zip(layout.parts, layout.cells)):
+    meshes: list[_MeshArrays] = []
+    for k, (part, cells) in enumerate(zip(layout.parts, layout.cells, strict=True)):
         start, stop = layout.slices[k]
         used = layout.used(k)
-        colour, ambient, diffuse, specular, power = part_material(part, model.part_colors)
-        colour = colour_rgb(colour, part_material(part)[0])
+        colour_name, ambient, diffuse, specular, power = part_material(part, model.part_colors)
+        colour = colour_rgb(colour_name, part_material(part)[0])
         mesh = vtkPolyData()
         point_array = numpy_to_vtk(points[start:stop], deep=True)
         vtk_points = vtkPoints()
@@ -263,10 +275,10 @@ def _build_scene(model, layout: PartLayout, view: str, width: int, height: int, 
         prop.SetInterpolationToPhong()                  # uses our point normals
         renderer.AddActor(actor)
         meshes.append((point_array, vtk_to_numpy(point_array), normal_array, vtk_to_numpy(normal_array)))
-    for position, intensity in _LIGHTS:
+    for light_position, intensity in _LIGHTS:
         light = vtkLight()
         light.SetLightTypeToCameraLight()
-        light.SetPosition(*position)
+        light.SetPosition(*light_position)
         light.SetFocalPoint(0.0, 0.0, 0.0)
         light.SetIntensity(intensity)
         renderer.AddLight(light)

@@ -26,7 +26,9 @@ from __future__ import annotations
 import difflib
 import re
 import unicodedata
+from collections.abc import Sequence
 from dataclasses import dataclass, replace
+from typing import Protocol
 
 from engine.commands.command_files import HighLevelCommand, parse_commands_text
 from engine.errors import CommandError
@@ -34,6 +36,17 @@ from engine.errors import CommandError
 _TAG = re.compile(r"<[^<>]*>")
 _WELL_FORMED = re.compile(r"<\s*[A-Za-z_][A-Za-z0-9_.\-]*(\s+[^<>]*?)?/\s*>$", re.S)
 _WORD = re.compile(r"[^\W_]+(?:['’\-][^\W_]+)*", re.UNICODE)
+
+
+class SpokenWord(Protocol):
+    """A word as the synthesizer timed it (e.g. :class:`engine.speech.synthesis.Segment`), ms."""
+
+    @property
+    def label(self) -> str: ...
+    @property
+    def start_ms(self) -> float: ...
+    @property
+    def end_ms(self) -> float: ...
 
 
 @dataclass
@@ -73,7 +86,7 @@ def parse_script(source: str, name: str = "<text>") -> Script:
     return Script(text, words, commands, name)
 
 
-def anchored_commands(script: Script, spoken_words) -> list[HighLevelCommand]:
+def anchored_commands(script: Script, spoken_words: Sequence[SpokenWord]) -> list[HighLevelCommand]:
     """The script's commands with ``at`` filled in from the synthesizer's word timings.
 
     ``spoken_words`` are segments with ``label``, ``start_ms``, ``end_ms`` (the
@@ -81,7 +94,7 @@ def anchored_commands(script: Script, spoken_words) -> list[HighLevelCommand]:
     """
     starts = word_start_times(script.words, spoken_words)
     end = spoken_words[-1].end_ms if spoken_words else 0.0
-    out = []
+    out: list[HighLevelCommand] = []
     for inline in script.commands:
         command = inline.command
         if "at" not in command.arguments:
@@ -91,7 +104,7 @@ def anchored_commands(script: Script, spoken_words) -> list[HighLevelCommand]:
     return out
 
 
-def word_start_times(words: list[str], spoken_words) -> list[float]:
+def word_start_times(words: list[str], spoken_words: Sequence[SpokenWord]) -> list[float]:
     """Start time of each written word, matched to the spoken words by their letters."""
     if not spoken_words:
         return [0.0] * len(words)
@@ -101,7 +114,7 @@ def word_start_times(words: list[str], spoken_words) -> list[float]:
     for block in difflib.SequenceMatcher(a=written, b=spoken, autojunk=False).get_matching_blocks():
         for k in range(block.size):
             match_of[block.a + k] = block.b + k
-    starts = []
+    starts: list[float] = []
     next_spoken = 0
     for i in range(len(words)):
         j = match_of.get(i)
@@ -125,6 +138,8 @@ def _command(tag: str, source: str, offset: int, name: str) -> HighLevelCommand:
         [command] = parse_commands_text(f"<commands>{tag}</commands>", name)
     except CommandError as exc:
         raise CommandError(f"column {column}: {exc.message}", file=name, line=line) from None
+    if not isinstance(command, HighLevelCommand):   # the schema refuses an <activate/> without keys first
+        raise CommandError(f"column {column}: <activate> cannot stand inline in a script", file=name, line=line)
     return replace(command, file=name, line=line, column=column)
 
 

@@ -33,11 +33,15 @@ import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from engine.errors import LibraryError
 from engine.paths import LIBRARY_DIR
+
+if TYPE_CHECKING:
+    from engine.model import Model
 
 DEFAULT_TABLE = LIBRARY_DIR / "articulation" / "finnish.phones"
 LONG_MARK = ":"
@@ -76,15 +80,18 @@ class ArticulationTable:
     def target(self, phone: str, parameter: str) -> float:
         return self.row(phone)[self.parameters.index(parameter)].value
 
-    def arrays(self, phones: list[str]):
+    def arrays(self, phones: list[str]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """``(value, dominance, anticipation, carryover, enforced)``, each phones × parameters."""
         rows = [self.row(p) for p in phones]
-        fields = ("value", "dominance", "anticipation", "carryover", "enforced")
-        return tuple(np.array([[getattr(t, f) for t in row] for row in rows],
-                              dtype=bool if f == "enforced" else float).reshape(len(phones), len(self.parameters))
-                     for f in fields)
 
-    def check(self, model) -> None:
+        def attribute(name: str, dtype: type) -> np.ndarray:
+            return np.array([[getattr(t, name) for t in row] for row in rows],
+                            dtype=dtype).reshape(len(phones), len(self.parameters))
+
+        return (attribute("value", float), attribute("dominance", float), attribute("anticipation", float),
+                attribute("carryover", float), attribute("enforced", bool))
+
+    def check(self, model: Model) -> None:
         """Every parameter of the table exists on ``model`` (else a LibraryError at ``$parameters``)."""
         for name in self.parameters:
             if name not in model.parameters:
@@ -138,7 +145,7 @@ def parse_articulation(text: str, file: str = "<articulation>") -> ArticulationT
         cells = content.split()
         phones, cells = cells[0].split(","), cells[1:]
         if len(cells) != len(parameters):
-            raise LibraryError(f"row '{' '.join([','.join(phones)] + cells)}' has {len(cells)} targets for "
+            raise LibraryError(f"row '{' '.join([','.join(phones), *cells])}' has {len(cells)} targets for "
                                f"{len(parameters)} parameters", file=file, line=number)
         targets = [_target(cell, settings, file, number) for cell in cells]
         for phone in phones:
@@ -170,7 +177,7 @@ def _strip_comment(line: str) -> str:
     return re.split(r"\s#", line, maxsplit=1)[0]
 
 
-def _target(cell: str, settings: dict, file: str, line: int) -> Target:
+def _target(cell: str, settings: dict[str, float], file: str, line: int) -> Target:
     match = _CELL.match(cell)
     if match is None:
         raise LibraryError(f"cannot read target '{cell}': expected value[!][/dominance[/anticipation[/carryover]]] "

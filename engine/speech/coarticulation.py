@@ -30,16 +30,39 @@ adds to whatever inline commands do.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Protocol
+
 import numpy as np
+from numpy.typing import ArrayLike
 
 from engine.commands.command_files import Activation
 from engine.errors import UserError
+
+if TYPE_CHECKING:
+    from engine.speech.synthesis import Segment
 
 METHODS = ("cohen-massaro", "none")
 STEP_MS = 5.0
 
 
-def articulate(phones, table, method: str = "cohen-massaro", step_ms: float = STEP_MS) -> list[Activation]:
+class TargetTable(Protocol):
+    """What coarticulation reads from an articulation table: an
+    :class:`~engine.speech.articulation.ArticulationTable`, or a view of one restricted to some parameters."""
+
+    @property
+    def parameters(self) -> Sequence[str]: ...
+
+    @property
+    def exponent(self) -> float: ...
+
+    def arrays(self, phones: list[str], /) -> tuple[np.ndarray, ...]:
+        """``(value, dominance, anticipation, carryover, enforced)``, each phones × parameters."""
+        ...
+
+
+def articulate(phones: Sequence[Segment], table: TargetTable, method: str = "cohen-massaro",
+               step_ms: float = STEP_MS) -> list[Activation]:
     """One activation (linear keys) per table parameter for a list of phone segments."""
     times = key_times(phones, step_ms)
     tracks = articulation_tracks(phones, table, times, method)
@@ -47,7 +70,7 @@ def articulate(phones, table, method: str = "cohen-massaro", step_ms: float = ST
             for j, name in enumerate(table.parameters)]
 
 
-def key_times(phones, step_ms: float = STEP_MS) -> np.ndarray:
+def key_times(phones: Sequence[Segment], step_ms: float = STEP_MS) -> np.ndarray:
     """A regular grid over the utterance plus every phone's middle and the end."""
     if not phones:
         return np.zeros(0)
@@ -57,7 +80,8 @@ def key_times(phones, step_ms: float = STEP_MS) -> np.ndarray:
     return np.unique(np.concatenate([grid, middles, [end]]))
 
 
-def articulation_tracks(phones, table, times, method: str = "cohen-massaro") -> np.ndarray:
+def articulation_tracks(phones: Sequence[Segment], table: TargetTable, times: ArrayLike,
+                        method: str = "cohen-massaro") -> np.ndarray:
     """Parameter values (len(times) × table parameters) at the given times."""
     if method not in METHODS:
         raise UserError(f"unknown coarticulation '{method}' (known: {', '.join(METHODS)})")
@@ -77,7 +101,8 @@ def articulation_tracks(phones, table, times, method: str = "cohen-massaro") -> 
     return tracks
 
 
-def _dominance_blend(times, middles, value, dominance, anticipation, carryover, exponent) -> np.ndarray:
+def _dominance_blend(times: np.ndarray, middles: np.ndarray, value: np.ndarray, dominance: np.ndarray,
+                     anticipation: np.ndarray, carryover: np.ndarray, exponent: float) -> np.ndarray:
     tau = times[:, None] - middles[None, :]                       # T × N
     distance = np.abs(tau) ** exponent
     before = tau < 0
@@ -103,7 +128,8 @@ def closure_window(times: np.ndarray, start: float, end: float) -> np.ndarray:
     return np.where(d <= 1.0, w, 0.0)
 
 
-def _enforce(tracks, times, starts, ends, value, enforced) -> None:
-    for s, j in zip(*np.nonzero(enforced)):
+def _enforce(tracks: np.ndarray, times: np.ndarray, starts: np.ndarray, ends: np.ndarray, value: np.ndarray,
+             enforced: np.ndarray) -> None:
+    for s, j in zip(*np.nonzero(enforced), strict=True):
         w = closure_window(times, starts[s], ends[s])
         tracks[:, j] = tracks[:, j] * (1 - w) + value[s, j] * w

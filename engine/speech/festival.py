@@ -18,14 +18,16 @@ documents the choices and the phones the voices emit.
 '"Hyvää päivää", sanoi hän...'
 >>> print(scheme_string('say "hi" \\\\ bye'))
 "say \\"hi\\" \\\\ bye"
->>> prepare_text("Hyvää 🙂")
+>>> prepare_text("Hyvää 🙂")  # doctest: +NORMALIZE_WHITESPACE
 Traceback (most recent call last):
 ...
-engine.speech.synthesis.SynthesisError: <text>:1: Festival reads ISO-8859-1 (Latin-1), which has no character '🙂' (U+1F642 SLIGHTLY SMILING FACE, column 7); leave it out or replace it
+engine.speech.synthesis.SynthesisError: <text>:1: Festival reads ISO-8859-1 (Latin-1), which has no character '🙂'
+(U+1F642 SLIGHTLY SMILING FACE, column 7); leave it out or replace it
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import shutil
@@ -130,8 +132,8 @@ def prepare_text(text: str, source: str = "<text>") -> str:
     for pattern, replacement in _STANDALONE_PUNCTUATION:
         text = pattern.sub(replacement, text)
     out = []
-    for char in text:
-        char = TRANSLITERATION.get(char, char)
+    for original in text:
+        char = TRANSLITERATION.get(original, original)
         if len(char) == 1 and unicodedata.category(char) == "Cc" and char not in "\n\t":
             char = " "  # other control characters (NUL, bell, C1 controls) become spaces
         out.append(char)
@@ -372,7 +374,7 @@ def fit_to_duration(samples: np.ndarray, rate: int, duration_ms: float) -> np.nd
     segment (a silent pause); cutting it there makes the phones cover the
     waveform exactly, so audio, phones and video all end together.
     """
-    n = int(round(duration_ms * rate / 1000.0))
+    n = round(float(duration_ms) * rate / 1000.0)
     if len(samples) >= n:
         return np.ascontiguousarray(samples[:n])
     return np.concatenate([samples, np.zeros(n - len(samples), dtype=samples.dtype)])
@@ -380,14 +382,10 @@ def fit_to_duration(samples: np.ndarray, rate: int, duration_ms: float) -> np.nd
 
 def _kill_group(process: subprocess.Popen) -> None:
     """Stop the Festival process we started, and anything it started (its own process group)."""
-    try:
+    with contextlib.suppress(ProcessLookupError, PermissionError):
         os.killpg(process.pid, signal.SIGKILL)
-    except (ProcessLookupError, PermissionError):
-        pass
-    try:
+    with contextlib.suppress(subprocess.TimeoutExpired):  # SIGKILL cannot be ignored: communicate returns
         process.communicate(timeout=5)
-    except subprocess.TimeoutExpired:  # pragma: no cover - SIGKILL cannot be ignored
-        pass
 
 
 def _stderr_summary(stderr: str) -> str:

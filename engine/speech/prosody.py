@@ -25,8 +25,13 @@ from one seed, so the same text and seed give the same face.
 from __future__ import annotations
 
 import random
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from engine.commands.command_files import HighLevelCommand
+
+if TYPE_CHECKING:
+    from engine.speech.synthesis import Segment
 
 PAUSES = ("#", "##")
 PHRASE_GAP_MS = 120.0
@@ -35,8 +40,8 @@ BLINK_MIN_MS = 1200.0
 VOWELS = set("aeiouyäöå@7")
 
 
-def prosody_commands(words, phones, duration_ms: float, seed: int = 0, blinks: bool = True,
-                     brows: bool = True, nods: bool = True) -> list[HighLevelCommand]:
+def prosody_commands(words: Sequence[Segment], phones: Sequence[Segment], duration_ms: float, seed: int = 0,
+                     blinks: bool = True, brows: bool = True, nods: bool = True) -> list[HighLevelCommand]:
     """High-level commands for visual prosody over an utterance."""
     rng = random.Random(seed)
     out: list[HighLevelCommand] = []
@@ -56,11 +61,11 @@ def prosody_commands(words, phones, duration_ms: float, seed: int = 0, blinks: b
     return sorted(out, key=lambda c: c.arguments["at"])
 
 
-def split_phrases(words, phones) -> list[list]:
+def split_phrases(words: Sequence[Segment], phones: Sequence[Segment]) -> list[list[Segment]]:
     """Words grouped into phrases at pauses."""
     pauses = [(p.start_ms, p.end_ms) for p in phones if p.label in PAUSES]
-    phrases: list[list] = []
-    previous = None
+    phrases: list[list[Segment]] = []
+    previous: Segment | None = None
     for word in words:
         gap = previous is not None and word.start_ms - previous.end_ms > PHRASE_GAP_MS
         paused = previous is not None and any(previous.end_ms - 1 <= s and e <= word.start_ms + 1 and e > s
@@ -83,5 +88,5 @@ def syllables(word: str) -> int:
     return count
 
 
-def _command(name: str, **arguments) -> HighLevelCommand:
+def _command(name: str, **arguments: float) -> HighLevelCommand:
     return HighLevelCommand(name, {k: float(v) for k, v in arguments.items()}, file="<prosody>")

@@ -12,7 +12,7 @@ def run(*args, cwd=None, command=None) -> subprocess.CompletedProcess:
     env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
     command = command or [sys.executable, "-m", "engine"]
     return subprocess.run([*command, *map(str, args)], capture_output=True, text=True, env=env, cwd=cwd,
-                          timeout=120)
+                          timeout=120, check=False)
 
 
 def assert_user_error(result: subprocess.CompletedProcess) -> str:

@@ -88,8 +88,8 @@ def _distance(A, B):
         a, ab = S[:, 0], S[:, 1] - S[:, 0]
         t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.maximum((ab * ab).sum(1), 1e-12), 0, 1)
         return np.linalg.norm(p - (a + t[:, None] * ab), axis=1).min()
-    return min(min(point_segments(p, B) for p in A.reshape(-1, 2)),
-               min(point_segments(p, A) for p in B.reshape(-1, 2)))
+    return min(*(point_segments(p, B) for p in A.reshape(-1, 2)),
+               *(point_segments(p, A) for p in B.reshape(-1, 2)))
 
 
 def assert_lips_apart(lips, P, what):

@@ -147,8 +147,8 @@ def random_regions(rng: np.random.Generator, tree: ParameterTree, n_vertices: in
     g1_w: dict[str, list[float]] = {n: [] for n in group1}
 
     if group1:
-        n_free = int(round(free_fraction * n_vertices))
-        n_blend = int(round(blend_fraction * n_vertices)) if len(group1) > 1 else 0
+        n_free = round(free_fraction * n_vertices)
+        n_blend = round(blend_fraction * n_vertices) if len(group1) > 1 else 0
         n_bound = n_vertices - n_free - n_blend
         owner = np.sort(rng.integers(0, len(group1), n_bound))  # sorted: one run per parameter
         kinds = np.concatenate([owner, np.full(n_free, -1), np.full(n_blend, -2)])
@@ -167,7 +167,7 @@ def random_regions(rng: np.random.Generator, tree: ParameterTree, n_vertices: in
 
     regions = {n: InfluenceRegion(g1_idx[n], g1_w[n]) for n in group1}
     for name in leaves:
-        size = max(1, int(round(leaf_fraction * n_vertices * rng.uniform(0.5, 1.5))))
+        size = max(1, round(leaf_fraction * n_vertices * rng.uniform(0.5, 1.5)))
         size = min(size, n_vertices)
         if contiguous:
             start = int(rng.integers(0, n_vertices - size + 1))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 from collections import namedtuple
 
 import numpy as np
@@ -231,7 +232,7 @@ def test_prosody_is_seeded_and_uses_library_commands():
     names = [x.name for x in a]
     assert names.count("BrowRaise") == 2 and names.count("HeadNod") == 2 and names.count("Blink") >= 1
     blinks = sorted(x.arguments["at"] for x in a if x.name == "Blink")
-    assert all(later - earlier >= 1200 for earlier, later in zip(blinks, blinks[1:]))
+    assert all(later - earlier >= 1200 for earlier, later in itertools.pairwise(blinks))
     assert [len(p) for p in split_phrases(words, phones)] == [2, 2]
 
 

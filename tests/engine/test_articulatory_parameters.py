@@ -9,6 +9,7 @@ sections across the mouth that the lips touch without passing through each
 other.
 """
 
+import itertools
 import os
 import subprocess
 import sys
@@ -181,7 +182,7 @@ def test_no_value_in_range_makes_the_lips_cross(head, lips, name):
 
 def test_open_vowel_jaw_opening_gives_a_clear_gap(head):
     gaps = [gap(head.landmark_positions({"jaw_open": j})) for j in (0.0, 0.1, 0.3, 0.5, 0.7)]
-    assert all(b > a for a, b in zip(gaps, gaps[1:])), "the gap grows with the jaw"
+    assert all(b > a for a, b in itertools.pairwise(gaps)), "the gap grows with the jaw"
     assert gaps[3] >= 6.0, f"jaw_open 0.5 gives only {gaps[3]:.1f} mm"
     a_vowel = {"jaw_open": 0.5, "mouth_widen": 0.25, "upper_lip_raise": 0.15}
     assert gap(head.landmark_positions(a_vowel)) >= 6.0

@@ -154,7 +154,7 @@ def test_kernel_runs_in_threads():
     with ThreadPoolExecutor(4) as pool:
         for _ in range(5):
             got = list(pool.map(d.deform, frames))
-            assert all(np.array_equal(a, b) for a, b in zip(got, expected))
+            assert all(np.array_equal(a, b) for a, b in zip(got, expected, strict=True))
 
 
 @needs_kernel
@@ -177,24 +177,24 @@ def test_plan_refuses_malformed_structure():
     good.deform(np.array([0.5]), out)
     assert np.array_equal(out, np.zeros((4, 3)))
     bad = [
-        dict(segments=np.array([[0, 3, 0, 0, 0, 0, 1]], i64)),            # does not cover the vertices
-        dict(segments=np.array([[0, 4, 5, 0, 0, 0, 1]], i64)),            # carry parameter out of range
-        dict(segments=np.array([[0, 4, 0, 0, 0, 0, 2]], i64)),            # entries beyond the table
-        dict(entries=np.array([[3, 0]], i64)),                             # parameter out of range
-        dict(entries=np.array([[0, 1]], i64)),                             # weights beyond data
-        dict(order=np.array([0, 1, 2, 4], i64)),                           # output row out of range
-        dict(parent=np.array([0], i64)),                                   # its own parent
-        dict(kind=np.array([7], i64)),                                     # unknown kind
-        dict(rest=np.zeros(13)),                                           # not 3 × N
+        (dict(segments=np.array([[0, 3, 0, 0, 0, 0, 1]], i64)), "segments: must cover"),  # does not cover the vertices
+        (dict(segments=np.array([[0, 4, 5, 0, 0, 0, 1]], i64)), "segments: bad carry"),   # carry parameter out of range
+        (dict(segments=np.array([[0, 4, 0, 0, 0, 0, 2]], i64)), "segments: bad entry"),   # entries beyond the table
+        (dict(entries=np.array([[3, 0]], i64)), "entries: parameter index"),              # parameter out of range
+        (dict(entries=np.array([[0, 1]], i64)), "entries: data offset"),                  # weights beyond data
+        (dict(order=np.array([0, 1, 2, 4], i64)), "order: vertex index"),                 # output row out of range
+        (dict(parent=np.array([0], i64)), "parameters: bad kind, parent"),                # its own parent
+        (dict(kind=np.array([7], i64)), "parameters: bad kind, parent"),                  # unknown kind
+        (dict(rest=np.zeros(13)), "rest must be 3 × N"),                                  # not 3 × N
     ]
-    for change in bad:
-        with pytest.raises(ValueError):
+    for change, message in bad:
+        with pytest.raises(ValueError, match=message):
             plan(**change)
     with pytest.raises(TypeError):
         plan(kind=np.zeros(1, np.int32))
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="values: expected 1 float64"):
         good.deform(np.zeros(2), out)
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="out: expected 4 × 3 float64"):
         good.deform(np.zeros(1), np.empty((3, 3)))
     with pytest.raises((TypeError, ValueError, BufferError)):
         good.deform(np.zeros(1), np.empty((4, 3))[:, :2])

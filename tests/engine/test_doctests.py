@@ -19,7 +19,8 @@ MODULES = sorted(m.name for m in pkgutil.walk_packages(engine.__path__, "engine.
 
 
 def test_the_walk_finds_the_engine():
-    assert {"engine.model.model", "engine.deform.deformer", "engine.cli.common", "engine.painting.brush"} <= set(MODULES)
+    expected = {"engine.model.model", "engine.deform.deformer", "engine.cli.common", "engine.painting.brush"}
+    assert expected <= set(MODULES)
 
 
 @pytest.mark.parametrize("name", ["engine", *MODULES])

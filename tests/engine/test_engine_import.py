@@ -28,7 +28,7 @@ print(json.dumps(sorted(m for m in sys.modules if m.split(".")[0] in forbidden))
 def loaded_forbidden_modules(modules: list[str]) -> list[str]:
     code = PROBE.format(modules=modules, forbidden=FORBIDDEN)
     result = subprocess.run([sys.executable, "-c", code], cwd=PROJECT_ROOT, capture_output=True, text=True,
-                            timeout=120)
+                            timeout=120, check=False)
     assert result.returncode == 0, result.stderr
     return json.loads(result.stdout.strip().splitlines()[-1])
 
@@ -72,7 +72,7 @@ forbidden = {FORBIDDEN!r}
 print(json.dumps(sorted(n for n in sys.modules if n.split(".")[0] in forbidden)))
 """
     result = subprocess.run([sys.executable, "-c", code], cwd=PROJECT_ROOT, capture_output=True, text=True,
-                            timeout=120)
+                            timeout=120, check=False)
     assert result.returncode == 0, result.stderr
     assert json.loads(result.stdout.strip().splitlines()[-1]) == []
 

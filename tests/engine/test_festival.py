@@ -9,6 +9,7 @@ missing, a voice not installed, a Festival that hangs — use fake programs.
 
 from __future__ import annotations
 
+import itertools
 import os
 import shutil
 import subprocess
@@ -53,10 +54,14 @@ HAVE_FESTIVAL = shutil.which("festival") is not None
 needs_festival = pytest.mark.skipif(not HAVE_FESTIVAL, reason="Festival is not installed (./bootstrap installs it)")
 
 GREETING = "Hyvää päivää, mitä kuuluu?"
-GREETING_PHONES = ["#", "h", "y", "v", "@:", "p", "@", "i", "v", "@:", "#", "m", "i", "t", "@", "k", "u:", "l", "u:", "#", "#"]
+GREETING_PHONES = ["#", "h", "y", "v", "@:", "p", "@", "i", "v", "@:", "#", "m", "i", "t", "@", "k", "u:", "l", "u:",
+                   "#", "#"]
 #: Every label the two Suopuhe voices emitted for a broad Finnish test set (docs/speech-synthesis.md).
-SUOPUHE_PHONES = set(
-    ["a", "e", "i", "o", "u", "y", "@", "7", "a:", "e:", "i:", "o:", "u:", "y:", "@:", "7:", "b", "d", "f", "g", "h", "j", "k", "l", "m", "n", "p", "r", "s", "t", "v", "N", "S", "T", "b:", "d:", "f:", "g:", "h:", "j:", "k:", "l:", "m:", "n:", "p:", "r:", "s:", "t:", "v:", "N:", "S:", "#", "##"])
+SUOPUHE_PHONES = {
+    "a", "e", "i", "o", "u", "y", "@", "7", "a:", "e:", "i:", "o:", "u:", "y:", "@:", "7:", "b", "d", "f", "g", "h",
+    "j", "k", "l", "m", "n", "p", "r", "s", "t", "v", "N", "S", "T", "b:", "d:", "f:", "g:", "h:", "j:", "k:", "l:",
+    "m:", "n:", "p:", "r:", "s:", "t:", "v:", "N:", "S:", "#", "##",
+}
 
 
 def recorded(name: str) -> str:
@@ -65,7 +70,7 @@ def recorded(name: str) -> str:
 
 
 def utterance_of(phones, words, rate=22050) -> Utterance:
-    n = int(round(phones[-1].end_ms * rate / 1000))
+    n = round(phones[-1].end_ms * rate / 1000)
     return Utterance("", "test", np.zeros(n, dtype=np.float32), rate, phones, words)
 
 
@@ -73,7 +78,7 @@ def assert_well_formed(utterance: Utterance, tolerance_ms: float = 1.0) -> None:
     """Phones contiguous from 0 to the waveform's end; words span exactly their phones."""
     phones = utterance.phones
     assert phones[0].start_ms == 0
-    for before, after in zip(phones, phones[1:]):
+    for before, after in itertools.pairwise(phones):
         assert after.start_ms == before.end_ms
     assert all(p.end_ms >= p.start_ms for p in phones)
     assert abs(phones[-1].end_ms - utterance.duration_ms) <= tolerance_ms
@@ -84,7 +89,7 @@ def assert_well_formed(utterance: Utterance, tolerance_ms: float = 1.0) -> None:
         inside = [p for p in phones if word.start_ms <= p.start_ms and p.end_ms <= word.end_ms
                   and p.end_ms > p.start_ms]
         assert inside and all(p.word == word.label for p in inside), word
-    for before, after in zip(utterance.words, utterance.words[1:]):
+    for before, after in itertools.pairwise(utterance.words):
         assert before.end_ms <= after.start_ms
     spoken = {w.label for w in utterance.words}
     assert all(p.word in spoken for p in phones if p.word)
@@ -126,7 +131,7 @@ def test_transliteration(raw, prepared):
 
 
 def test_transliteration_table_maps_to_latin1():
-    for char, replacement in TRANSLITERATION.items():
+    for replacement in TRANSLITERATION.values():
         replacement.encode("latin-1")
 
 
@@ -218,7 +223,7 @@ def test_every_boundary_equals_festivals_to_the_microsecond():
     festival_ends = [float(line.split("\t")[1]) for line in out.splitlines() if line.startswith("AP-SEG")]
     phones, _ = parse_segments(out)
     assert len(phones) == len(festival_ends)
-    for phone, end_s in zip(phones, festival_ends):
+    for phone, end_s in zip(phones, festival_ends, strict=True):
         assert abs(phone.end_ms - end_s * 1000) < 1e-6
 
 
@@ -337,7 +342,7 @@ def test_read_wav_other_layouts(tmp_path, width, channels):
 def test_read_wav_errors(tmp_path):
     bad = tmp_path / "bad.wav"
     bad.write_bytes(b"not a wave at all")
-    with pytest.raises(SynthesisError, match="bad.wav: not a PCM WAV"):
+    with pytest.raises(SynthesisError, match=r"bad\.wav: not a PCM WAV"):
         read_wav(bad)
     with pytest.raises(SynthesisError, match="cannot read"):
         read_wav(tmp_path / "missing.wav")
@@ -359,10 +364,10 @@ def test_phones_csv_layout_and_quoting(tmp_path):
 def test_read_phones_csv_errors(tmp_path):
     path = tmp_path / "p.csv"
     path.write_text("a,b\n")
-    with pytest.raises(SynthesisError, match="p.csv:1: not a phones CSV"):
+    with pytest.raises(SynthesisError, match=r"p\.csv:1: not a phones CSV"):
         read_phones_csv(path)
     path.write_text("start_ms,end_ms,phone,word\n0,x,#,\n")
-    with pytest.raises(SynthesisError, match="p.csv:2:"):
+    with pytest.raises(SynthesisError, match=r"p\.csv:2:"):
         read_phones_csv(path)
 
 
@@ -402,7 +407,8 @@ def test_missing_festival_binary_path(tmp_path):
 
 
 def test_missing_festival_on_path():
-    with pytest.raises(SynthesisError, match=r"no program 'no-such-festival-program' on PATH.*apt-get install festival"):
+    with pytest.raises(SynthesisError,
+                       match=r"no program 'no-such-festival-program' on PATH.*apt-get install festival"):
         FestivalSynthesizer(festival="no-such-festival-program").synthesize("moi")
 
 
@@ -455,7 +461,7 @@ def test_crashing_festival_reports_its_stderr(tmp_path):
 
 def test_festival_that_stops_half_way(tmp_path):
     program = fake_festival(tmp_path, "printf 'AP-VOICES\\tsuo_fi_lj_diphone\\n'\necho 'SIOD ERROR: oops' >&2\n")
-    with pytest.raises(SynthesisError, match="failed to synthesize.*SIOD ERROR: oops"):
+    with pytest.raises(SynthesisError, match=r"failed to synthesize.*SIOD ERROR: oops"):
         FestivalSynthesizer(festival=program).synthesize("moi")
 
 
@@ -603,7 +609,7 @@ def test_phone_boundaries_equal_festivals_own_label_file(festival, tmp_path):
         rows = rows[rows.index(["#"]) + 1:]
         utterance = festival.synthesize(text, voice)
         assert [p.label for p in utterance.phones] == [r[2] for r in rows]
-        for phone, row in zip(utterance.phones, rows):
+        for phone, row in zip(utterance.phones, rows, strict=True):
             assert abs(phone.end_ms - 1000 * float(row[0])) <= 0.05 + 1e-9
         assert_well_formed(utterance, tolerance_ms=1000 / utterance.sample_rate)
 
@@ -628,7 +634,7 @@ def test_ten_second_utterance(festival, tmp_path):
     back = read_phones_csv(csv_path)
     assert [(p.label, p.word) for p in back] == [(p.label, p.word) for p in utterance.phones]
     assert all(abs(a.start_ms - b.start_ms) < 5e-4 and abs(a.end_ms - b.end_ms) < 5e-4
-               for a, b in zip(back, utterance.phones))
+               for a, b in zip(back, utterance.phones, strict=True))
 
 
 @needs_festival

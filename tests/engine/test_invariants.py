@@ -85,7 +85,7 @@ def blended_matrix(model: Model, i: int, values) -> np.ndarray:
     w = np.array([model.regions[n].dense(model.n_vertices)[i] for n in names])
     M = np.eye(4)
     if w.sum() > 0:
-        for n, wk in zip(names, w / w.sum()):
+        for n, wk in zip(names, w / w.sum(), strict=True):
             M += wk * (propagated_transform(model, n, values) - np.eye(4))
     return M
 
@@ -204,8 +204,8 @@ def test_invariant3_leaf_motion_is_carried_by_the_parent(seed, n, k, depth, part
 def _split_leaves(rng, model):
     leaves = leaf_names(model)
     mask = rng.random(len(leaves)) < 0.5
-    a = [n for n, m in zip(leaves, mask) if m]
-    b = [n for n, m in zip(leaves, mask) if not m]
+    a = [n for n, m in zip(leaves, mask, strict=True) if m]
+    b = [n for n, m in zip(leaves, mask, strict=True) if not m]
     return a, b
 
 
@@ -246,7 +246,7 @@ def test_invariant4_leaves_superpose_in_the_rest_frame(seed, n, k, depth, partia
         values = random_values(rng, model, zero_fraction=0.0, names=leaf_names(model))
         a, b = _split_leaves(rng, model)
 
-        def d(names):
+        def d(names, values=values):
             return model.deform({name: values[name] for name in names}) - P
 
         np.testing.assert_allclose(d(a + b), d(a) + d(b), rtol=0, atol=TOL)
@@ -261,13 +261,12 @@ def test_invariant4_stage1_superposes_before_the_rigid_carry(seed, n, k, depth, 
     leaf sets' contributions above the rigid-only pose add up too."""
     model = rig(seed, n, k, depth, partial, contiguous)
     rng = np.random.default_rng(400 + seed)
-    P = model.vertices
     for _ in range(2):
         rigid = random_values(rng, model, zero_fraction=0.2, names=group1_names(model))
         leaves = random_values(rng, model, zero_fraction=0.0, names=leaf_names(model))
         a, b = _split_leaves(rng, model)
 
-        def pose(names):
+        def pose(names, rigid=rigid, leaves=leaves):
             return model.deform({**rigid, **{name: leaves[name] for name in names}})
 
         Z, X, Y, R = pose([]), pose(a), pose(b), pose(a + b)
@@ -469,7 +468,7 @@ def test_fast_path_runs_indices_and_vertex_orders_agree(seed, monkeypatch):
 
 def test_deformer_refuses_wrong_number_of_values_and_unknown_names():
     model = rig(0, 10, 3, 2, True, False)
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="expected 3 values in tree order"):
         model.deformer().deform(np.zeros(len(model.parameters) + 1))
     with pytest.raises(ParameterError, match="unknown parameter"):
         model.deform({"no_such_parameter": 1.0})

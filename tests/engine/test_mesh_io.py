@@ -199,7 +199,7 @@ def test_bad_files_raise_mesh_import_error_naming_the_file(tmp_path, capfd, name
     with pytest.raises(MeshImportError) as info:
         import_mesh(path)
     assert str(info.value).startswith(str(path))
-    out, err = capfd.readouterr()
+    _out, err = capfd.readouterr()
     assert err == "", "VTK's own complaints are silenced"
 
 

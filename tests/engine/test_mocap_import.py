@@ -119,7 +119,7 @@ def write_trc(path, labels, p, rate=RATE, units="mm", trim_trailing_gaps=False):
         cells = ["" if np.isnan(v) else _num(v * scale) for v in frame.ravel()]
         while trim_trailing_gaps and cells and cells[-1] == "":
             cells.pop()
-        lines.append("\t".join([str(f + 1), f"{f / rate:.6f}"] + cells))
+        lines.append("\t".join([str(f + 1), f"{f / rate:.6f}", *cells]))
     Path(path).write_text("\n".join(lines) + "\n")
 
 
@@ -332,7 +332,7 @@ def test_tsv_errors_name_file_and_line(tmp_path, motion):
     # truncated: two frames fewer than NO_OF_FRAMES
     cases.append((lines[:-2], rf"bad.tsv:{len(lines) - 2}: the file ends after 6 frames but NO_OF_FRAMES is 8"))
     # truncated in the middle of the last row
-    cases.append((lines[:-1] + [lines[-1][:40]], rf"bad.tsv:{len(lines)}: \d+ columns where 41 were expected "
+    cases.append(([*lines[:-1], lines[-1][:40]], rf"bad.tsv:{len(lines)}: \d+ columns where 41 were expected "
                                                   r"\(the file looks truncated\)"))
     # a row with a cell too many
     wrong = list(lines)
@@ -499,7 +499,7 @@ def test_too_few_reference_markers(motion):
         build_session(rec)
     session = build_session(rec, reference=[])
     assert session.report["head_motion"] is None and np.array_equal(session.alignment[5], np.eye(4))
-    with pytest.raises(MocapError, match="reference marker.* 20.1 are not in the file"):
+    with pytest.raises(MocapError, match=r"reference marker.* 20\.1 are not in the file"):
         build_session(rec, reference=["9.3", "2.1", "20.1"])
 
 
@@ -513,7 +513,7 @@ def test_mapping_file_and_automatic_ids(tmp_path):
     names, info = marker_names(["HEAD_L", "FP8_3", "mpeg4_9.3", "Cheek L", "junk"], {"HEAD_L": "20.1", "junk": "-"})
     assert names == ["20.1", "8.3", "9.3", "Cheek L", None]
     assert info["dropped"] == ["junk"] and info["renamed"]["FP8_3"] == "8.3"
-    with pytest.raises(MocapError, match="'8.3' and 'LM' would both be named '8.3'"):
+    with pytest.raises(MocapError, match=r"'8\.3' and 'LM' would both be named '8\.3'"):
         marker_names(["8.3", "LM"], {"LM": "8.3"})
     assert default_reference(IDS) == REFERENCE
 
@@ -583,8 +583,9 @@ class FakeSynthesizer:
         from engine.speech.synthesis import Segment
 
         class Utterance:
-            phones = [Segment("#", 0.0, 100.0, ""), Segment("m", 100.0, 180.0, "maa"),
-                      Segment("a:", 180.0, 400.0, "maa")]
+            def __init__(self) -> None:
+                self.phones = [Segment("#", 0.0, 100.0, ""), Segment("m", 100.0, 180.0, "maa"),
+                               Segment("a:", 180.0, 400.0, "maa")]
         return Utterance()
 
 
@@ -611,10 +612,10 @@ def test_cli_phones_from_real_festival(tmp_path, motion, capsys):
 # ---------------------------------------------------------------------------
 
 def test_import_names_fills_aligns_and_reports(tmp_path, motion):
-    clean, raw, p = motion
+    clean, _raw, p = motion
     labels = [f"M{k}" for k in range(len(IDS))]
     mapping = tmp_path / "lab.map"
-    mapping.write_text("".join(f"{a} = {b}\n" for a, b in zip(labels, IDS)))
+    mapping.write_text("".join(f"{a} = {b}\n" for a, b in zip(labels, IDS, strict=True)))
     path = tmp_path / "take.tsv"
     write_tsv(path, labels, p)
     session = import_marker_file(path, mapping=mapping, max_gap_ms=100, labels=DATA / "phones_long.TextGrid")
@@ -718,7 +719,7 @@ def test_session_checks_its_arrays():
                 missing=np.zeros((3, 1), bool), alignment=np.zeros((3, 4, 4)))
     s = _small_session()
     assert s.marker_index("8.3") == 1
-    with pytest.raises(MocapError, match="no marker '8.1'"):
+    with pytest.raises(MocapError, match=r"no marker '8\.1'"):
         s.marker_index("8.1")
 
 
@@ -775,7 +776,7 @@ def test_cli_subprocess_exit_codes(tmp_path, motion):
     assert good.returncode == 0, good.stderr
     assert "gaps (filled up to 100 ms = 6 frames)" in good.stdout
     lines = path.read_text().splitlines()
-    path.write_text("\n".join(lines[:-1] + [lines[-1][:30]]) + "\n")
+    path.write_text("\n".join([*lines[:-1], lines[-1][:30]]) + "\n")
     line = assert_user_error(run("mocap", "import", path, "-o", tmp_path / "s.h5"))
     assert line.startswith(f"error: {path}:{len(lines)}: ")
 

@@ -124,7 +124,7 @@ def test_a_bad_cell_still_names_its_line(cell):
 
 def _frames(n, k, seed, noise=0.3):
     rng = np.random.default_rng(seed)
-    ref = rng.normal(0, 50, (k, 3)) + [0, 0, 800]
+    ref = rng.normal(0, 50, (k, 3)) + np.array([0, 0, 800])
     points = np.empty((n, k, 3))
     truth = []
     for f in range(n):

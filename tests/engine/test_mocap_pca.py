@@ -93,7 +93,7 @@ def test_pca_recovers_the_subspace_of_the_real_deformation_within_a_few_degrees(
     per_direction = [np.degrees(subspace_angles(_components(art), truth[:, [j]]))[0] for j in range(5)]
     print("principal angles, head deformation (deg):", np.array2string(angles, precision=2))
     print("angle of each true direction to the PCA subspace (deg):",
-          dict(zip(clean.parameters, np.round(per_direction, 2))))
+          dict(zip(clean.parameters, np.round(per_direction, 2), strict=False)))
     assert max(per_direction) < MAX_BASIS_ANGLE_REAL_DEG
     assert angles.max() < MAX_PRINCIPAL_ANGLE_REAL_DEG
     # the five components leave almost nothing of the clean motion
@@ -144,10 +144,10 @@ def test_components_are_one_standard_deviation(clean):
 def test_stages_and_counts_are_configurable(clean):
     art = multistage_pca(clean.markers, clean.positions,
                          stages=[parse_stage("2.1:1"), parse_stage("8.3,8.4:1"), Stage(("8.1", "8.2"), 2)],
-                         analysed=list(ARTICULATION_MARKERS) + ["2.10"])
+                         analysed=[*ARTICULATION_MARKERS, "2.10"])
     assert art.stages.tolist() == [1, 2, 3, 3] and "2.10" in art.markers
     assert art.stage_markers[1] == ["8.3", "8.4"]
-    with pytest.raises(MocapError, match="no marker matches '7.7'"):
+    with pytest.raises(MocapError, match=r"no marker matches '7\.7'"):
         multistage_pca(clean.markers, clean.positions, stages=[Stage(("7.7",), 1)])
     with pytest.raises(MocapError, match="only 3 coordinates"):
         multistage_pca(clean.markers, clean.positions, stages=[Stage(("2.1",), 4)])
@@ -182,7 +182,8 @@ def test_frames_are_selected_by_phones_and_contexts(clean):
     # the jaw is closed at bilabials and open at a: the frames show it
     chin = clean.markers.index("2.1")
     y = clean.positions[:, chin, 1]
-    assert y[select_frames(phones, n, rate, "p").frames].mean() > y[select_frames(phones, n, rate, "a").frames].mean() + 3
+    closed, opened = select_frames(phones, n, rate, "p"), select_frames(phones, n, rate, "a")
+    assert y[closed.frames].mean() > y[opened.frames].mean() + 3
     short = select_frames(phones, 100, rate, "V")
     assert short.outside > 0 and short.frames.max() < 100
     with pytest.raises(MocapError, match="LEFT_RIGHT"):
@@ -340,7 +341,7 @@ def applied(head, clean):
 
 
 def test_apply_adds_one_field_translation_per_component(head, applied):
-    model, art, result = applied
+    model, _art, result = applied
     assert result.names == ["pca1", "pca2", "pca3", "pca4", "pca5"]
     assert len(model.parameters) == len(head.parameters) + 5
     for name in result.names:
@@ -353,7 +354,7 @@ def test_apply_adds_one_field_translation_per_component(head, applied):
 
 
 def test_the_region_is_jaw_lips_and_close_surroundings(applied):
-    model, art, result = applied
+    model, _art, result = applied
     weights = model.regions["pca1"].dense(model.n_vertices)
     skin = model.vertex_part == model.parts.index("skin")
     assert not np.any(weights[~skin])                              # no eyes, teeth, tongue, eyelashes
@@ -384,7 +385,7 @@ def test_the_face_reproduces_the_components_at_the_markers(applied):
 
 def test_upper_and_lower_lip_move_independently(applied):
     """The jaw component opens the mouth: inner lower lip (2.3) follows 8.2, inner upper lip (2.2) stays with 8.1."""
-    model, art, result = applied
+    model, _art, _result = applied
     moved = model.deform({"pca1": 2.0}) - model.vertices
     lm = model.landmarks
     assert moved[lm["2.3"], 1] < 0.7 * moved[lm["8.2"], 1] < 0             # lower lip down
@@ -477,7 +478,7 @@ def test_apply_needs_markers_the_model_knows(head, clean):
 def test_the_applied_model_saves_and_loads(applied, tmp_path):
     from engine import save_model
 
-    model, art, result = applied
+    model, _art, _result = applied
     back = load_model(save_model(model, tmp_path / "head.xml"))
     np.testing.assert_allclose(back.deform({"pca1": 1.0, "pca2": -0.5}), model.deform({"pca1": 1.0, "pca2": -0.5}))
 
@@ -486,7 +487,7 @@ def test_the_applied_model_saves_and_loads(applied, tmp_path):
 
 def test_synthetic_markers_are_the_heads_own_deformation(head, clean):
     f = 100
-    values = dict(zip(clean.parameters, clean.tracks[f]))
+    values = dict(zip(clean.parameters, clean.tracks[f], strict=True))
     places = synthetic_mod.marker_vertices(head, clean.markers)
     idx = [places[m] for m in clean.markers]
     np.testing.assert_allclose(head.deform(values)[idx], clean.positions[f], atol=1e-9)
@@ -515,7 +516,7 @@ def test_synthetic_head_motion_noise_and_gaps(head):
     assert rec.reference == ["9.12", "11.1", "11.2", "11.3"]
     reference = rec.marker_index(rec.reference)
     assert not np.any(rec.basis[:, reference]) and not np.any(np.ptp(rec.clean[:, reference], axis=0))
-    with pytest.raises(UserError, match="no landmark for marker 20.1"):
+    with pytest.raises(UserError, match=r"no landmark for marker 20\.1"):
         synthesize_recording(phones=parse_phones(HELD_OUT_PHONES), model=head, markers=["2.1", "20.1"])
 
 

@@ -9,6 +9,7 @@ lip corners, 8.1/8.2 outer lip midpoints).
 from __future__ import annotations
 
 import csv
+import itertools
 import subprocess
 
 import numpy as np
@@ -39,7 +40,7 @@ def measured(request, head):
     middles = np.array([(p.start_ms + p.end_ms) / 2 for p in phones])
     values = speech.timeline.sample(middles)
     names = speech.timeline.parameters
-    marks = [head.landmark_positions(dict(zip(names, row))) for row in values]
+    marks = [head.landmark_positions(dict(zip(names, row, strict=True))) for row in values]
     return phones, marks
 
 
@@ -53,7 +54,8 @@ def _gap(mark) -> float:
 
 def test_lips_close_at_the_middle_of_every_bilabial(measured):
     phones, marks = measured
-    gaps = [(p.label, p.start_ms, _gap(m)) for p, m in zip(phones, marks) if _short(p.label) in ("p", "b", "m")]
+    gaps = [(p.label, p.start_ms, _gap(m)) for p, m in zip(phones, marks, strict=True)
+            if _short(p.label) in ("p", "b", "m")]
     assert len(gaps) >= 20
     worst = max(gaps, key=lambda g: g[2])
     assert worst[2] <= 1.0, f"lip gap {worst[2]:.2f} mm at '{worst[0]}' ({worst[1]:.0f} ms)"
@@ -61,15 +63,15 @@ def test_lips_close_at_the_middle_of_every_bilabial(measured):
 
 def test_open_vowels_open_the_mouth(measured):
     phones, marks = measured
-    gaps = [_gap(m) for p, m in zip(phones, marks) if p.label in ("a", "a:", "@", "@:")]
+    gaps = [_gap(m) for p, m in zip(phones, marks, strict=True) if p.label in ("a", "a:", "@", "@:")]
     assert len(gaps) >= 20
     assert np.mean(gaps) >= 6.0, f"mean gap at a, a:, @, @: is {np.mean(gaps):.2f} mm"
 
 
 def test_spread_vowels_are_wider_and_rounded_vowels_further_forward(measured):
     phones, marks = measured
-    spread = [m for p, m in zip(phones, marks) if _short(p.label) in ("i", "e")]
-    rounded = [m for p, m in zip(phones, marks) if _short(p.label) in ("u", "o", "y")]
+    spread = [m for p, m in zip(phones, marks, strict=True) if _short(p.label) in ("i", "e")]
+    rounded = [m for p, m in zip(phones, marks, strict=True) if _short(p.label) in ("u", "o", "y")]
     assert len(spread) >= 10 and len(rounded) >= 10
 
     def width(m):
@@ -96,13 +98,13 @@ def test_phones_csv_equals_festivals_own_segments_to_the_millisecond(tmp_path):
                         f'(set! utt (SynthText "{text}"))\n'
                         "(mapcar (lambda (s) (format t \"%s %f\\n\" (item.name s) (item.feat s \"end\")))"
                         " (utt.relation.items utt 'Segment))\n").encode("latin-1"))
-    festival = subprocess.run(["festival", "-b", str(script)], capture_output=True, timeout=120)
+    festival = subprocess.run(["festival", "-b", str(script)], capture_output=True, timeout=120, check=False)
     segments = [line.split() for line in festival.stdout.decode("latin-1").splitlines()
                 if len(line.split()) == 2 and not line.startswith("UniSyn")]
     assert [r["phone"] for r in rows] == [s[0] for s in segments]
     np.testing.assert_allclose(ends, [float(s[1]) * 1000 for s in segments], atol=0.5)
     assert float(rows[0]["start_ms"]) == 0
-    assert all(float(a["end_ms"]) == float(b["start_ms"]) for a, b in zip(rows, rows[1:]))
+    assert all(float(a["end_ms"]) == float(b["start_ms"]) for a, b in itertools.pairwise(rows))
 
 
 def test_inline_commands_merge_with_speech_on_one_timeline(head):

@@ -72,7 +72,7 @@ def test_unknown_interpolation_is_refused():
 # -- the timeline ------------------------------------------------------------------
 
 def act(parameter, keys, interp="linear"):
-    t, v = zip(*keys)
+    t, v = zip(*keys, strict=True)
     return Activation(parameter, t, v, interp)
 
 
@@ -118,7 +118,7 @@ def test_sampling_matches_pointwise_evaluation_and_any_time_order(head):
     timeline = Timeline(acts, head)
     times = np.array([1300.0, 0.0, 412.5, 17.0, 999.0, 412.5])
     block = timeline.sample(times)
-    for t, row in zip(times, block):
+    for t, row in zip(times, block, strict=True):
         np.testing.assert_array_equal(row, timeline.sample([t])[0])
 
 
@@ -154,7 +154,7 @@ def test_low_level_file_round_trips(tmp_path, head):
     write_low_level(acts, path)
     back = read_commands(path)
     assert len(back) == len(acts)
-    for a, b in zip(acts, back):
+    for a, b in zip(acts, back, strict=True):
         assert (a.parameter, a.interpolation, a.command, a.line, a.source) == \
                (b.parameter, b.interpolation, b.command, b.line, b.source)
         np.testing.assert_array_equal(a.times, b.times)

@@ -126,7 +126,7 @@ def test_identity_is_exact_and_read_only():
     assert is_identity(rotation_about_axis([0, 1, 0], [1, 2, 3], 0))
     assert not is_identity(translation([0, 0, 1e-300]))
     assert not is_identity(rotation_about_axis([0, 1, 0], [0, 0, 0], 1e-9))
-    with pytest.raises(ValueError):
+    with pytest.raises(ValueError, match="read-only"):
         IDENTITY[0, 0] = 2.0
 
 

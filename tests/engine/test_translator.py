@@ -34,7 +34,7 @@ def run(xml: str, library, model):
 
 
 def keys(activation):
-    return list(zip(activation.times.tolist(), activation.values.tolist()))
+    return list(zip(activation.times.tolist(), activation.values.tolist(), strict=True))
 
 
 def test_paper_worked_example_to_the_digit(head, library):
@@ -118,7 +118,7 @@ def test_amplitude_scales_every_activation_by_percent(head, library):
     full = run('<Blink at="0"/>', library, head)
     half = run('<Blink at="0" amplitude="50"/>', library, head)
     assert len(full) == 2
-    for a, b in zip(full, half):
+    for a, b in zip(full, half, strict=True):
         np.testing.assert_allclose(b.values, a.values * 0.5)
         np.testing.assert_array_equal(a.times, b.times)
 
@@ -262,9 +262,9 @@ def test_every_shipped_command_moves_the_default_head(head, library):
         acts = run(f'<{name} at="0"{args}/>', library, head)
         assert [a.parameter for a in acts] == parameters
         timeline = Timeline(acts, head)
-        times, values = timeline.sample_frames(fps=30)
+        _times, values = timeline.sample_frames(fps=30)
         busiest = int(np.abs(values).sum(axis=1).argmax())
-        moved = head.deform(dict(zip(timeline.parameters, values[busiest])))
+        moved = head.deform(dict(zip(timeline.parameters, values[busiest], strict=True)))
         rest = head.deform({})
         assert np.abs(moved - rest).max() > 1.0, name      # more than a millimetre somewhere
 

@@ -10,6 +10,7 @@ too. Small pictures and few frames keep it quick on two cores.
 
 from __future__ import annotations
 
+import contextlib
 import io
 import os
 import shutil
@@ -49,7 +50,7 @@ def two_state_values() -> tuple[np.ndarray, np.ndarray]:
 
 def silence_then_tone(seconds: float) -> np.ndarray:
     """Silent until the switch, then a 1 kHz tone (float32, mono)."""
-    t = np.arange(int(round(seconds * RATE))) / RATE
+    t = np.arange(round(seconds * RATE)) / RATE
     samples = 0.5 * np.sin(2 * np.pi * TONE_HZ * t)
     samples[t < SWITCH / FPS] = 0.0
     return samples.astype(np.float32)
@@ -67,7 +68,7 @@ def two_state(head, tmp_path_factory):
     from engine.outputs.render import FrameRenderer
 
     with FrameRenderer(head, size=SIZE, antialias=False) as renderer:
-        pictures = [renderer.render(head.deform(dict(zip(NAMES, pose)))) for pose in (POSE_A, POSE_B)]
+        pictures = [renderer.render(head.deform(dict(zip(NAMES, pose, strict=True)))) for pose in (POSE_A, POSE_B)]
     return out, stats, pictures, calls
 
 
@@ -237,10 +238,8 @@ def _process_command_lines() -> list[str]:
     lines = []
     for pid in os.listdir("/proc"):
         if pid.isdigit():
-            try:
+            with contextlib.suppress(OSError):
                 lines.append(Path(f"/proc/{pid}/cmdline").read_bytes().replace(b"\0", b" ").decode("utf-8", "replace"))
-            except OSError:
-                pass
     return lines
 
 

@@ -65,7 +65,7 @@ def build_synthetic_model(name: str = "synthetic-head", painted: bool = False) -
     vertices = np.concatenate(vertices)
     vertex_part = np.concatenate(vertex_part)
     skin = np.flatnonzero(vertex_part == 0)
-    x, y, z = vertices[skin].T
+    _x, y, z = vertices[skin].T
 
     tree = engine.ParameterTree([
         engine.Parameter("head_turn", "rotation", axis=(0, 1, 0), pivot=(0, -100, 0), degrees_per_unit=30,

@@ -20,7 +20,7 @@ from workbench import deferred_imports
 
 def run_python(code: str) -> str:
     result = subprocess.run([sys.executable, "-c", textwrap.dedent(code)], capture_output=True, text=True,
-                            timeout=120)
+                            timeout=120, check=False)
     assert result.returncode == 0, result.stderr
     return result.stdout
 
@@ -71,7 +71,7 @@ def test_a_deferred_module_runs_once_on_first_use(throwaway_module):
     assert module.VALUE == 42 and __import__(name) is module
     assert builtins.ap_deferred_runs == 1
     with pytest.raises(AttributeError):
-        module.missing
+        _ = module.missing
 
 
 def test_an_already_imported_module_is_left_alone(throwaway_module):

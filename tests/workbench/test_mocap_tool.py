@@ -175,7 +175,7 @@ def test_import_select_pca_apply_undo(head_window, qtbot, take, tmp_path):
     for name in names:
         parameter, region = model.parameters[name], model.regions[name]
         assert parameter.kind == "translation" and parameter.field
-        weights = dict(zip(region.indices.tolist(), region.weights.tolist()))
+        weights = dict(zip(region.indices.tolist(), region.weights.tolist(), strict=True))
         for marker in ("2.1", "8.1", "8.2", "8.3", "8.4"):
             assert weights.get(model.landmarks[marker]) == 1.0
         assert model.landmarks["3.7"] not in weights          # an eye corner is outside the region

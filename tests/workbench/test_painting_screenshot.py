@@ -49,13 +49,13 @@ def test_screenshots_of_weight_painting(make_window, qtbot, tmp_path):
     nose = model.vertices[model.landmarks["9.3"]]
     viewport.render_now()
     # A stroke over the left cheek (mirrored onto the right), then the cursor resting on the cheek.
-    start = viewport.world_to_widget(nose + (28, -8, -15))
-    end = viewport.world_to_widget(nose + (45, -35, -30))
+    start = viewport.world_to_widget(nose + np.array([28, -8, -15]))
+    end = viewport.world_to_widget(nose + np.array([45, -35, -30]))
     paint.press(*start)
     for t in np.linspace(0, 1, 12)[1:]:
         paint.drag(start[0] + t * (end[0] - start[0]), start[1] + t * (end[1] - start[1]))
     paint.release()
-    paint.hover(*viewport.world_to_widget(nose + (32, -20, -20)))
+    paint.hover(*viewport.world_to_widget(nose + np.array([32, -20, -20])))
     assert paint.cursor.visible
     viewport.render_now()
     qtbot.wait(50)

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 import pytest
 
@@ -108,7 +110,7 @@ def test_loop_starts_over(window, qtbot, no_sound_device):
     seen: list[float] = []
     window.playhead.time_changed.connect(seen.append)
     player.play()
-    qtbot.waitUntil(lambda: any(b < a for a, b in zip(seen, seen[1:])), timeout=10000)
+    qtbot.waitUntil(lambda: any(b < a for a, b in itertools.pairwise(seen)), timeout=10000)
     assert player.is_playing                                         # still playing after the end
     player.stop()
     assert player.state == "stopped" and window.playhead.time == 0.0
@@ -158,7 +160,7 @@ def test_a_bad_wav_changes_nothing(window, tmp_path):
     window.player.load(timeline)
     bad = tmp_path / "bad.wav"
     bad.write_text("not audio")
-    with pytest.raises(UserError, match="bad.wav"):
+    with pytest.raises(UserError, match=r"bad\.wav"):
         window.player.load(None, audio=bad)
     assert window.player.timeline is timeline and window.playhead.duration == pytest.approx(0.3)
 

@@ -144,7 +144,7 @@ def test_a_running_workbench_keeps_its_copy(window, make_window, synthetic_model
 
 
 def test_never_saved_models_are_recovered_untitled(window, monkeypatch):
-    orphan, painted = _orphan(window.autosaver.session.folder, None)
+    _orphan_entry, painted = _orphan(window.autosaver.session.folder, None)
     monkeypatch.setattr(window.files, "ask_recover", lambda entry: Button.Yes)
     assert window.files.offer_recovery()
     assert window.document.path is None and window.windowTitle() == "untitled[*] — Artificial Person"

@@ -96,7 +96,7 @@ def test_an_unknown_inline_command_names_line_and_column_and_keeps_the_text(head
     with qtbot.waitSignal(panel.say_failed, timeout=30000):
         panel.say()
     assert len(shown) == 1
-    title, message = shown[0]
+    _title, message = shown[0]
     assert "text:2:" in message and "column 6" in message and "Hapy" in message and "Happy" in message
     assert panel.editor.toPlainText() == text
     cursor = panel.editor.textCursor()

@@ -33,7 +33,7 @@ def test_screenshot_of_the_script_panel_after_say(make_window, qtbot, tmp_path):
     assert panel.result is not None, panel.info.text()
     player = window.player
     player.pause()
-    vowel = [p for p in player.phones if p.label == "@:"][0]      # the long ä of "Hyvää": mouth open
+    vowel = next(p for p in player.phones if p.label == "@:")      # the long ä of "Hyvää": mouth open
     window.playhead.set_time(vowel.mid_ms / 1000 + 0.4)
     assert window.script_dock.isVisible() and player.phones
     timeline = getattr(window, "timeline_dock", None)

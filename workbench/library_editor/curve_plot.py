@@ -85,8 +85,8 @@ class CurvePlot(QWidget):
                       max(10, self.height() - top - MARGIN_BOTTOM))
         t_low = min(float(t[0]) for t, _ in self.curves.values())
         t_high = max(float(t[-1]) for t, _ in self.curves.values())
-        v_low = min(0.0, min(float(v.min()) for _, v in self.curves.values()))
-        v_high = max(0.0, max(float(v.max()) for _, v in self.curves.values()))
+        v_low = min(0.0, *(float(v.min()) for _, v in self.curves.values()))
+        v_high = max(0.0, *(float(v.max()) for _, v in self.curves.values()))
         if t_high <= t_low:
             t_high = t_low + 1.0
         if v_high <= v_low:
@@ -101,7 +101,7 @@ class CurvePlot(QWidget):
         self._axes(painter, area, to_point, (t_low, t_high), (v_low, v_high), text_colour)
         for name, (times, values) in self.curves.items():
             path = QPainterPath(to_point(float(times[0]), float(values[0])))
-            for t, v in zip(times[1:].tolist(), values[1:].tolist()):
+            for t, v in zip(times[1:].tolist(), values[1:].tolist(), strict=False):
                 path.lineTo(to_point(t, v))
             painter.setPen(QPen(self.colour_of(name), 2.0))
             painter.drawPath(path)

@@ -156,7 +156,7 @@ class CoordinatePlot(QWidget):
         xs = np.array([self.x_of_frame(i) for i in range(self.n_frames)])
         path = QPainterPath()
         pen_down = False
-        for x, y in zip(xs, ys):
+        for x, y in zip(xs, ys, strict=True):
             if not np.isfinite(y):
                 pen_down = False
             elif pen_down:
@@ -170,8 +170,8 @@ class CoordinatePlot(QWidget):
         painter.setPen(QColor(90, 90, 90))
         for value in (lo, (lo + hi) / 2, hi):
             y = float(self._y_of(np.array(value), lo, hi))
-            painter.drawText(QRectF(0, y - 8, LEFT - 4, 16), Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
-                             f"{value:.1f}")
+            painter.drawText(QRectF(0, y - 8, LEFT - 4, 16),
+                             Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter, f"{value:.1f}")
         duration = (self.n_frames - 1) / self.rate_hz
         step = _nice_step(duration / 8)
         t = 0.0

@@ -333,7 +333,7 @@ class ImportDialog(QDialog):
         for r, stats in enumerate(self.gap_stats()):
             values = (stats["absent_frames"], stats["gaps"], stats["longest_gap"], stats["filled_frames"],
                       stats["missing_frames"])
-            for column, value in zip((MISSING, GAPS, LONGEST, FILLED, EXCLUDED), values):
+            for column, value in zip((MISSING, GAPS, LONGEST, FILLED, EXCLUDED), values, strict=True):
                 self.table.item(r, column).setText(str(value))
         self._updating = False
         self.max_gap.setToolTip(f"{self.gap_frames()} frames at {self.recording.rate_hz:g} Hz: shorter gaps are "

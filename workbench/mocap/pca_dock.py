@@ -250,7 +250,7 @@ class PcaDock(QDockWidget):
 
     def _tick(self) -> None:
         self._phase = (self._phase + 0.08) % (2 * np.pi)
-        self.amplitude.setValue(int(round(100 * AMPLITUDE_SD * np.sin(self._phase))))
+        self.amplitude.setValue(round(100 * AMPLITUDE_SD * np.sin(self._phase)))
 
     def stop_preview(self) -> None:
         self.animate_button.setChecked(False)
@@ -329,7 +329,7 @@ class PcaDock(QDockWidget):
         self.apply_report.setPlainText(applied.report() + "\n" + error.report())
         colors = error_colors(error.per_marker_rms_mm)
         self.error_table.setRowCount(len(error.markers))
-        for row, (marker, rms) in enumerate(zip(error.markers, error.per_marker_rms_mm)):
+        for row, (marker, rms) in enumerate(zip(error.markers, error.per_marker_rms_mm, strict=True)):
             name = QTableWidgetItem(marker)
             value = QTableWidgetItem(f"{rms:.3f}")
             value.setTextAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
@@ -338,7 +338,7 @@ class PcaDock(QDockWidget):
                 item.setFlags(Qt.ItemFlag.ItemIsEnabled | Qt.ItemFlag.ItemIsSelectable)
             self.error_table.setItem(row, 0, name)
             self.error_table.setItem(row, 1, value)
-        self.errors_changed.emit(dict(zip(error.markers, error.per_marker_rms_mm.tolist())))
+        self.errors_changed.emit(dict(zip(error.markers, error.per_marker_rms_mm.tolist(), strict=True)))
         self.tabs.setCurrentIndex(2)
 
     def shown_errors(self) -> dict[str, float]:

@@ -97,12 +97,12 @@ class MocapState(QObject):
 
     def set_phone_selection(self, selection) -> None:
         """Replace the spans by one frame per phone of an engine :class:`FrameSelection`."""
-        self.spans = [Span(int(f), int(f), label) for f, label in zip(selection.frames, selection.labels)]
+        self.spans = [Span(int(f), int(f), label) for f, label in zip(selection.frames, selection.labels, strict=True)]
         self.phone_selection = selection
         self.selection_changed.emit()
 
     def remove_spans(self, indices) -> None:
-        drop = set(int(i) for i in indices)
+        drop = {int(i) for i in indices}
         self.spans = [s for i, s in enumerate(self.spans) if i not in drop]
         self.phone_selection = None
         self.selection_changed.emit()

@@ -49,11 +49,11 @@ class VarianceChart(QWidget):
         for pct in (0, 25, 50, 75, 100):
             y = plot.bottom() - plot.height() * pct / 100
             painter.drawLine(int(plot.left()), int(y), int(plot.right()), int(y))
-            painter.drawText(QRectF(0, y - 7, left - 4, 14), Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter,
-                             f"{pct}%")
+            painter.drawText(QRectF(0, y - 7, left - 4, 14),
+                             Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter, f"{pct}%")
         n = len(self.ratios)
         slot = plot.width() / n
-        for k, (ratio, stage) in enumerate(zip(self.ratios, self.stages)):
+        for k, (ratio, stage) in enumerate(zip(self.ratios, self.stages, strict=True)):
             h = plot.height() * ratio
             bar = QRectF(plot.left() + k * slot + slot * 0.15, plot.bottom() - h, slot * 0.7, h)
             painter.fillRect(bar, STAGE_COLORS[(stage - 1) % len(STAGE_COLORS)])
@@ -65,7 +65,8 @@ class VarianceChart(QWidget):
         for s, markers in enumerate(self.stage_markers, start=1):
             total = 100 * self.ratios[self.stages == s].sum()
             y = top + 18 * (s - 1)
-            painter.fillRect(QRectF(self.width() - right + 10, y + 2, 12, 12), STAGE_COLORS[(s - 1) % len(STAGE_COLORS)])
+            painter.fillRect(QRectF(self.width() - right + 10, y + 2, 12, 12),
+                             STAGE_COLORS[(s - 1) % len(STAGE_COLORS)])
             names = ", ".join(markers) if len(markers) <= 2 else f"{markers[0]} … {markers[-1]}"
             painter.setPen(QColor(40, 40, 40))
             painter.drawText(QRectF(self.width() - right + 26, y, right - 28, 16), Qt.AlignmentFlag.AlignVCenter,

@@ -25,7 +25,8 @@ from collections.abc import Callable
 from PySide6.QtCore import QCoreApplication, QThread, Signal
 
 _RUNNING: set[Job] = set()
-_QUIT_HOOKED = False
+#: Dynamic property marking the application whose ``aboutToQuit`` already waits for the jobs.
+_QUIT_HOOKED = "ap_jobs_quit_hooked"
 
 
 class Job(QThread):
@@ -90,8 +91,7 @@ def wait_for_all(timeout_ms: int = 30000) -> None:
 
 
 def _hook_quit() -> None:
-    global _QUIT_HOOKED
     app = QCoreApplication.instance()
-    if not _QUIT_HOOKED and app is not None:
+    if app is not None and not app.property(_QUIT_HOOKED):
         app.aboutToQuit.connect(wait_for_all)
-        _QUIT_HOOKED = True
+        app.setProperty(_QUIT_HOOKED, True)

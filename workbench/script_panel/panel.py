@@ -13,6 +13,8 @@ are kept across sessions (QSettings ``script_panel/…``).
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import tempfile
 from pathlib import Path
 
@@ -52,17 +54,12 @@ COARTICULATIONS = (("Cohen–Massaro", "cohen-massaro"), ("none (target interpol
 MESSAGE_MS = 6000
 
 
-_festival = None
-
-
+@functools.cache
 def _shared_festival():
     """One FestivalSynthesizer for listing voices: it remembers them, so a second window asks no more."""
-    global _festival
-    if _festival is None:
-        from engine.speech.festival import FestivalSynthesizer
+    from engine.speech.festival import FestivalSynthesizer
 
-        _festival = FestivalSynthesizer()
-    return _festival
+    return FestivalSynthesizer()
 
 
 class ScriptPanel(QWidget):
@@ -299,10 +296,8 @@ class ScriptPanel(QWidget):
     def _forget_previous_wav(self, result: SayResult) -> None:
         # The player has read the previous clip into memory; only the newest WAV is kept on disk.
         if self.result is not None and self.result.wav != result.wav:
-            try:
+            with contextlib.suppress(OSError):
                 self.result.wav.unlink()
-            except OSError:
-                pass
 
     def _show_busy(self, busy: bool) -> None:
         self.busy_bar.setVisible(busy)

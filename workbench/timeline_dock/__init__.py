@@ -35,7 +35,8 @@ FILE_FILTER = "Animations (*.xml *.csv);;Command files (*.xml);;Tracks tables (*
 MESSAGE_MS = 4000
 
 ANIMATION_ACTIONS: tuple[ActionSpec, ...] = (
-    ActionSpec("animation.open", "&Open animation…", MENU, triggered=lambda w: open_animation_dialog(w),
+    # PLW0108 below: the lambda defers the look-up, open_animation_dialog is defined further down
+    ActionSpec("animation.open", "&Open animation…", MENU, triggered=lambda w: open_animation_dialog(w),  # noqa: PLW0108
                shortcut="Ctrl+Shift+O", icon="open-animation", toolbar=True, separator_before=True,
                tip="Play a command file (.xml, high or low level) or a tracks table (.csv)"),
     ActionSpec("animation.play_pause", "&Play", MENU, triggered=lambda w: w.player.toggle(),

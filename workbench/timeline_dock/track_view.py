@@ -96,7 +96,7 @@ class TrackView(QWidget):
         self.times = np.zeros(0)
         if timeline is not None and names:
             fps, duration = self.playhead.fps, self.playhead.duration
-            self.times = np.arange(int(round(duration * fps)) + 1) / fps
+            self.times = np.arange(round(duration * fps) + 1) / fps
             values = timeline.sample(self.times * 1000.0)
             column = {name: i for i, name in enumerate(timeline.parameters)}
             self.tracks = {name: values[:, column[name]] for name in names}
@@ -151,7 +151,7 @@ class TrackView(QWidget):
         self._scrubbing = False
 
     def _scrub_to(self, x: float) -> None:
-        self.playhead.set_frame(int(round(self.time_at(x) * self.playhead.fps)))
+        self.playhead.set_frame(round(self.time_at(x) * self.playhead.fps))
 
     def _on_time_changed(self, _seconds: float) -> None:
         self.update()
@@ -244,7 +244,8 @@ class TrackView(QWidget):
             painter.setPen(pen)
             y_default = y_of(parameter.default)
             painter.drawLine(QPointF(LABEL_WIDTH, y_default), QPointF(self.x_of(self.playhead.duration), y_default))
-            points = QPolygonF([QPointF(self.x_of(t), y_of(v)) for t, v in zip(self.times, self.tracks[name])])
+            points = QPolygonF([QPointF(self.x_of(t), y_of(v))
+                                for t, v in zip(self.times, self.tracks[name], strict=True)])
             painter.setPen(QPen(QColor(TRACK_COLORS[index % len(TRACK_COLORS)]), 1.6))
             painter.drawPolyline(points)
 

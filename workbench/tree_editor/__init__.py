@@ -55,7 +55,7 @@ def install(window: MainWindow) -> None:
     editor = TreeEditor(window)
     window.tree_editor = editor
     editor.dock = ParameterTreeDock(window.document, window.view_state, editor.rename, editor.reparent, window)
-    editor.dock.view.delete_requested.connect(lambda: editor.remove_parameter())
+    editor.dock.view.delete_requested.connect(editor.remove_parameter)
     window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, editor.dock)
     editor.sheet = PropertySheet(editor)
     window.tool_options.add_page(TOOL_ID, editor.sheet)     # the dock scrolls every page

@@ -82,7 +82,7 @@ class VectorField(QWidget):
         layout = QHBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.setSpacing(3)
-        for axis, edit in zip("xyz", self.edits):
+        for axis, edit in zip("xyz", self.edits, strict=True):
             label = QLabel(axis)
             label.setEnabled(False)
             layout.addWidget(label)
@@ -92,11 +92,11 @@ class VectorField(QWidget):
         self.setObjectName(f"field:{what}")
 
     def show_value(self, vector) -> None:
-        for edit, v in zip(self.edits, np.asarray(vector, dtype=float)):
+        for edit, v in zip(self.edits, np.asarray(vector, dtype=float), strict=False):
             edit.show_value(float(v))
 
     def set_texts(self, x: str, y: str, z: str) -> None:
-        for edit, text in zip(self.edits, (x, y, z)):
+        for edit, text in zip(self.edits, (x, y, z), strict=True):
             edit.setText(text)
 
     def is_edited(self) -> bool:
@@ -104,7 +104,7 @@ class VectorField(QWidget):
 
     def value(self, original) -> np.ndarray:
         original = np.asarray(original, dtype=float)
-        return np.array([edit.value(float(o)) for edit, o in zip(self.edits, original)])
+        return np.array([edit.value(float(o)) for edit, o in zip(self.edits, original, strict=False)])
 
     def revert(self) -> None:
         for edit in self.edits:

@@ -65,7 +65,7 @@ class ParameterTreeModel(QStandardItemModel):
         if shape == self._shape and len(self._items) == len(entries):
             rows = list(self._items.values())
             self._items = {}
-            for (name, _depth), row in zip(entries, rows):
+            for (name, _depth), row in zip(entries, rows, strict=True):
                 self._fill(row, tree, name)
             return False
         self.removeRows(0, self.rowCount())
@@ -88,7 +88,7 @@ class ParameterTreeModel(QStandardItemModel):
         parent = item.parent() or self.invisibleRootItem()
         row = [parent.child(item.row(), column) or item for column in range(len(COLUMNS))]
         texts = (name, GROUP_TEXT[group], type_text(parameter))
-        for cell, text in zip(row, texts):
+        for cell, text in zip(row, texts, strict=True):
             if cell.text() != text:
                 cell.setText(text)
             cell.setData(name, NAME_ROLE)
