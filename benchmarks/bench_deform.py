@@ -26,7 +26,7 @@ value inside its range each frame (the worst case: all parameters active).
   written (``np.copyto`` into preallocated buffers).
 
 Single thread: BLAS and OpenMP are pinned to one thread before numpy loads.
-No assertions: the figures are printed for the issue note.
+No assertions: the figures are printed, to be compared with benchmarks/README.md.
 """
 
 from __future__ import annotations

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Time from launching the workbench to a window showing the head (issue 7; goal: under 3 s).
+"""Time from launching the workbench to a window showing the head (goal: under 3 s).
 
 Run from the project root under a display (Xvfb is enough)::
 

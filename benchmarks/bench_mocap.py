@@ -1,4 +1,4 @@
-"""Import + multistage PCA of one hour of motion capture at 60 fps with 32 markers (issue 5).
+"""Import + multistage PCA of one hour of motion capture at 60 fps with 32 markers.
 
 The recording is made up by :func:`engine.mocap.synthetic.synthesize_recording`
 (a Finnish sentence spoken by the default head, with head motion, noise,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Weight painting (issue 7): time of one brush dab, and the one-off set-up cost.
+"""Weight painting: time of one brush dab, and the one-off set-up cost.
 
 Run from the project root::
 
@@ -18,7 +18,7 @@ The "live preview" rows add ``LivePreview.update`` (the jaw held at 0.5
 while its weights are painted: the posed positions of the changed vertices).
 Brush: add, strength 0.3, smooth falloff, front faces only, surface-connected
 selection, radius 15 mm and 40 mm; extra rows with the mirror on and the
-smooth brush. Goal (issue 7): under 16 ms on the default head and under 50 ms
+smooth brush. Goal: under 16 ms on the default head and under 50 ms
 at 100k vertices.
 
 Side by side, on the same dabs:

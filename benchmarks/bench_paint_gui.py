@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Weight painting in the workbench (issue 7): time of one brush dab in the real window.
+"""Weight painting in the workbench: time of one brush dab in the real window.
 
 Run from the project root under a display (Xvfb is enough)::
 

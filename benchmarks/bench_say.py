@@ -1,4 +1,4 @@
-"""Text → finished MP4 (640×480, 30 fps) for a ~10-second Finnish utterance (issue 4).
+"""Text → finished MP4 (640×480, 30 fps) for a ~10-second Finnish utterance.
 
 Reports the real-time factor (wall-clock seconds per second of speech; below
 1 is faster than real time) of the whole ``say`` pipeline, broken down into

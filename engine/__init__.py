@@ -1,6 +1,7 @@
 """Artificial Person engine: the science, with no Qt and no VTK at import.
 
-The toolkit of the 2003 paper (``../shared/paper``): a parameterised face
+The toolkit of Frydrych, Kätsyri, Dobšák and Sams, *Toolkit for Animation of
+Finnish Talking Head* (2003): a parameterised face
 deformed by weighted rigid and non-rigid transforms (§2.2), driven by
 commands (§2.3) and speech (§2.1).
 

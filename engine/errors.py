@@ -3,7 +3,7 @@
 Every exception a researcher can trigger with bad input (a malformed model
 file, an unknown parameter, a value out of range) derives from
 :class:`UserError`. Its ``str()`` is the one line the command line prints
-after ``error:`` (DESIGN.md, "Command line"), ``<file>:<line>: <what>``.
+after ``error:``, ``<file>:<line>: <what>``.
 """
 
 from __future__ import annotations

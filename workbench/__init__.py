@@ -1,4 +1,4 @@
-"""Artificial Person workbench: the Qt GUI over the engine (DESIGN.md, "workbench/").
+"""Artificial Person workbench: the Qt GUI over the engine.
 
 The model lives in :mod:`engine`; the workbench is a view over it.
 :class:`~workbench.document.ModelDocument` holds the open model and pose and
@@ -19,7 +19,7 @@ from . import deferred_imports
 
 __all__ = ["main"]
 
-deferred_imports.install()    # before anything imports pyvista: 0.3 s off the start (issue 7)
+deferred_imports.install()    # before anything imports pyvista: 0.3 s off the start
 
 
 def main(model_path: str | None = None) -> int:

@@ -15,7 +15,7 @@ from .document import ModelDocument
 from .icons import APP_ICON, icon
 from .main_window import TITLE, MainWindow
 
-EXIT_USER_ERROR = 2  # DESIGN.md: errors in user input exit with status 2
+EXIT_USER_ERROR = 2  # errors in user input exit with status 2, as on the command line
 
 
 def application(argv: list[str] | None = None) -> QApplication:

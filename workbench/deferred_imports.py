@@ -3,7 +3,7 @@
 pyvista imports ``matplotlib.pyplot`` when it loads, and uses it only inside
 a few functions (a colour cycler, matplotlib charts) the workbench never
 calls. Executing pyplot costs about 0.3 s, a tenth of the time from launch
-to the head on screen (``benchmarks/bench_launch.py``, issue 7). With
+to the head on screen (``benchmarks/bench_launch.py``). With
 :func:`install` called before pyvista is imported, ``import
 matplotlib.pyplot`` gives a module object at once, and pyplot's code runs
 the first time anything reads a name from it::

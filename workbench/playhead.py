@@ -2,7 +2,7 @@
 
 The timeline dock moves it (play, scrub, frame step); the marker view, the
 parameter sliders and anything else that shows "the frame now" listen to
-:attr:`Playhead.time_changed`. Times are seconds (DESIGN.md units), the
+:attr:`Playhead.time_changed`. Times are seconds (the GUI's clock; files and the command line use ms), the
 frame rate is the one of whatever is loaded (60 fps by default).
 """
 

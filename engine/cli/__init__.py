@@ -1,4 +1,4 @@
-"""The command line, ``artificial-person <verb>`` (DESIGN.md, "Command line").
+"""The command line, ``artificial-person <verb>``.
 
 Every verb calls the same engine functions the workbench uses. Mistakes in
 the user's input (a bad option, an unknown parameter, a malformed model file)

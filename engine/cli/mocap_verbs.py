@@ -73,7 +73,7 @@ def add_import(steps: Any) -> None:
 def add_pca(steps: Any) -> None:
     p = steps.add_parser("pca", help="multistage PCA of a session → articulation file (§3.1.2)",
                          description="Stage 1 on the jaw marker(s), its contribution regressed out, stage 2 on "
-                                     "the lips, …; writes the articulation file of DESIGN.md and prints the "
+                                     "the lips, …; writes the articulation file and prints the "
                                      "explained variance per component and stage. See docs/mocap-pca.md.")
     p.add_argument("session", metavar="SESSION.h5", help="session file from 'mocap import'")
     count = p.add_mutually_exclusive_group()

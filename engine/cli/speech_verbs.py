@@ -1,4 +1,4 @@
-"""The ``say`` verb: text (with inline commands) → audio, video and tables (DESIGN.md).
+"""The ``say`` verb: text (with inline commands) → audio, video and tables.
 
 >>> from engine.cli import main
 >>> main(["say", "Hyvää päivää <HeadNod amplitude='60' count='2'/> mitä kuuluu?", "-o", "hello.mp4"])  # doctest: +SKIP

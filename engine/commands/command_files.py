@@ -1,6 +1,6 @@
 """Command files in XML: high-level commands in, low-level activations out (§2.3).
 
-High level (DESIGN.md, "Command files")::
+High level::
 
     <commands>
       <HeadNod at="1000" amplitude="60" count="2"/>

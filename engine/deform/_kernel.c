@@ -42,7 +42,7 @@
  * with the GIL released. Exactness: a leaf at value 0 and a group-1 parameter
  * whose T' is exactly I are skipped, so all values 0 give the rest mesh bit for
  * bit, and a leaf at 0 changes no bit of any vertex (invariants 1 and 2 of
- * DESIGN.md).
+ * docs/deformation.md).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>

@@ -1,4 +1,4 @@
-"""The articulation file of DESIGN.md: the result of the multistage PCA, in HDF5 (§3.1.2).
+"""The articulation file: the result of the multistage PCA, in HDF5 (§3.1.2).
 
 :func:`save_articulation_file` writes an :class:`~engine.mocap.pca.Articulation`
 atomically; :func:`load_articulation_file` reads and checks one, refusing
@@ -43,7 +43,7 @@ class ArticulationFileError(MocapError):
 def save_articulation_file(art: Articulation, path: str | Path) -> Path:
     """Write the articulation file atomically (temporary file beside ``path``, then rename).
 
-    Datasets exactly as DESIGN.md: ``markers`` (M names), ``mean`` (M × 3,
+    Datasets (a fixed layout other tools rely on): ``markers`` (M names), ``mean`` (M × 3,
     mm), ``components`` (C × M × 3, mm at value 1 = one standard deviation),
     ``explained_variance_ratio`` (C), ``stages`` (C, 1-based). Attributes:
     ``format``, ``version``, ``units``, ``component_scale``, ``score_std_mm``

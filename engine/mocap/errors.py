@@ -1,4 +1,4 @@
-"""Errors a user can cause with motion-capture input (issue 5).
+"""Errors a user can cause with motion-capture input.
 
 All derive from :class:`engine.errors.UserError`, so the command line prints
 them as one line, ``error: <file>:<line>: <what>``, and exits with status 2.

@@ -17,7 +17,7 @@ Here:
 * :meth:`Articulation.report` and :func:`describe_component` describe the
   result in words; :mod:`engine.mocap.component_plot` draws it and
   :mod:`engine.mocap.articulation_file` writes and reads the articulation
-  file of DESIGN.md.
+  file.
 
 Lengths are mm, times ms; frame ``i`` of a recording is at ``i · 1000 /
 rate_hz`` ms. ``docs/mocap-pca.md`` gives the mathematics and the file layout.

@@ -2,7 +2,7 @@
 
 An utterance (:class:`engine.speech.say.Speech`) becomes any of: the video
 with its audio (MP4), the audio alone (WAV), the low-level commands (XML),
-the phones, the tracks and the landmarks (CSV; DESIGN.md, "Text tables").
+the phones, the tracks and the landmarks (CSV).
 :func:`write_speech_files` writes them: the timeline is sampled once, at the
 video's frames, and the video, the tracks and the landmarks all show those
 same samples. Every file goes to a hidden temporary name beside its target
@@ -132,7 +132,7 @@ _SUFFIX = {"mp4": ".mp4", "wav": ".wav", "xml": ".xml", "phones": ".csv", "track
 
 
 def landmarks_csv(model: Model, times: np.ndarray, values: np.ndarray) -> str:
-    """DESIGN.md's landmarks table: ``frame,time_ms,<id>_x,<id>_y,<id>_z,…`` (mm), one row per frame.
+    """The landmarks table: ``frame,time_ms,<id>_x,<id>_y,<id>_z,…`` (mm), one row per frame.
 
     ``values`` (frames × parameters, in the model's tree order) at ``times``
     (ms), as :meth:`engine.timeline.Timeline.sample` gives them.

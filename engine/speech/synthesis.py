@@ -4,7 +4,7 @@ The paper's synthesizer is Festival with the Finnish Suopuhe voices; it turns
 text into a waveform *and* the timing of every phone, and those timings drive
 the visual articulation. This module holds what every backend shares — the
 :class:`Utterance` it returns, the :class:`Synthesizer` protocol, and the WAV
-and phones-CSV files (DESIGN.md, "Text tables"). The Festival backend is
+and phones-CSV files (header ``start_ms,end_ms,phone,word``). The Festival backend is
 :class:`engine.speech.festival.FestivalSynthesizer`; ``docs/speech-synthesis.md``
 lists the phones the Finnish voices emit.
 
@@ -162,7 +162,7 @@ def read_wav(path: str | Path) -> tuple[np.ndarray, int]:
 
 
 # ---------------------------------------------------------------------------
-# Phones CSV (DESIGN.md: header start_ms,end_ms,phone,word)
+# Phones CSV (header start_ms,end_ms,phone,word)
 # ---------------------------------------------------------------------------
 
 def format_ms(value: float) -> str:

@@ -103,7 +103,7 @@ class Timeline:
         return times, self.sample(times)
 
     def tracks_csv(self, fps: float = 60.0, start: float = 0.0, end: float | None = None) -> str:
-        """The tracks table (DESIGN.md): header ``time_ms,<parameter>,…``, one row per frame."""
+        """The tracks table: header ``time_ms,<parameter>,…``, one row per frame."""
         times, values = self.sample_frames(fps, start, end)
         return tracks_csv_text(self.parameters, times, values)
 

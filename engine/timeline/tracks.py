@@ -1,4 +1,4 @@
-"""The tracks table (DESIGN.md, "Text tables"): every parameter at every frame, written and read back.
+"""The tracks table: every parameter at every frame, written and read back.
 
 The table has a header ``time_ms,<parameter>,…`` and one row per frame
 (times in ms, values in each parameter's units). :func:`tracks_csv_text`

@@ -1,4 +1,4 @@
-"""The FACS action units of Table 1 on the default head (§3.2, issue 6 "Action units").
+"""The FACS action units of Table 1 on the default head (§3.2).
 
 ``data/default-head/derive_default_head.py`` fits one leaf per row and side
 of Table 1 to the artist's reference poses (``action_units.py`` is the

@@ -1,4 +1,4 @@
-"""The articulatory parameters of the default head (§3.1.2, issue 4 "Articulation").
+"""The articulatory parameters of the default head (§3.1.2).
 
 ``mouth_widen``, ``lip_protrude``, ``upper_lip_raise`` and ``lower_lip_raise``
 (next to ``jaw_open``) are displacement fields fitted to the artist's poses in

@@ -1,7 +1,7 @@
 """The command line, run as users run it: in a fresh interpreter, without a display.
 
 Every error path must end with status 2 and exactly one ``error:`` line on
-stderr (DESIGN.md, "Command line"), never a traceback. Most tests use a small
+stderr, never a traceback. Most tests use a small
 synthetic head saved into a temporary folder; tests of the shipped default
 head skip until ``data/default-head/head.xml`` exists.
 """

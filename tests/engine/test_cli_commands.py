@@ -1,4 +1,4 @@
-"""``translate``, ``tracks`` and ``library`` on the command line (DESIGN.md), as users run them."""
+"""``translate``, ``tracks`` and ``library`` on the command line, as users run them."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""``import engine`` loads no GUI or rendering library (STYLE.md rule 1, DESIGN.md "Packages").
+"""``import engine`` loads no GUI or rendering library.
 
 Each check runs in a fresh interpreter, because this test process may already
 have imported Qt or VTK for other tests.

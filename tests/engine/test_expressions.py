@@ -1,4 +1,4 @@
-"""The expression commands of the shipped library on the default head (§3.2, issue 6 "Expressions").
+"""The expression commands of the shipped library on the default head (§3.2).
 
 Neutral and the six basic emotions (plus contempt and a happy-surprise blend)
 are ``library/*.lib`` files built from the action units of Table 1, played by

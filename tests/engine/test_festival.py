@@ -1,4 +1,4 @@
-"""The synthesizer interface and its Festival backend (§2.1, issue 4 "Synthesizer").
+"""The synthesizer interface and its Festival backend (§2.1).
 
 Two kinds of tests: unit tests of text preparation, parsing (on Festival
 output recorded in ``data/festival/``), WAV and phones-CSV files, which need

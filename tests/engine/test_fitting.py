@@ -1,4 +1,4 @@
-"""Fitting a parameter to an example pose (engine/fitting/, §2.2.2, issue 6).
+"""Fitting a parameter to an example pose (engine/fitting/, §2.2.2).
 
 Synthetic poses are made with the engine's own transforms on a small curved
 sheet of quads (a chin-like piece of cylinder, mm), so the true axis, pivot,

@@ -1,4 +1,4 @@
-"""The deformation engine's invariants (DESIGN.md, "The deformation engine"; paper §2.2).
+"""The deformation engine's invariants (§2.2; derived in docs/deformation.md).
 
 Every test names the invariant it checks. The synthetic rigs come from
 ``synthetic.py``; the last section repeats invariants 1, 2, 3 and 5 on the

@@ -1,4 +1,4 @@
-"""Motion-capture import (issue 5, "Import"; §3.1.1): readers, naming, gaps, head motion, labels, sessions, CLI.
+"""Motion-capture import (§3.1.1): readers, naming, gaps, head motion, labels, sessions, CLI.
 
 Marker files are written by the small writers below from known arrays —
 markers on a talking face with head motion, dropouts and gaps — and read

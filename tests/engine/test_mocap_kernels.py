@@ -1,4 +1,4 @@
-"""The compiled motion-capture kernels and their numpy fallbacks (issue 5, speed of §3.1.1 import).
+"""The compiled motion-capture kernels and their numpy fallbacks (the speed of the §3.1.1 import).
 
 ``engine/mocap/_text_table.c`` reads the number table of a marker export in one pass;
 ``engine/mocap/_rigid_fit.c`` computes every frame's Kabsch rotation. Both must

@@ -1,4 +1,4 @@
-"""Multistage PCA of marker data, the articulation file, and PCA parameters on the face (§3.1, issue 5).
+"""Multistage PCA of marker data, the articulation file, and PCA parameters on the face (§3.1).
 
 The data are synthetic recordings from the default head (engine.mocap.synthetic): its own articulatory
 parameters driven through Festival phone timings, so the generating subspace is known. The phone timings

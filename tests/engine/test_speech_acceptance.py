@@ -1,4 +1,4 @@
-"""Acceptance of the speech pipeline (issue 4) with real Festival and the default head.
+"""Acceptance of the speech pipeline with real Festival and the default head.
 
 Finnish sentences rich in bilabials and in open, spread and rounded vowels
 are spoken by the Suopuhe voice; at the middle of every phone the face is

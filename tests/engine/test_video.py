@@ -1,4 +1,4 @@
-"""Video output (issue 4, "Outputs"): real rendering, real ffmpeg, decoded back and checked.
+"""Video output : real rendering, real ffmpeg, decoded back and checked.
 
 One short video of the default head does most of the work: the head is at
 rest for the first half (jaw closed, facing the camera) and turned with the

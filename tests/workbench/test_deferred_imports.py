@@ -1,4 +1,4 @@
-"""Modules pyvista imports but the workbench does not use run on first use (issue 7: launch time).
+"""Modules pyvista imports but the workbench does not use run on first use (launch time).
 
 ``workbench.deferred_imports`` hands out ``matplotlib.pyplot`` as an empty
 module that runs pyplot's code the first time a name is read from it. These

@@ -1,4 +1,4 @@
-"""View ▸ Landmarks: the model's feature points drawn on the face, following the pose (issue 7, main window).
+"""View ▸ Landmarks: the model's feature points drawn on the face, following the pose (in the main window).
 
 Real rendering: the spheres are found in the grabbed viewport by their colour.
 To refresh the documentation picture:

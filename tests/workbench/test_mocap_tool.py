@@ -1,4 +1,4 @@
-"""The motion-capture tool (issue 9): import dialog, marker view, frame selection, multistage PCA wizard.
+"""The motion-capture tool: import dialog, marker view, frame selection, multistage PCA wizard.
 
 Driven as a user would, in a real main window on the default head (it has
 the lip and jaw landmarks the PCA needs), on recordings made up by

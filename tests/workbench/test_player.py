@@ -1,4 +1,4 @@
-"""The player (issue 8): the playhead drives the pose, playing runs in real time, audio sets the range."""
+"""The player: the playhead drives the pose, playing runs in real time, audio sets the range."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The script panel (issue 8): Say with real Festival, errors as dialogs, export, settings.
+"""The script panel: Say with real Festival, errors as dialogs, export, settings.
 
 Festival runs are few (the machine is shared): one module-scoped Say result
 feeds the player and export tests; error tests fail before synthesis.

@@ -1,4 +1,4 @@
-"""Export speech… (issue 8): MP4 with audio, WAV, tracks and landmarks CSV; Cancel leaves nothing.
+"""Export speech…: MP4 with audio, WAV, tracks and landmarks CSV; Cancel leaves nothing.
 
 One Festival run for the whole module (``spoken``); the window gets it as its
 last result, as if Say had just been pressed.

@@ -1,4 +1,4 @@
-"""The timeline dock (issue 8): open animations, scrub, step, draw the tracks, refuse bad files."""
+"""The timeline dock: open animations, scrub, step, draw the tracks, refuse bad files."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""The expression gallery (issue 8): every expression command and action unit as a clickable face.
+"""The expression gallery: every expression command and action unit as a clickable face.
 
 :func:`install` adds the dock ``dock:expression-gallery`` (Library →
 Expression gallery, Ctrl+G; hidden until opened) as ``window.expression_gallery``.

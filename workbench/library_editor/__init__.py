@@ -1,4 +1,4 @@
-"""The library editor (issue 8): write a §2.3 library file and see the head perform it a second later.
+"""The library editor: write a §2.3 library file and see the head perform it a second later.
 
 :func:`install` adds the dock ``dock:library-editor`` (hidden until Library →
 Library editor, Ctrl+L), the Library menu's commands, and a guard that asks

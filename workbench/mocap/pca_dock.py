@@ -8,12 +8,12 @@
 2. **Results**: explained variance per component and stage (a bar chart and
    the engine's report), each component animated as marker motion over the
    face (±amplitude in standard deviations), **Save articulation file…**
-   (:func:`~engine.mocap.pca.save_articulation_file`, DESIGN.md's layout).
+   (:func:`~engine.mocap.articulation_file.save_articulation_file`).
 3. **Apply to model**: one field translation parameter per component
    (:func:`~engine.mocap.apply.apply_articulation`, on a copy in the
    background, then added to the open model as one undo step), and the
    session's frames the PCA did not analyse reconstructed through the face
-   (:func:`~engine.mocap.apply.reconstruct_held_out`): the error in mm per
+   (:func:`~engine.mocap.held_out.reconstruct_held_out`): the error in mm per
    marker in a table and as the colour of the marker spheres.
 """
 

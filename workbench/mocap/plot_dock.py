@@ -4,7 +4,7 @@ A click on the plot selects one frame, a drag a range; each gets the phone
 written in the *Phone* box and shows as a shaded span (and moves the shared
 playhead there). *Select by phones* replaces the selection by one frame in
 the middle of every phone matching the selectors — the engine's
-:func:`~engine.mocap.pca.select_frames` (``V C``: every vowel and consonant;
+:func:`~engine.mocap.frame_selection.select_frames` (``V C``: every vowel and consonant;
 ``a/p_p``: *a* between two *p*'s). Phone labels are imported from a
 TextGrid or label file, or aligned from Festival's timing of the spoken
 text (:mod:`engine.mocap.labels`), and drawn along the time axis.

@@ -8,7 +8,7 @@ never talk to each other.
 
 Frames are chosen as *spans* (inclusive frame ranges, each with a phone
 label): a click adds one frame, a drag a range, "select by phones" one frame
-per matching phone (the engine's :func:`~engine.mocap.pca.select_frames`).
+per matching phone (the engine's :func:`~engine.mocap.frame_selection.select_frames`).
 
 >>> state = MocapState()                                           # doctest: +SKIP
 >>> state.set_session(load_session("take1.h5"), "take1.h5")        # doctest: +SKIP

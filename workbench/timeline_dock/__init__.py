@@ -1,4 +1,4 @@
-"""The timeline dock and the player: play, scrub and look at an animation (issue 8).
+"""The timeline dock and the player: play, scrub and look at an animation.
 
 ``install(window)`` creates :attr:`window.player <workbench.player.Player>`
 (first: other tools play through it), the "Timeline" dock at the bottom
