@@ -20,31 +20,20 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from typing import Protocol, TypeAlias, runtime_checkable
+from typing import TypeAlias
 
 import numpy as np
 import numpy.typing as npt
 
 from engine.mocap.errors import MocapError
+from engine.script.timed_labels import TimedLabel
 
 VOWELS = frozenset(["a", "e", "i", "o", "u", "y", "@", "7"])          # Suopuhe's Finnish vowels (@ = ä, 7 = ö)
 PAUSES = frozenset(["#", "##", "pau", "sil", "_"])
 
 
-@runtime_checkable
-class TimedPhone(Protocol):
-    """A phone and its time span in ms, such as :class:`engine.speech.synthesis.Segment`."""
-
-    @property
-    def label(self) -> str: ...
-    @property
-    def start_ms(self) -> float: ...
-    @property
-    def end_ms(self) -> float: ...
-
-
-#: Phones as ``(start_ms, end_ms, label)`` triples or :class:`TimedPhone` objects (segments).
-Phones: TypeAlias = Iterable[tuple[float, float, str] | TimedPhone]
+#: Phones as ``(start_ms, end_ms, label)`` triples or timed labels (:class:`~engine.speech.synthesis.Segment`).
+Phones: TypeAlias = Iterable[tuple[float, float, str] | TimedLabel]
 
 
 @dataclass
@@ -212,7 +201,7 @@ def _matches(label: str, items: Iterable[str]) -> bool:
 def _phone_triples(phones: Phones | None) -> list[tuple[float, float, str]]:
     out = []
     for p in phones or []:
-        if isinstance(p, TimedPhone):
+        if isinstance(p, TimedLabel):
             out.append((float(p.start_ms), float(p.end_ms), str(p.label)))
         else:
             start, end, label = p[:3]

@@ -47,7 +47,8 @@ import numpy as np
 import numpy.typing as npt
 
 from engine.errors import UserError
-from engine.mocap.frame_selection import Phones, TimedPhone
+from engine.mocap.frame_selection import Phones
+from engine.script.timed_labels import TimedLabel
 
 if TYPE_CHECKING:
     from engine.model.model import Model
@@ -325,7 +326,7 @@ def _segments(phones: Phones) -> list[Segment]:
     for p in phones:
         if isinstance(p, Segment):
             out.append(p)
-        elif isinstance(p, TimedPhone):
+        elif isinstance(p, TimedLabel):
             out.append(Segment(str(p.label), float(p.start_ms), float(p.end_ms)))
         else:
             start, end, label = p[:3]

@@ -25,6 +25,7 @@ array([ 0., nan])
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -99,16 +100,38 @@ class WeightChange:
         >>> ab.indices.tolist(), ab.before.tolist(), ab.after.tolist()
         ([1, 2, 3], [0.0, nan, 0.25], [0.5, 1.0, 0.0])
         """
-        indices = np.union1d(self.indices, later.indices)
-        mine = np.isin(indices, self.indices, assume_unique=True)
-        theirs = np.isin(indices, later.indices, assume_unique=True)
-        before = np.empty(len(indices))
-        before[mine] = self.before
-        before[~mine] = later.before[np.searchsorted(later.indices, indices[~mine])]
-        after = np.empty(len(indices))
-        after[theirs] = later.after
-        after[~theirs] = self.after[np.searchsorted(self.indices, indices[~theirs])]
-        return WeightChange(indices, before, after)
+        return WeightChange(*merged_changes(self, later))
+
+
+class IndexedChange(Protocol):
+    """Values of some vertices before and after an edit: sorted ``indices`` and ``before``/``after`` beside them."""
+
+    @property
+    def indices(self) -> np.ndarray: ...
+    @property
+    def before(self) -> np.ndarray: ...
+    @property
+    def after(self) -> np.ndarray: ...
+
+
+def merged_changes(first: IndexedChange, later: IndexedChange) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(indices, before, after)`` of ``first`` followed by ``later``: every vertex either touched,
+    with its value before ``first`` (or before ``later``, if only ``later`` touched it) and its last value.
+
+    >>> a = WeightChange([1, 2], [0.0, 0.1], [0.5, 0.5])
+    >>> [x.tolist() for x in merged_changes(a, WeightChange([2, 3], [0.5, 0.2], [1.0, 0.0]))]
+    [[1, 2, 3], [0.0, 0.1, 0.2], [0.5, 1.0, 0.0]]
+    """
+    indices = np.union1d(first.indices, later.indices)
+    mine = np.isin(indices, first.indices, assume_unique=True)
+    theirs = np.isin(indices, later.indices, assume_unique=True)
+    before = np.empty(len(indices))
+    before[mine] = first.before
+    before[~mine] = later.before[np.searchsorted(later.indices, indices[~mine])]
+    after = np.empty(len(indices))
+    after[theirs] = later.after
+    after[~theirs] = first.after[np.searchsorted(first.indices, indices[~theirs])]
+    return indices, before, after
 
 
 def _canonical_bits(weights: np.ndarray) -> bytes:

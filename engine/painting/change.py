@@ -25,7 +25,7 @@ import numpy as np
 
 from engine.errors import UserError
 from engine.model.model import Model
-from engine.model.weight_changes import WeightChange, weight_change
+from engine.model.weight_changes import WeightChange, merged_changes, weight_change
 
 
 @dataclass(frozen=True)
@@ -80,16 +80,7 @@ class Change:
             return later
         if not later:
             return self
-        indices = np.union1d(self.indices, later.indices)
-        mine = np.isin(indices, self.indices, assume_unique=True)
-        theirs = np.isin(indices, later.indices, assume_unique=True)
-        before = np.empty(len(indices))
-        before[mine] = self.before
-        before[~mine] = later.before[np.searchsorted(later.indices, indices[~mine])]
-        after = np.empty(len(indices))
-        after[theirs] = later.after
-        after[~theirs] = self.after[np.searchsorted(self.indices, indices[~theirs])]
-        return Change(indices, before, after)
+        return Change(*merged_changes(self, later))
 
 
 def weight_change_from_dense(model: Model, name: str, change: Change) -> WeightChange:

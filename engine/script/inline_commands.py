@@ -28,25 +28,14 @@ import re
 import unicodedata
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import Protocol
 
 from engine.commands.command_files import HighLevelCommand, parse_commands_text
 from engine.errors import CommandError
+from engine.script.timed_labels import TimedLabel
 
 _TAG = re.compile(r"<[^<>]*>")
 _WELL_FORMED = re.compile(r"<\s*[A-Za-z_][A-Za-z0-9_.\-]*(\s+[^<>]*?)?/\s*>$", re.S)
 _WORD = re.compile(r"[^\W_]+(?:['’\-][^\W_]+)*", re.UNICODE)
-
-
-class SpokenWord(Protocol):
-    """A word as the synthesizer timed it (e.g. :class:`engine.speech.synthesis.Segment`), ms."""
-
-    @property
-    def label(self) -> str: ...
-    @property
-    def start_ms(self) -> float: ...
-    @property
-    def end_ms(self) -> float: ...
 
 
 @dataclass
@@ -86,7 +75,7 @@ def parse_script(source: str, name: str = "<text>") -> Script:
     return Script(text, words, commands, name)
 
 
-def anchored_commands(script: Script, spoken_words: Sequence[SpokenWord]) -> list[HighLevelCommand]:
+def anchored_commands(script: Script, spoken_words: Sequence[TimedLabel]) -> list[HighLevelCommand]:
     """The script's commands with ``at`` filled in from the synthesizer's word timings.
 
     ``spoken_words`` are segments with ``label``, ``start_ms``, ``end_ms`` (the
@@ -104,7 +93,7 @@ def anchored_commands(script: Script, spoken_words: Sequence[SpokenWord]) -> lis
     return out
 
 
-def word_start_times(words: list[str], spoken_words: Sequence[SpokenWord]) -> list[float]:
+def word_start_times(words: list[str], spoken_words: Sequence[TimedLabel]) -> list[float]:
     """Start time of each written word, matched to the spoken words by their letters."""
     if not spoken_words:
         return [0.0] * len(words)
