@@ -22,8 +22,6 @@ from engine.outputs.gltf_export import (
     MODEL_VERTEX,
     GltfFileError,
     MorphTarget,
-    _quaternion,
-    _rotation_from_x,
     export_gltf,
     glb_bytes,
     gltf_document,
@@ -33,6 +31,7 @@ from engine.outputs.gltf_export import (
     skeleton_parameters,
     target_value,
 )
+from engine.outputs.gltf_skeleton import quaternion, rotation_from_x
 from engine.outputs.part_layout import PartLayout
 from engine.paths import default_model_path, reference_poses_path
 from tests.engine.cli_runner import assert_user_error, run
@@ -308,15 +307,15 @@ def test_joint_frames_and_quaternions(seed):
                                                       ([1, 0, 0], [-1, 0, 0], [0, -1, 0], [0, 0, 1], [-1, 1e-9, 0])]
     for axis in axes:
         a = axis / np.linalg.norm(axis)
-        r = _rotation_from_x(a)
+        r = rotation_from_x(a)
         assert np.allclose(r @ [1, 0, 0], a, atol=1e-12) and np.allclose(r.T @ r, np.eye(3), atol=1e-12)
         assert np.linalg.det(r) == pytest.approx(1.0)
-        assert np.allclose(_matrix(_quaternion(r)), r, atol=1e-12)
+        assert np.allclose(_matrix(quaternion(r)), r, atol=1e-12)
     for angle, direction in ((np.pi, (1, 1, 0)), (np.pi, (0, 1, 1)), (np.pi - 1e-9, (1, 2, 3))):
         axis = np.array(direction) / np.linalg.norm(direction)
         k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
         r = np.eye(3) + np.sin(angle) * k + (1 - np.cos(angle)) * k @ k
-        assert np.allclose(_matrix(_quaternion(r)), r, atol=1e-9)
+        assert np.allclose(_matrix(quaternion(r)), r, atol=1e-9)
 
 
 # ---------------------------------------------------------------------------
