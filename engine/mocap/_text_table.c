@@ -2,7 +2,7 @@
  * Reading a large table of decimal numbers (motion-capture exports) in one pass.
  *
  * Built as the extension module ``engine.mocap._text_table`` by ``pip install -e .``
- * (setup.py); ``engine/mocap/readers.py`` uses it when it imports and falls
+ * (setup.py); ``engine/mocap/text_tables.py`` uses it when it imports and falls
  * back to numpy's ``loadtxt`` otherwise. Only the Python C API and the buffer
  * protocol (no numpy headers); portable C, single thread, GIL released.
  *
