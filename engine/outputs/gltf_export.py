@@ -54,6 +54,7 @@ from engine.formats.gltf_read import (
     _split_glb,
     read_gltf,
 )
+from engine.outputs.gltf_buffer import GltfBuffer
 from engine.outputs.gltf_skeleton import SkeletonRig, skeleton_parameters
 
 if TYPE_CHECKING:
@@ -66,7 +67,6 @@ __all__ = ["GltfFileError", "MorphTarget", "export_gltf", "glb_bytes", "gltf_doc
 SUFFIXES = (".glb", ".gltf")
 POSES_FORMAT = "artificial-person-poses"
 
-_FLOAT, _UBYTE, _USHORT, _UINT = 5126, 5121, 5123, 5125
 _ARRAY_BUFFER, _ELEMENT_ARRAY_BUFFER = 34962, 34963
 
 
@@ -192,46 +192,6 @@ def pose_targets(model: Model, path: str | Path | None = None, group: str = "ark
 
 # -- writing ---------------------------------------------------------------------
 
-class _Buffer:
-    """The binary buffer, one bufferView per array, each aligned to 4 bytes."""
-
-    def __init__(self) -> None:
-        self.chunks: list[bytes] = []
-        self.length = 0
-        self.views: list[dict[str, int]] = []
-        self.accessors: list[dict[str, object]] = []
-
-    def add(self, array: np.ndarray, target: int | None, bounds: bool = True, kind: str | None = None) -> int:
-        array = np.ascontiguousarray(array)
-        data = array.astype(array.dtype.newbyteorder("<"), copy=False).tobytes()
-        view = {"buffer": 0, "byteOffset": self.length, "byteLength": len(data)}
-        if target is not None:
-            view["target"] = target
-        self.views.append(view)
-        pad = -len(data) % 4
-        self.chunks.append(data + b"\0" * pad)
-        self.length += len(data) + pad
-        component = {np.dtype(np.float32): _FLOAT, np.dtype(np.uint8): _UBYTE, np.dtype(np.uint16): _USHORT,
-                     np.dtype(np.uint32): _UINT}[array.dtype]
-        accessor: dict[str, object] = {
-            "bufferView": len(self.views) - 1, "componentType": component, "count": int(array.shape[0]),
-            "type": kind or ("SCALAR" if array.ndim == 1 else f"VEC{array.shape[1]}")}
-        if bounds and len(array):
-            flat = array.reshape(len(array), -1)
-            # float32 values written as Python floats: the JSON numbers round-trip to the same float32
-            accessor["min"] = [_number(v) for v in flat.min(axis=0)]
-            accessor["max"] = [_number(v) for v in flat.max(axis=0)]
-        self.accessors.append(accessor)
-        return len(self.accessors) - 1
-
-    def data(self) -> bytes:
-        return b"".join(self.chunks)
-
-
-def _number(v: np.integer | np.floating) -> int | float:
-    return int(v) if isinstance(v, np.integer) else float(v)
-
-
 def gltf_document(model: Model, targets: Iterable[MorphTarget] = (), target_normals: bool = True,
                   skeleton: bool = False) -> tuple[dict, bytes]:
     """The glTF JSON document (without ``buffers[0].uri``) and its binary buffer.
@@ -264,7 +224,7 @@ def gltf_document(model: Model, targets: Iterable[MorphTarget] = (), target_norm
     points, normals = layout.points_and_normals(rest)
     points = points.copy()                  # the layout hands out one buffer, refilled on every call
     moved = [layout.points_and_normals(rest + t.displacements)[1] for t in targets] if target_normals else []
-    buf = _Buffer()
+    buf = GltfBuffer()
     primitives: list[dict[str, object]] = []
     materials: list[dict[str, object]] = []
     for k, part in enumerate(layout.parts):

@@ -22,7 +22,7 @@ from engine.formats.gltf_read import METRES_PER_MM
 
 if TYPE_CHECKING:
     from engine.model import Model, Parameter
-    from engine.outputs.gltf_export import _Buffer
+    from engine.outputs.gltf_buffer import GltfBuffer
 
 
 def skeleton_parameters(model: Model) -> list[str]:
@@ -69,7 +69,7 @@ class SkeletonRig:
         self.frames = {name: joint_frame(tree[name]) for name in self.names}
         self.tree = tree
 
-    def skin(self, nodes: list[dict[str, Any]], buf: _Buffer) -> dict:
+    def skin(self, nodes: list[dict[str, Any]], buf: GltfBuffer) -> dict:
         """Append the joint nodes to ``nodes``; return the skin."""
         first = len(nodes)
         index: dict[str | None, int] = {name: first + 1 + i for i, name in enumerate(self.names)}
