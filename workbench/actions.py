@@ -55,9 +55,12 @@ ACTIONS: tuple[ActionSpec, ...] = (
     ActionSpec("file.save_as", "Save model &as…", "&File", triggered=lambda w: w.files.save_as_dialog(),
                shortcut=QKeySequence.StandardKey.SaveAs, icon="save-as",
                tip="Write the model to a new .xml + .h5 pair"),
-    ActionSpec("file.export", "&Export configuration…", "&File", triggered=lambda w: w.files.export_dialog(),
+    ActionSpec("file.export", "&Configuration…", "&File/&Export", triggered=lambda w: w.files.export_dialog(),
                shortcut="Ctrl+E", icon="export-configuration", separator_before=True,
                tip="Copy the model and the command library files it uses into a folder for a colleague"),
+    ActionSpec("file.export_gltf", "&glTF…", "&File/&Export", triggered=lambda w: w.files.export_gltf_dialog(),
+               icon="export-gltf",
+               tip="Write the model with its parameters as glTF 2.0 morph targets (Blender, Unity, Unreal, three.js)"),
     ActionSpec("file.quit", "&Quit", "&File", triggered=lambda w: w.close(),
                shortcut=QKeySequence.StandardKey.Quit, separator_before=True),
     ActionSpec("edit.undo", "&Undo", "&Edit", triggered=lambda w: w.undo(),
@@ -113,17 +116,33 @@ def populate(menubar: QMenuBar, toolbar: QToolBar, actions: dict[str, QAction],
     """Put the actions into menus (created in order of first mention) and the toolbar."""
     menus: dict[str, QMenu] = {}
     for spec in specs:
-        menu = menus.get(spec.menu)
-        if menu is None:
-            menu = menus[spec.menu] = menubar.addMenu(spec.menu)
-        elif spec.separator_before:
-            menu.addSeparator()
+        menu = _menu(spec, menus, menubar)
         menu.addAction(actions[spec.id])
         if spec.toolbar:
             if spec.separator_before and toolbar.actions():
                 toolbar.addSeparator()
             toolbar.addAction(actions[spec.id])
     return menus
+
+
+def _menu(spec: ActionSpec, menus: dict[str, QMenu], menubar: QMenuBar) -> QMenu:
+    """The menu ``spec`` goes into, made at the end of the menu bar on first mention; a name
+    ``"&File/&Export"`` is a submenu, made at the end of its parent (after a separator if asked)."""
+    menu = menus.get(spec.menu)
+    if menu is not None:
+        if spec.separator_before:
+            menu.addSeparator()
+        return menu
+    parent_name, _, title = spec.menu.rpartition("/")
+    if not parent_name:
+        menu = menubar.addMenu(title)
+    else:
+        parent = menus[parent_name]
+        if spec.separator_before:
+            parent.addSeparator()
+        menu = parent.addMenu(title)
+    menus[spec.menu] = menu
+    return menu
 
 
 def add_actions(window: MainWindow, specs: tuple[ActionSpec, ...]) -> dict[str, QAction]:
@@ -134,11 +153,7 @@ def add_actions(window: MainWindow, specs: tuple[ActionSpec, ...]) -> dict[str, 
     """
     actions = create_actions(window, specs)
     for spec in specs:
-        menu = window.menus.get(spec.menu)
-        if menu is None:
-            menu = window.menus[spec.menu] = window.menuBar().addMenu(spec.menu)
-        elif spec.separator_before:
-            menu.addSeparator()
+        menu = _menu(spec, window.menus, window.menuBar())
         menu.addAction(actions[spec.id])
         if spec.toolbar:
             if spec.separator_before and window.toolbar.actions():

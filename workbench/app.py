@@ -59,6 +59,7 @@ def main(model_path: str | None = None) -> int:
         testing_hooks.prepare(window)
     window.show()
     window.files.offer_recovery()
+    window.library_editor.offer_recovery()     # the library editor's unsaved text, likewise
     if hooks:
         QTimer.singleShot(0, lambda: testing_hooks.run(window))
     status = app.exec()

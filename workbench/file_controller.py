@@ -1,11 +1,14 @@
-"""The File menu's flows: new from mesh, open, save, save as, export, recover; never lose work.
+"""The File menu's flows: new from mesh, open, save, save as, export (configuration, glTF), recover.
 
 Every flow that would replace or drop the open model first asks about
 unsaved changes (Save / Discard / Cancel). Errors a user can cause (an
 unreadable file, a folder that cannot be written) are shown in a dialog with
 the engine's one-line ``file:line: what`` message; the current model stays.
 The questions are separate methods (:meth:`FileController.ask_unsaved`,
-:meth:`FileController.ask_recover`) so tests and test hooks can answer them.
+:meth:`FileController.ask_recover`, :meth:`FileController.ask_export_folder`)
+so tests and test hooks can answer them. Exports carry the name the user
+knows the model by, its file's (``painted.xml`` exports ``painted.*``), not
+the name stored inside it.
 """
 
 from __future__ import annotations
@@ -20,14 +23,17 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 
 import engine
 from engine.formats.mesh_io import import_mesh
-from engine.outputs.configuration_export import export_configuration
+from engine.outputs.configuration_export import export_configuration, exported_model_path
 from engine.paths import DATA_DIR
 
 from . import settings
+from .export_folder_dialog import ExportFolderDialog
 from .recent_files import add_recent_file
 from .recovery import RecoveryEntry, orphaned_entries
 
 if TYPE_CHECKING:
+    from .gltf_export_dialog import GltfExportDialog
+    from .gltf_exporter import GltfExporter
     from .main_window import MainWindow
 
 TITLE = "Artificial Person"
@@ -44,6 +50,8 @@ class FileController:
 
     def __init__(self, window: MainWindow):
         self._window_ref = weakref.ref(window)
+        self._gltf_exporter: GltfExporter | None = None
+        self.gltf_dialog: GltfExportDialog | None = None
 
     @property
     def window(self) -> MainWindow:
@@ -75,6 +83,15 @@ class FileController:
         box.button(Button.Ignore).setText("Ask &later")
         box.setDefaultButton(Button.Yes)
         return Button(box.exec())
+
+    def ask_export_folder(self) -> Path | None:
+        """The folder to export the configuration to, existing or new; ``None`` if cancelled."""
+        dialog = ExportFolderDialog(self.window, Path(self.start_dir()), exported_model_path(
+            self.document.model, self.export_stem()))
+        try:
+            return dialog.folder() if dialog.exec() == ExportFolderDialog.DialogCode.Accepted else None
+        finally:
+            dialog.deleteLater()
 
     # -- the unsaved-changes guard ------------------------------------------------
     def maybe_save(self, doing: str = "closing") -> bool:
@@ -162,11 +179,11 @@ class FileController:
 
     # -- export ----------------------------------------------------------------------------
     def export_dialog(self) -> bool:
-        """Ask for a folder and export the model and its library files there."""
-        folder = QFileDialog.getExistingDirectory(self.window, "Export configuration to folder", self.start_dir())
-        if not folder:
+        """Ask for a folder (a new one is created) and export the model and its library files there."""
+        folder = self.ask_export_folder()
+        if folder is None:
             return False
-        if any(Path(folder).iterdir()):
+        if folder.is_dir() and any(folder.iterdir()):
             answer = QMessageBox.question(
                 self.window, f"{TITLE}: export configuration",
                 f"The folder {folder} is not empty. Files of the same name will be replaced. Export anyway?",
@@ -176,16 +193,56 @@ class FileController:
         return self.export_configuration(folder)
 
     def export_configuration(self, folder: str | Path) -> bool:
+        """Write the configuration into ``folder`` (created if needed), the model named as its file."""
         try:
             summary = export_configuration(self.document.model, folder, settings.library_folders(),
-                                           source=self.document.path)
+                                           source=self.document.path, stem=self.export_stem())
         except (engine.UserError, OSError) as exc:
             QMessageBox.critical(self.window, f"{TITLE}: cannot export configuration", str(exc))
             return False
-        self.remember_dir(Path(folder) / "x")
+        self.remember_dir(folder)           # its parent: the next export proposes a folder beside this one
         self.show_message(f"Exported {summary.model.as_posix()} and {len(summary.library_files)} "
                           f"library files to {folder}")
         return True
+
+    def export_stem(self) -> str | None:
+        """The name exports give the model: its file's stem; ``None`` (the model's name) when untitled."""
+        path = self.document.path
+        return path.stem if path is not None else None
+
+    @property
+    def gltf_exporter(self) -> GltfExporter:
+        if self._gltf_exporter is None:
+            from .gltf_exporter import GltfExporter  # on first use: not needed to start the window
+
+            self._gltf_exporter = GltfExporter(self.window)
+        return self._gltf_exporter
+
+    def export_gltf_dialog(self) -> GltfExportDialog | None:
+        """Open File → Export → glTF… (window-modal, not blocking); its Export button starts the export.
+
+        ``None`` while an export is still running.
+        """
+        from .gltf_export_dialog import GltfExportDialog
+
+        if self.gltf_exporter.busy:
+            self.show_message("A glTF export is still running")
+            return None
+        if self.gltf_dialog is not None:
+            self.gltf_dialog.deleteLater()
+        stem = self.export_stem() or self.document.model.name or "model"
+        dialog = self.gltf_dialog = GltfExportDialog(self.document.model, self.document.path,
+                                                     Path(self.start_dir()) / f"{stem}.glb", self.window)
+        dialog.accepted.connect(self._export_gltf_chosen)
+        dialog.open()
+        return dialog
+
+    def _export_gltf_chosen(self) -> None:
+        if self.gltf_dialog is None:
+            return
+        choices = self.gltf_dialog.choices()
+        if self.gltf_exporter.export(choices, self.document.model, self.document.path):
+            self.remember_dir(choices.path)
 
     # -- crash recovery -------------------------------------------------------------------
     def offer_recovery(self) -> bool:

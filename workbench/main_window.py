@@ -9,18 +9,20 @@ guards against losing work on close. File flows live in
 
 from __future__ import annotations
 
-from PySide6.QtCore import QSettings, Qt
-from PySide6.QtGui import QAction, QCloseEvent
-from PySide6.QtWidgets import QDockWidget, QMainWindow, QToolBar, QWidget
+from PySide6.QtCore import QSettings, QSize, Qt
+from PySide6.QtGui import QAction, QCloseEvent, QShowEvent
+from PySide6.QtWidgets import QDockWidget, QMainWindow, QStyle, QToolBar, QWidget
 
 import engine
 
 from . import actions as workbench_actions
 from . import features, garbage_collection, settings
+from .dock_scroller import scroll_dock_content
 from .document import ModelDocument
 from .file_controller import TITLE, FileController
 from .icons import APP_ICON, icon
 from .landmark_overlay import LandmarkOverlay
+from .layouts import LayoutManager, fit_to_screen, fresh_window_size
 from .parameter_panel import ParameterPanel
 from .parts_menu import PartsMenu
 from .playhead import Playhead
@@ -67,6 +69,7 @@ class MainWindow(QMainWindow):
         self.parameter_dock.setFeatures(QDockWidget.DockWidgetFeature.DockWidgetMovable
                                         | QDockWidget.DockWidgetFeature.DockWidgetFloatable)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.parameter_dock)
+        self.parameter_dock.useful_size = self._parameter_dock_width   # the sliders' rows whole, not scrolled
         self.tool_options = ToolOptionsDock(self)
         self.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.tool_options)
 
@@ -93,15 +96,15 @@ class MainWindow(QMainWindow):
         self._bind_undo_actions()
 
         self.setStatusBar(ModelStatusBar(document, self))
-        # The side columns run the full height; bottom docks (the timeline) sit under the viewport only.
-        self.setCorner(Qt.Corner.BottomLeftCorner, Qt.DockWidgetArea.LeftDockWidgetArea)
-        self.setCorner(Qt.Corner.BottomRightCorner, Qt.DockWidgetArea.RightDockWidgetArea)
         features.install_all(self)      # the tools: their docks exist before the layout is restored
+        for dock in self.findChildren(QDockWidget):
+            scroll_dock_content(dock)   # no dock's content may push the window off the screen
+        self.layouts = LayoutManager(self)
         self._update_title()
         self.setWindowModified(document.is_modified)
-        self.resize(1280, 800)
-        self.resizeDocks([self.parameter_dock], [430], Qt.Orientation.Horizontal)
-        self.resizeDocks([self.parameter_dock, self.tool_options], [420, 320], Qt.Orientation.Vertical)
+        available = self.screen().availableGeometry()
+        self.resize(fresh_window_size(available))
+        self.move(available.center() - self.rect().center())
         self.restore_layout()
 
         seconds = autosave_seconds if autosave_seconds is not None else settings.autosave_interval_seconds()
@@ -126,22 +129,24 @@ class MainWindow(QMainWindow):
 
     # -- layout --------------------------------------------------------------
     def save_layout(self) -> None:
-        """Remember the window's size, place, docks and toolbar (QSettings ``window/…``)."""
-        store = QSettings()
-        store.setValue(settings.WINDOW_GEOMETRY, self.saveGeometry())
-        store.setValue(settings.WINDOW_STATE, self.saveState())
+        """Remember the window's size and place, and the task layout as the user left it (QSettings)."""
+        QSettings().setValue(settings.WINDOW_GEOMETRY, self.saveGeometry())
+        self.layouts.remember()
 
     def restore_layout(self) -> bool:
-        store = QSettings()
-        geometry, state = store.value(settings.WINDOW_GEOMETRY), store.value(settings.WINDOW_STATE)
-        restored = False
-        if geometry is not None:
-            restored = self.restoreGeometry(geometry)
-        if state is not None:
-            restored = self.restoreState(state) and restored
+        """The remembered size and place (fitted to this screen) and task layout; ``False`` if none was."""
+        geometry = QSettings().value(settings.WINDOW_GEOMETRY)
+        restored = geometry is not None and self.restoreGeometry(geometry)
+        if restored:
+            fit_to_screen(self)
+        self.layouts.restore()
         return restored
 
     # -- Qt overrides --------------------------------------------------------
+    def showEvent(self, event: QShowEvent) -> None:
+        super().showEvent(event)
+        self.layouts.window_shown()
+
     def closeEvent(self, event: QCloseEvent) -> None:
         if self._closed:
             event.accept()
@@ -158,6 +163,10 @@ class MainWindow(QMainWindow):
         super().closeEvent(event)
 
     # -- helpers -----------------------------------------------------------
+    def _parameter_dock_width(self) -> QSize:
+        scroll_bar = self.style().pixelMetric(QStyle.PixelMetric.PM_ScrollBarExtent)
+        return QSize(self.parameter_panel.sizeHint().width() + scroll_bar + 4, 0)
+
     def _bind_undo_actions(self) -> None:
         stack = self.document.undo_stack
         stack.canUndoChanged.connect(self.actions_by_id["edit.undo"].setEnabled)

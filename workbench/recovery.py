@@ -10,12 +10,18 @@ folder (``<AppLocalDataLocation>/recovery``, on Linux
 * ``<id>.json``: what the copy is (format ``artificial-person-recovery``,
   version 1): the file it belongs to and when it was written. Written last,
   so a session with a ``.json`` always has a complete model.
+* ``<id>.library.json``: the library editor's unsaved text (format
+  ``artificial-person-library-recovery``, version 1): the text itself, the
+  library file it belongs to (``null`` for a new file) and when it was
+  written, in one atomic write.
 
-When the model is saved (or undone back to its saved state) the copy is
-deleted; a clean shutdown deletes the whole session. A session whose lock
-nobody holds any more (the process died) is *orphaned*: at the next start
-the workbench offers to recover it, if it is newer than the file it belongs
-to; otherwise it is stale and removed.
+When the model is saved (or undone back to its saved state) its copy is
+deleted, and likewise the library text's when the library file is saved or
+its edits discarded; a clean shutdown deletes the whole session. A session
+whose lock nobody holds any more (the process died) is *orphaned*: at the
+next start the workbench offers to recover its model and its library text,
+each if it is newer than the file it belongs to; otherwise it is stale and
+removed.
 """
 
 from __future__ import annotations
@@ -37,6 +43,10 @@ from .document import ModelDocument
 
 RECOVERY_FORMAT = "artificial-person-recovery"
 RECOVERY_VERSION = 1
+LIBRARY_RECOVERY_FORMAT = "artificial-person-library-recovery"
+LIBRARY_RECOVERY_VERSION = 1
+LIBRARY_SUFFIX = ".library.json"
+MODEL_SUFFIXES = (".json", ".xml", ".h5")   # the description first: see _remove_session_files
 
 
 def recovery_dir() -> Path:
@@ -72,29 +82,95 @@ class RecoveryEntry:
         _remove_session_files(self.folder, self.session)
 
 
+@dataclass(frozen=True)
+class LibraryCopy:
+    """An orphaned library-editor text: unsaved edits left by a workbench that did not shut down cleanly."""
+
+    folder: Path
+    session: str
+    original: Path | None      # the library file the text belongs to; None for a new file never saved
+    saved_at: float            # seconds since the epoch
+    text: str
+
+    @property
+    def path(self) -> Path:
+        return self.folder / f"{self.session}{LIBRARY_SUFFIX}"
+
+    def display_name(self) -> str:
+        return self.original.name if self.original is not None else "untitled.lib"
+
+    def is_newer_than_original(self) -> bool:
+        """True unless the library file was saved after this copy was made."""
+        if self.original is None or not self.original.exists():
+            return True
+        return self.saved_at > self.original.stat().st_mtime
+
+    def remove(self) -> None:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(self.path)
+
+
 def orphaned_entries(folder: str | Path | None = None) -> list[RecoveryEntry]:
-    """Recovery copies no running workbench owns, newest first.
+    """Model copies no running workbench owns, newest first.
 
     Sessions still locked by a live process are left alone; unreadable
     session descriptions are skipped (and removed with their files).
     """
+    entries = []
+    for folder_, session in _orphaned_sessions(folder, ".json"):
+        entry = _read_entry(folder_ / f"{session}.json")
+        if entry is None:
+            _remove_session_files(folder_, session)
+        else:
+            entries.append(entry)
+    return sorted(entries, key=lambda e: e.saved_at, reverse=True)
+
+
+def orphaned_library_copies(folder: str | Path | None = None) -> list[LibraryCopy]:
+    """Library-editor texts no running workbench owns, newest first (unreadable ones are removed)."""
+    copies = []
+    for folder_, session in _orphaned_sessions(folder, LIBRARY_SUFFIX):
+        copy = _read_library_copy(folder_, session)
+        if copy is None:
+            with contextlib.suppress(FileNotFoundError):
+                os.unlink(folder_ / f"{session}{LIBRARY_SUFFIX}")
+        else:
+            copies.append(copy)
+    return sorted(copies, key=lambda c: c.saved_at, reverse=True)
+
+
+def _orphaned_sessions(folder: str | Path | None, suffix: str) -> list[tuple[Path, str]]:
+    """``(folder, session)`` for each file ``<session><suffix>`` whose session lock nobody holds."""
     folder = Path(folder) if folder is not None else recovery_dir()
     if not folder.is_dir():
         return []
-    entries = []
-    for info in folder.glob("*.json"):
-        session = info.stem
+    sessions = []
+    for path in folder.glob(f"*{suffix}"):
+        session = path.name[:-len(suffix)]
+        if "." in session:
+            continue                    # another kind of file (``<id>.library.json`` for ``.json``)
         lock = QLockFile(str(folder / f"{session}.lock"))
         lock.setStaleLockTime(0)        # stale only when its process is gone, never by age
         if not lock.tryLock(0):
             continue                    # a running workbench owns it
         lock.unlock()
-        entry = _read_entry(info)
-        if entry is None:
-            _remove_session_files(folder, session)
-        else:
-            entries.append(entry)
-    return sorted(entries, key=lambda e: e.saved_at, reverse=True)
+        sessions.append((folder, session))
+    return sessions
+
+
+def _read_library_copy(folder: Path, session: str) -> LibraryCopy | None:
+    try:
+        data = json.loads((folder / f"{session}{LIBRARY_SUFFIX}").read_text(encoding="utf-8"))
+        if (data.get("format") != LIBRARY_RECOVERY_FORMAT
+                or int(data.get("version", 0)) != LIBRARY_RECOVERY_VERSION):
+            return None
+        original = data.get("original")
+        text = data["text"]
+        if not isinstance(text, str):
+            return None
+        return LibraryCopy(folder, session, Path(original) if original else None, float(data["saved_at"]), text)
+    except (OSError, ValueError, KeyError, TypeError, AttributeError):
+        return None
 
 
 def _read_entry(info: Path) -> RecoveryEntry | None:
@@ -112,7 +188,7 @@ def _read_entry(info: Path) -> RecoveryEntry | None:
 
 def _remove_session_files(folder: Path, session: str) -> None:
     # The description first: without it nobody will try to read a half-removed model.
-    for suffix in (".json", ".xml", ".h5"):
+    for suffix in MODEL_SUFFIXES:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(folder / f"{session}{suffix}")
 
@@ -148,12 +224,32 @@ class RecoverySession:
         return self.info_path.exists()
 
     def clear(self) -> None:
-        """Forget the recovery copy (the model was saved, or went back to its saved state)."""
+        """Forget the model's recovery copy (the model was saved, or went back to its saved state)."""
         _remove_session_files(self.folder, self.id)
 
+    @property
+    def library_path(self) -> Path:
+        return self.folder / f"{self.id}{LIBRARY_SUFFIX}"
+
+    def write_library_text(self, text: str, original: Path | None) -> None:
+        """Keep the library editor's unsaved ``text`` (of file ``original``; ``None``: a new file), atomically."""
+        info = {"format": LIBRARY_RECOVERY_FORMAT, "version": LIBRARY_RECOVERY_VERSION,
+                "original": str(original) if original is not None else None,
+                "saved_at": time.time(), "pid": os.getpid(), "text": text}
+        atomic_write_text(self.library_path, json.dumps(info, indent=2, ensure_ascii=False) + "\n")
+
+    def has_library_copy(self) -> bool:
+        return self.library_path.exists()
+
+    def clear_library(self) -> None:
+        """Forget the library text's copy (the file was saved, or its edits discarded)."""
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(self.library_path)
+
     def close(self) -> None:
-        """Clean shutdown: remove the copy and release the lock (which deletes the lock file)."""
+        """Clean shutdown: remove every copy and release the lock (which deletes the lock file)."""
         self.clear()
+        self.clear_library()
         if self._lock.isLocked():
             self._lock.unlock()
 

@@ -8,7 +8,8 @@ and the application "Artificial Person Workbench" (on Linux
 key                             value
 ==============================  =====================================================
 ``window/geometry``             the main window's size and place (``saveGeometry``)
-``window/state``                its docks and toolbars (``saveState``)
+``window/layout``               the task layout in use (``model``, ``painting``, ``mocap``, …)
+``layouts/<id>``                a task layout's docks and toolbars as the user left them (``saveState``)
 ``files/last_dir``              folder the last file dialog ended in
 ``files/recent``                recently opened or saved models, newest first (≤ 8)
 ``autosave/interval_seconds``   seconds between autosaves of a modified model (60)
@@ -21,7 +22,7 @@ from __future__ import annotations
 from PySide6.QtCore import QSettings
 
 WINDOW_GEOMETRY = "window/geometry"
-WINDOW_STATE = "window/state"
+WINDOW_LAYOUT = "window/layout"
 LAST_DIR = "files/last_dir"
 RECENT_FILES = "files/recent"
 AUTOSAVE_INTERVAL = "autosave/interval_seconds"
@@ -29,6 +30,11 @@ LIBRARY_FOLDERS = "library/folders"
 
 DEFAULT_AUTOSAVE_SECONDS = 60.0
 MAX_RECENT_FILES = 8
+
+
+def layout_key(layout_id: str) -> str:
+    """Where the task layout ``layout_id`` is remembered once the user has changed it."""
+    return f"layouts/{layout_id}"
 
 
 def string_list(key: str) -> list[str]:

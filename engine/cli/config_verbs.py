@@ -1,6 +1,6 @@
 """The ``export-config`` verb: the model and the library files it uses, in one folder (docs/export.md).
 
-The same export as the workbench's File → Export configuration
+The same export as the workbench's File → Export → Configuration…
 (:func:`engine.outputs.configuration_export.export_configuration`).
 
 >>> from engine.cli import main
@@ -28,13 +28,19 @@ def add_verbs(verbs: Any) -> None:
 
 
 def run_export_config(args: argparse.Namespace) -> int:
-    """Export the model (``-m``, default the shipped head) and its library (``-L``) into ``-o FOLDER``."""
+    """Export the model (``-m``, default the shipped head) and its library (``-L``) into ``-o FOLDER``.
+
+    The model's files are named after the file given with ``-m``
+    (``-m painted.xml`` writes ``model/painted.xml``); the shipped head's
+    after its name, ``default-head``.
+    """
     from engine.outputs.configuration_export import README_NAME, export_configuration
     from engine.paths import default_model_path
 
     model = load_model_argument(args.model)
     source = Path(args.model) if args.model is not None else default_model_path()
-    summary = export_configuration(model, args.output, args.library, source=source)
+    stem = Path(args.model).stem if args.model is not None else None
+    summary = export_configuration(model, args.output, args.library, source=source, stem=stem)
     folders = ", ".join(f.as_posix() for f in summary.library_folders) or "none"
     print(f"wrote {summary.folder}: {summary.model.as_posix()}, {len(summary.library_files)} library files "
           f"({folders}), {README_NAME}")

@@ -10,12 +10,10 @@
 from __future__ import annotations
 
 import argparse
-import math
 from pathlib import Path
 from typing import Any
 
 from engine.cli.common import add_model_option, load_model_argument, require_suffix, setting
-from engine.errors import UserError
 
 
 def add_verbs(verbs: Any) -> None:
@@ -52,32 +50,16 @@ def _names(text: str) -> list[str]:
 
 
 def run_export_gltf(args: argparse.Namespace) -> int:
-    from engine.outputs.gltf_export import SUFFIXES, export_gltf, parameter_targets, pose_targets, skeleton_parameters
+    """Export the model (``-m``, default the shipped head) with the targets the options choose
+    (:func:`engine.outputs.gltf_export.export_targets`, as the workbench's File → Export → glTF… does)."""
+    from engine.outputs.gltf_export import SUFFIXES, export_gltf, export_summary, export_targets
     from engine.paths import default_model_path
 
     out = require_suffix(args.output, SUFFIXES, "export-gltf")
     model = load_model_argument(args.model)
-    shipped = args.model is None or Path(args.model).resolve() == default_model_path().resolve()
-    values = dict(args.values)
-    names = args.parameters
-    if names is None and args.skeleton:
-        joints = set(skeleton_parameters(model))
-        names = [name for name, _ in model.parameters.depth_first() if name not in joints]
-    targets = parameter_targets(model, names, values)
-    groups = list(args.pose_groups)
-    if (shipped if args.arkit is None else args.arkit) and "arkit" not in groups:
-        groups.insert(0, "arkit")
-    if groups and args.poses is None and not shipped:
-        raise UserError("the shipped poses fit the shipped head only: give --poses POSES.h5 for this model")
-    for group in groups:
-        targets += pose_targets(model, args.poses, group)
+    model_file = Path(args.model) if args.model is not None else default_model_path()
+    targets = export_targets(model, args.parameters, dict(args.values), arkit=args.arkit, poses=args.poses,
+                             pose_groups=args.pose_groups, skeleton=args.skeleton, model_file=model_file)
     mesh = export_gltf(model, out, targets, target_normals=args.target_normals, skeleton=args.skeleton)
-    size = out.stat().st_size + (out.with_suffix(".bin").stat().st_size if out.suffix.lower() == ".gltf" else 0)
-    print(f"wrote {out}: {len(mesh.primitives)} parts, {mesh.n_points} vertices, "
-          f"{len(mesh.target_names)} morph targets"
-          + (f", {len(mesh.skin.names)} joints" if mesh.skin is not None else "") + f", {_megabytes(size)}")
+    print(f"wrote {out}: {export_summary(out, mesh)}")
     return 0
-
-
-def _megabytes(size: int) -> str:
-    return f"{size / 1e6:.1f} MB" if size >= 1e5 else f"{math.ceil(size / 1e3)} kB"

@@ -6,7 +6,7 @@ receives the folder can open the model in the workbench and run the same
 commands on it. The folder holds::
 
     README.txt                 what is here and how to use it
-    model/<name>.xml, .h5      the model
+    model/<stem>.xml, .h5      the model, named after the file it was opened from
     library/*.lib              shipped library files with a command that fits the model
     library-user-1/*.lib, …    the same from each user library folder, in search order
 
@@ -14,8 +14,8 @@ A library file is exported when at least one command it defines is the one
 in force (not overridden by a later folder) and fits the model (every line
 drives a parameter the model has); commands that do not fit are listed in
 the README. Every file is written atomically and all of them together: a
-failure half-way leaves the folder as it was. The workbench's File → Export
-configuration and ``artificial-person export-config`` both call
+failure half-way leaves the folder as it was. The workbench's File → Export →
+Configuration… and ``artificial-person export-config`` both call
 :func:`export_configuration`; ``docs/export.md`` describes the folder.
 
 >>> import tempfile
@@ -23,6 +23,8 @@ configuration and ``artificial-person export-config`` both call
 >>> summary = export_configuration(load_model(), tempfile.mkdtemp())
 >>> summary.model.as_posix(), summary.library_args()
 ('model/default-head.xml', ['-L', 'library'])
+>>> export_configuration(load_model(), tempfile.mkdtemp(), stem="painted").model.as_posix()
+'model/painted.xml'
 """
 
 from __future__ import annotations
@@ -62,12 +64,16 @@ class ExportSummary:
 
 
 def export_configuration(model: Model, folder: str | Path, library_folders: Iterable[str | Path] = (),
-                         source: str | Path | None = None) -> ExportSummary:
+                         source: str | Path | None = None, stem: str | None = None) -> ExportSummary:
     """Write ``model`` and the library files it uses into ``folder`` (created if needed).
 
     ``library_folders`` are the user's library folders (or single ``.lib``
     files) searched after the shipped ``library/``. ``source`` names where
-    the model came from, for the README. Files of the same names already in
+    the model came from, for the README. ``stem`` names the model's files
+    (``model/<stem>.xml`` and ``.h5``): the stem of the file the user opened
+    (``painted`` for ``painted.xml``), so the export carries the name the
+    user knows; left out, the model's own name (``model.name``), which a
+    copy saved under another name still has. Files of the same names already in
     ``folder`` are replaced. Raises :class:`engine.errors.UserError` (e.g. a
     :class:`engine.errors.LibraryError` naming file and line) if a library
     file cannot be read or the folder cannot be written; nothing is written then.
@@ -90,7 +96,7 @@ def export_configuration(model: Model, folder: str | Path, library_folders: Iter
         path = Path(definition.file).resolve()
         used[path] = targets[_source_index(path, sources)]
 
-    description = Path(MODEL_FOLDER) / f"{_safe_stem(model.name)}.xml"
+    description = exported_model_path(model, stem)
     arrays = description.with_suffix(".h5")
     summary = ExportSummary(folder, description, unfit_commands=unfit)
     copies = sorted(used.items(), key=lambda item: (item[1].as_posix(), item[0].name))
@@ -113,6 +119,12 @@ def export_configuration(model: Model, folder: str | Path, library_folders: Iter
             _remove_if_empty(made)
         raise
     return summary
+
+
+def exported_model_path(model: Model, stem: str | None = None) -> Path:
+    """Where :func:`export_configuration` puts the model's description in the folder, e.g.
+    ``model/painted.xml`` (its arrays beside it as ``.h5``); ``stem`` as there, made safe for a file name."""
+    return Path(MODEL_FOLDER) / f"{_safe_stem(model.name if stem is None else stem)}.xml"
 
 
 def readme_text(model: Model, summary: ExportSummary, source: str | Path | None = None) -> str:

@@ -26,11 +26,16 @@ structure; :func:`export_gltf` runs it on every file before writing it.
 >>> export_gltf(head, "head.glb", targets)                           # doctest: +SKIP
 >>> read_gltf("head.glb").target_names[:2]                           # doctest: +SKIP
 ['neck_lean', 'head_turn']
+
+``artificial-person export-gltf`` and the workbench's File → Export → glTF…
+choose their targets with one function, :func:`export_targets`, and report
+what was written with :func:`export_summary`.
 """
 
 from __future__ import annotations
 
 import json
+import math
 import struct
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
@@ -61,8 +66,9 @@ if TYPE_CHECKING:
     from engine.model import Model, Parameter
     from engine.outputs.part_layout import PartLayout
 
-__all__ = ["GltfFileError", "MorphTarget", "export_gltf", "glb_bytes", "gltf_document", "parameter_targets",
-           "pose_targets", "read_gltf", "skeleton_parameters", "target_value"]
+__all__ = ["GltfFileError", "MorphTarget", "export_gltf", "export_summary", "export_targets", "glb_bytes",
+           "gltf_document", "is_shipped_head", "parameter_targets", "pose_group_names", "pose_targets", "read_gltf",
+           "skeleton_parameters", "target_value"]
 
 SUFFIXES = (".glb", ".gltf")
 POSES_FORMAT = "artificial-person-poses"
@@ -155,14 +161,7 @@ def pose_targets(model: Model, path: str | Path | None = None, group: str = "ark
     n = model.n_vertices
     try:
         with h5py.File(path, "r") as f:
-            kind, version = f.attrs.get("format"), f.attrs.get("version")
-            if isinstance(kind, bytes):
-                kind = kind.decode()
-            if kind != POSES_FORMAT:
-                raise UserError(f"not a poses file (format {kind!r}, expected '{POSES_FORMAT}')", file=path)
-            if version != 1:
-                raise UserError(f"poses format version {version} is not known (this program reads version 1)",
-                                file=path)
+            _check_poses_format(f, path)
             if "source_vertex" in f and len(f["source_vertex"]) != n:
                 raise UserError(f"these poses were made for a model of {len(f['source_vertex'])} vertices, "
                                 f"not this one of {n}", file=path)
@@ -188,6 +187,104 @@ def pose_targets(model: Model, path: str | Path | None = None, group: str = "ark
     except KeyError as exc:
         raise UserError(f"damaged poses file: {exc}", file=path) from None
     return targets
+
+
+def pose_group_names(path: str | Path | None = None) -> list[str]:
+    """The pose groups of a poses file (default: the shipped ``reference-poses.h5``), in file order."""
+    import h5py
+
+    from engine.paths import reference_poses_path
+
+    path = Path(path) if path is not None else reference_poses_path()
+    try:
+        with h5py.File(path, "r") as f:
+            _check_poses_format(f, path)
+            return [name for name in f if isinstance(f[name], h5py.Group)]
+    except OSError as exc:
+        raise UserError(f"cannot read the poses: {exc}", file=path) from None
+
+
+def _check_poses_format(f: Any, path: Path) -> None:
+    kind, version = f.attrs.get("format"), f.attrs.get("version")
+    if isinstance(kind, bytes):
+        kind = kind.decode()
+    if kind != POSES_FORMAT:
+        raise UserError(f"not a poses file (format {kind!r}, expected '{POSES_FORMAT}')", file=path)
+    if version != 1:
+        raise UserError(f"poses format version {version} is not known (this program reads version 1)", file=path)
+
+
+def is_shipped_head(model_file: str | Path | None) -> bool:
+    """Whether ``model_file`` is the shipped default head's description, the model the shipped
+    poses (``reference-poses.h5``, the ARKit-52 set among them) were made for."""
+    from engine.paths import default_model_path
+
+    return model_file is not None and Path(model_file).resolve() == default_model_path().resolve()
+
+
+def export_targets(model: Model, names: Iterable[str] | None = None, values: Mapping[str, float] | None = None,
+                   arkit: bool | None = None, poses: str | Path | None = None, pose_groups: Iterable[str] = (),
+                   skeleton: bool = False, *, model_file: str | Path | None = None) -> list[MorphTarget]:
+    """The morph targets of one export, as ``artificial-person export-gltf`` and the workbench's
+    File → Export → glTF… choose them (one decision, two faces).
+
+    ``names``: the parameters exported as targets (default: all in tree
+    order; with ``skeleton``, all but the joints, :func:`skeleton_parameters`,
+    which ``export_gltf(..., skeleton=True)`` exports as a skin instead).
+    ``values``: a parameter's value at weight 1 (see :func:`parameter_targets`).
+    ``arkit``: add the ARKit-52 targets, group ``arkit`` of the poses file
+    (default: for the shipped head only). ``poses``: the file of displacement
+    fields (default: the shipped ``reference-poses.h5``, which fits the
+    shipped head only). ``pose_groups``: more groups of that file, each
+    exported whole. ``model_file``: the file ``model`` was loaded from
+    (``None``: none), which says whether it is the shipped head.
+
+    The choices are checked before any target is computed; a bad one raises
+    :class:`engine.errors.UserError` with a one-line message.
+
+    >>> from engine import load_model                                 # doctest: +SKIP
+    >>> from engine.paths import default_model_path                   # doctest: +SKIP
+    >>> targets = export_targets(load_model(), skeleton=True, model_file=default_model_path())  # doctest: +SKIP
+    >>> targets[0].source, targets[-1].source                          # doctest: +SKIP
+    ('parameter', 'arkit')
+    """
+    shipped = is_shipped_head(model_file)
+    groups = list(pose_groups)
+    if (shipped if arkit is None else arkit) and "arkit" not in groups:
+        groups.insert(0, "arkit")
+    if groups and poses is None and not shipped:
+        raise UserError("the shipped poses fit the shipped head only: give a poses file made for this model "
+                        "(--poses POSES.h5)")
+    joints = skeleton_parameters(model) if skeleton else []
+    if names is None:
+        names = [name for name, _ in model.parameters.depth_first() if name not in joints]
+    else:
+        names = list(names)
+        for name in names:
+            if name in joints:
+                raise joint_target_error(name)
+    targets = parameter_targets(model, names, values)
+    for group in groups:
+        targets += pose_targets(model, poses, group)
+    return targets
+
+
+def joint_target_error(name: str) -> UserError:
+    """The error for a parameter asked to be both a joint of the skeleton and a morph target."""
+    return UserError(f"parameter '{name}' is a joint of the skeleton, so it cannot also be a morph target")
+
+
+def export_summary(path: str | Path, mesh: GltfMesh) -> str:
+    """What an export wrote, in one line: parts, vertices, morph targets, joints, size on disk
+    (a ``.gltf`` with its ``.bin``), e.g. ``8 parts, 5960 vertices, 69 morph targets, 7.5 MB``."""
+    path = Path(path)
+    size = path.stat().st_size
+    if path.suffix.lower() == ".gltf":
+        size += path.with_suffix(".bin").stat().st_size
+    megabytes = f"{size / 1e6:.1f} MB" if size >= 1e5 else f"{math.ceil(size / 1e3)} kB"
+    joints = f", {len(mesh.skin.names)} joints" if mesh.skin is not None else ""
+    return (f"{len(mesh.primitives)} parts, {mesh.n_points} vertices, {len(mesh.target_names)} morph targets"
+            f"{joints}, {megabytes}")
 
 
 # -- writing ---------------------------------------------------------------------
@@ -216,7 +313,7 @@ def gltf_document(model: Model, targets: Iterable[MorphTarget] = (), target_norm
     rig = SkeletonRig(model) if skeleton else None
     for t in targets:
         if rig is not None and t.source == "parameter" and t.name in rig.names:
-            raise UserError(f"parameter '{t.name}' is a joint of the skeleton, so it cannot also be a morph target")
+            raise joint_target_error(t.name)
     layout = PartLayout(model)
     if not layout.parts:
         raise UserError("the model has no polygons to export")

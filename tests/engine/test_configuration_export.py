@@ -71,6 +71,20 @@ def test_a_model_without_fitting_commands_exports_alone(tmp_path):
     assert sorted(p.name for p in (tmp_path / "out").iterdir()) == [README_NAME, "model"]
 
 
+def test_the_model_files_take_the_stem_they_are_given(tmp_path):
+    """A copy of a model saved as painted.xml still carries the model's name inside: the export is
+    named after the file the user knows, and that name is made safe for a file name."""
+    model = random_model(np.random.default_rng(3), n_vertices=12, n_parameters=3, depth=2)
+    model.name = "default-head"
+    summary = export_configuration(model, tmp_path / "out", stem="painted")
+    assert summary.model.as_posix() == "model/painted.xml"
+    assert sorted(p.name for p in (tmp_path / "out" / "model").iterdir()) == ["painted.h5", "painted.xml"]
+    assert load_model(tmp_path / "out" / "model" / "painted.xml").name == "default-head"
+    assert "model/painted.xml" in (tmp_path / "out" / README_NAME).read_text()
+    assert export_configuration(model, tmp_path / "odd", stem="my head/v2").model.as_posix() == "model/my_head_v2.xml"
+    assert export_configuration(model, tmp_path / "none", stem="..").model.as_posix() == "model/model.xml"
+
+
 def test_a_broken_library_file_stops_the_export_before_anything_is_written(head, tmp_path):
     broken = tmp_path / "broken"
     broken.mkdir()
@@ -113,6 +127,16 @@ def test_export_config_verb_writes_the_folder(mine, tmp_path):
     assert "model/default-head.xml" in result.stdout and "1 commands left out" in result.stdout
     assert (tmp_path / "out" / "library-user-1" / "WideJaw.lib").read_text() == MY_JAW
     assert load_model(tmp_path / "out" / "model" / "default-head.xml").n_vertices > 0
+
+
+def test_export_config_verb_names_the_files_after_the_model_file_given(tmp_path):
+    model = random_model(np.random.default_rng(4), n_vertices=12, n_parameters=3, depth=2)
+    model.name = "default-head"                       # a painted copy of the head keeps the head's name
+    save_model(model, tmp_path / "painted.xml")
+    result = run("export-config", "-m", tmp_path / "painted.xml", "-o", tmp_path / "out")
+    assert result.returncode == 0, result.stderr
+    assert "model/painted.xml" in result.stdout
+    assert sorted(p.name for p in (tmp_path / "out" / "model").iterdir()) == ["painted.h5", "painted.xml"]
 
 
 def test_export_config_verb_reports_a_bad_library_file_in_one_line(tmp_path):

@@ -23,9 +23,13 @@ from engine.outputs.gltf_export import (
     GltfFileError,
     MorphTarget,
     export_gltf,
+    export_summary,
+    export_targets,
     glb_bytes,
     gltf_document,
+    is_shipped_head,
     parameter_targets,
+    pose_group_names,
     pose_targets,
     read_gltf,
     skeleton_parameters,
@@ -358,6 +362,57 @@ def test_unknown_pose_group(model, tmp_path):
     write_poses(path, model.n_vertices)
     with pytest.raises(UserError, match=r"no pose group 'expressions' \(groups: arkit"):
         pose_targets(model, path, "expressions")
+
+
+def test_pose_group_names(model, tmp_path):
+    path = tmp_path / "poses.h5"
+    write_poses(path, model.n_vertices)
+    assert pose_group_names(path) == ["arkit"]
+    write_poses(path, model.n_vertices, kind="something-else")
+    with pytest.raises(UserError, match="not a poses file"):
+        pose_group_names(path)
+    with pytest.raises(UserError, match="cannot read the poses"):
+        pose_group_names(tmp_path / "missing.h5")
+
+
+# ---------------------------------------------------------------------------
+# Choosing the targets of an export (the CLI's and the workbench's one decision)
+# ---------------------------------------------------------------------------
+
+def test_export_targets_for_another_model(model, tmp_path):
+    assert [t.name for t in export_targets(model)] == ["head_turn", "brow", "slide", "smile"]   # no ARKit
+    assert [t.name for t in export_targets(model, skeleton=True)] == ["brow", "slide", "smile"]  # no joints
+    chosen = export_targets(model, ["smile", "brow"], {"brow": -0.5}, skeleton=True)
+    assert [(t.name, t.value) for t in chosen] == [("smile", 1.0), ("brow", -0.5)]
+    with pytest.raises(UserError, match="'head_turn' is a joint of the skeleton"):
+        export_targets(model, ["brow", "head_turn"], skeleton=True)
+    for choice in (dict(arkit=True), dict(pose_groups=["expression_units"])):
+        with pytest.raises(UserError, match="the shipped poses fit the shipped head only"):
+            export_targets(model, **choice)
+    path = tmp_path / "poses.h5"
+    write_poses(path, model.n_vertices)
+    with_poses = export_targets(model, ["smile"], arkit=True, poses=path, pose_groups=["arkit"])
+    assert [(t.name, t.source) for t in with_poses] == [("smile", "parameter"), ("jawOpen", "arkit")]
+    assert not is_shipped_head(None) and not is_shipped_head(tmp_path / "head.xml")
+
+
+def test_export_targets_for_the_shipped_head(head):
+    if not default_model_path().exists():
+        pytest.skip("the default head is not built")
+    assert is_shipped_head(default_model_path())
+    arkit = export_targets(head, [], model_file=default_model_path())       # ARKit by default
+    assert len(arkit) == 52 and {t.source for t in arkit} == {"arkit"}
+    assert export_targets(head, [], arkit=False, model_file=default_model_path()) == []
+    assert pose_group_names()[0] == "arkit"
+
+
+@pytest.mark.parametrize("suffix", [".glb", ".gltf"])
+def test_export_summary_names_parts_vertices_targets_joints_and_size(model, tmp_path, suffix):
+    path = tmp_path / f"rig{suffix}"
+    mesh = export_gltf(model, path, export_targets(model, skeleton=True), skeleton=True)
+    size = path.stat().st_size + (path.with_suffix(".bin").stat().st_size if suffix == ".gltf" else 0)
+    assert export_summary(path, mesh) == (f"2 parts, {mesh.n_points} vertices, 3 morph targets, 2 joints, "
+                                          f"{-(-size // 1000)} kB")
     with pytest.raises(UserError, match="cannot read the poses"):
         pose_targets(model, tmp_path / "missing.h5")
 
@@ -521,7 +576,7 @@ def test_cli_needs_a_poses_file_for_another_model(tmp_path):
 
     save_model(small_model(), tmp_path / "small.xml")
     line = assert_user_error(run("export-gltf", "-m", tmp_path / "small.xml", "--arkit", "-o", tmp_path / "s.glb"))
-    assert "give --poses" in line
+    assert "the shipped poses fit the shipped head only" in line and "--poses" in line
     result = run("export-gltf", "-m", tmp_path / "small.xml", "-o", tmp_path / "s.glb")
     assert result.returncode == 0, result.stderr
     assert read_gltf(tmp_path / "s.glb").target_names == ["head_turn", "brow", "slide", "smile"]

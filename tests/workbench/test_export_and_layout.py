@@ -4,14 +4,16 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from PySide6.QtCore import QSettings, Qt
-from PySide6.QtWidgets import QFileDialog, QLabel, QMessageBox
+from PySide6.QtCore import QSettings, Qt, QTimer
+from PySide6.QtWidgets import QApplication, QDialogButtonBox, QLabel, QMessageBox
 
 import engine
 from engine.commands import load_library
 from engine.outputs.configuration_export import export_configuration
+from tests.workbench.synthetic_workbench_model import build_synthetic_model
 from tests.workbench.workbench_model_state import model_state
 from workbench import settings
+from workbench.export_folder_dialog import ExportFolderDialog
 from workbench.tool_options import NO_TOOL
 from workbench.undo_commands import WeightsChangedCommand
 
@@ -33,7 +35,7 @@ def test_export_writes_the_model_the_library_files_it_uses_and_a_readme(window, 
     document = window.document
     document.push(WeightsChangedCommand(document, "jaw_open", [0, 1], [0.5, 0.5]))
     target = tmp_path / "for-anna"
-    monkeypatch.setattr(QFileDialog, "getExistingDirectory", staticmethod(lambda *a, **k: str(target)))
+    monkeypatch.setattr(window.files, "ask_export_folder", lambda: target)
     target.mkdir()                                  # an empty folder: no question
 
     window.actions_by_id["file.export"].trigger()
@@ -60,11 +62,60 @@ def test_export_into_a_non_empty_folder_asks_first(window, tmp_path, monkeypatch
     target = tmp_path / "busy"
     target.mkdir()
     (target / "notes.txt").write_text("mine")
-    monkeypatch.setattr(QFileDialog, "getExistingDirectory", staticmethod(lambda *a, **k: str(target)))
+    monkeypatch.setattr(window.files, "ask_export_folder", lambda: target)
     asked = []
     monkeypatch.setattr(QMessageBox, "question", staticmethod(lambda *a, **k: asked.append(a) or Button.Cancel))
     assert not window.files.export_dialog()
     assert len(asked) == 1 and sorted(p.name for p in target.iterdir()) == ["notes.txt"]
+
+
+def _answer_export_folder(qtbot, folder, seen: list) -> None:
+    """When the Export configuration dialog is up, type ``folder`` into it and press Export (any other
+    dialog is closed, so a test of the old folder chooser fails instead of hanging)."""
+    def answer():
+        dialog = QApplication.activeModalWidget()
+        if dialog is None:
+            QTimer.singleShot(20, answer)
+            return
+        seen.append(dialog)
+        if not isinstance(dialog, ExportFolderDialog):
+            dialog.reject()
+            return
+        dialog.folder_edit.setText(str(folder))
+        qtbot.mouseClick(dialog.buttons.button(QDialogButtonBox.StandardButton.Ok), Qt.MouseButton.LeftButton)
+
+    QTimer.singleShot(20, answer)
+
+
+def test_export_into_a_new_folder_names_the_model_after_its_file(make_window, synthetic_model_path, tmp_path,
+                                                                 qtbot):
+    """A copy of the head saved as painted.xml still calls itself synthetic-head inside: the status bar and
+    the exported files use the name the user knows, and a folder that does not exist yet is made."""
+    painted = tmp_path / "painted.xml"
+    engine.save_model(engine.load_model(synthetic_model_path), painted)
+    window = make_window(painted)
+    label = window.statusBar().model_label.text()
+    assert label.startswith("painted.xml · ") and "synthetic-head" not in label
+    target = tmp_path / "new" / "for-anna"
+    seen: list = []
+    _answer_export_folder(qtbot, target, seen)
+
+    window.actions_by_id["file.export"].trigger()
+
+    assert len(seen) == 1 and "model/painted.xml" in seen[0].findChild(QLabel, "what_is_written").text()
+    assert sorted(p.name for p in (target / "model").iterdir()) == ["painted.h5", "painted.xml"]
+    assert "model/painted.xml" in (target / "README.txt").read_text()
+    message = window.statusBar().currentMessage()
+    assert message.startswith("Exported model/painted.xml and ") and message.endswith(f"library files to {target}")
+
+
+def test_an_untitled_model_exports_under_its_name_and_the_status_bar_follows_the_file(window, tmp_path):
+    window.document.replace_model(build_synthetic_model(name="scan"), None)    # as New from mesh makes it
+    assert window.statusBar().model_label.text().startswith("scan · ")
+    assert window.files.export_configuration(tmp_path / "out")
+    assert (tmp_path / "out" / "model" / "scan.xml").is_file()
+    assert window.files.save_model(tmp_path / "renamed.xml")
+    assert window.statusBar().model_label.text().startswith("renamed.xml · ")
 
 
 def test_a_broken_user_library_stops_the_export_with_file_and_line(window, tmp_path, monkeypatch):

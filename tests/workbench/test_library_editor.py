@@ -200,3 +200,36 @@ def test_library_folders_list_user_commands_after_the_shipped_ones(window, edito
     assert top.text(0).startswith("User folder 1") and top.child(0).child(0).text(0) == "BrowSwing"
     assert editor.open_file(tmp_path / "BrowSwing.lib")
     assert editor.text.toPlainText() == GOOD and not editor.is_modified
+
+
+def test_an_empty_editor_shows_what_to_type_and_no_error(window, editor, qtbot, monkeypatch):
+    # Never touched: a neutral hint and an example, no red mark anywhere.
+    assert editor.is_blank and not editor.is_modified
+    assert editor.result.problems == [] and editor.text.problems == {} and editor.text.error_lines() == []
+    assert editor.text.extraSelections() == []
+    assert "New command" in editor.status.text() and "#c0392b" not in editor.status.styleSheet()
+    assert "$command = MyGesture" in editor.text.placeholderText()
+    assert "head_turn = 0,0" in editor.text.placeholderText()      # the open model's first parameter
+    assert editor.plot.message.startswith("Nothing to plot yet")
+    opened = []
+    monkeypatch.setattr(editor, "new_dialog", lambda: opened.append("new"))
+    editor.status.linkActivated.emit("new")                        # the hint's link starts a template
+    assert opened == ["new"]
+
+    editor.text.setFocus()
+    type_text(qtbot, editor.text, "\n   \n")                        # blank lines are still nothing to check
+    wait_checked(qtbot, editor)
+    assert editor.result.problems == [] and editor.text.error_lines() == []
+
+    type_text(qtbot, editor.text, "# a comment and no command")     # text that is wrong: now it is said
+    wait_checked(qtbot, editor)
+    assert list(editor.text.problems) == [1] and "no command" in editor.status.text()
+    assert "#c0392b" in editor.status.styleSheet()
+
+    editor.text.selectAll()
+    qtbot.keyClick(editor.text, Qt.Key.Key_Delete)                   # empty again: the hint comes back
+    wait_checked(qtbot, editor)
+    assert editor.text.problems == {} and "New command" in editor.status.text()
+
+    editor.set_text("")                                              # a new, empty file: the same
+    assert editor.result.problems == [] and editor.text.error_lines() == []

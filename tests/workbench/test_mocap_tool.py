@@ -10,6 +10,7 @@ on the same data.
 from __future__ import annotations
 
 import os
+import shutil
 from pathlib import Path
 
 import numpy as np
@@ -25,7 +26,7 @@ from engine.mocap.pca import multistage_pca
 from engine.mocap.sample_files import write_sample_recording
 from engine.mocap.session import load_session
 from workbench.mocap.import_dialog import EXCLUDED, FILLED, GAPS, LONGEST, MISSING, POINT
-from workbench.mocap.marker_overlay import error_colors
+from workbench.mocap.marker_overlay import MARKER_COLOR, error_colors
 from workbench.mocap.worker import running_jobs
 
 TEXT = "Papu ja kala. Hyvää päivää, mitä kuuluu? Öljyä ja syötävää."
@@ -237,10 +238,17 @@ def test_bad_files_end_in_a_dialog_and_keep_the_work(head_window, qtbot, take, t
     dialog.set_path(bad)
     wait_jobs(qtbot)
     assert len(shown) == 1 and "cut.tsv:" in shown[0] and "truncated" in shown[0]
-    assert dialog.recording is good and dialog.isVisible()
-
-    dialog.set_path(take["markers"])
+    assert dialog.isVisible() and dialog.recording is None            # nothing of take1 stays on show
+    assert dialog.table.rowCount() == 0 and "cut.tsv:" in dialog.summary.text()
+    assert not dialog.import_button.isEnabled()
+    dialog.start_import()                                             # nothing to import: nothing happens
     wait_jobs(qtbot)
+    assert window.mocap.state.session is None and len(shown) == 1
+
+    dialog.set_path(take["markers"])                                  # a file that reads: Import is back
+    wait_jobs(qtbot)
+    assert dialog.recording is not good and dialog.recording.labels == good.labels
+    assert dialog.table.rowCount() == len(good.labels) and dialog.import_button.isEnabled()
     dialog.table.item(1, POINT).setText("2.1")           # two markers named 2.1: the engine refuses
     dialog.start_import()
     wait_jobs(qtbot)
@@ -253,7 +261,130 @@ def test_bad_files_end_in_a_dialog_and_keep_the_work(head_window, qtbot, take, t
     wait_jobs(qtbot)
     assert len(shown) == 3 and "missing.lab" in shown[2]
     assert window.mocap.state.session is None
+
+    dialog.set_path(take["markers"])                  # Cancel while the file is read: no table of another file
+    dialog.job.cancel()
+    wait_jobs(qtbot)
+    assert dialog.recording is None and dialog.table.rowCount() == 0 and not dialog.import_button.isEnabled()
+    assert "cancelled" in dialog.summary.text() and len(shown) == 3
     window.mocap.import_dialog.close()
+
+
+NOD = '<commands>\n  <HeadNod at="200" amplitude="60" count="2"/>\n</commands>\n'
+
+
+def import_session(window, qtbot, take):
+    """Read ``take`` in the import dialog and import it (no session file), as a user would."""
+    dialog = read_into_dialog(window, qtbot, take["markers"])
+    dialog.labels_edit.setText(str(take["labels"]))
+    dialog.save_check.setChecked(False)
+    dialog.start_import()
+    wait_jobs(qtbot)
+    return window.mocap.state.session
+
+
+def markers_on_screen(window) -> bool:
+    """The marker spheres are drawn in the viewport, and pixels of their colour are in its picture."""
+    overlay = window.mocap.overlay
+    drawn = overlay.visible
+    window.viewport.render_now()
+    image = window.viewport.plotter.screenshot(return_img=True)
+    yellow = np.all(np.abs(image[..., :3].astype(int) - MARKER_COLOR) < 40, axis=-1).sum()
+    assert drawn == (yellow > 20), (drawn, yellow)      # what the overlay says is what the user sees
+    return drawn
+
+
+def test_the_markers_show_only_while_their_recording_is_on_the_player(head_window, qtbot, take, tmp_path):
+    window = head_window
+    mocap, player, playhead = window.mocap, window.player, window.playhead
+    session = import_session(window, qtbot, take)
+    recording = mocap.playback.timeline
+    assert markers_on_screen(window) and player.timeline is recording
+    assert playhead.fps == session.rate_hz and "take1" in player.title and len(player.phones) == len(session.phones)
+
+    # Space plays the recording: the markers move on with the playhead in real time
+    view = window.timeline_dock.track_view
+    window.activateWindow()
+    view.setFocus()
+    qtbot.waitUntil(lambda: window.isActiveWindow() and view.hasFocus())
+    qtbot.keyClick(view, Qt.Key.Key_Space)
+    qtbot.waitUntil(lambda: playhead.frame >= 30, timeout=10000)
+    player.pause()
+    present = np.isfinite(session.positions[playhead.frame]).all(axis=1)
+    np.testing.assert_allclose(mocap.overlay.shown_points,
+                               mocap.overlay.to_model(session.positions[playhead.frame][present]))
+
+    # the library editor's preview takes the player: the markers go, and stay gone while it plays and is scrubbed
+    window.library_editor_dock.show()
+    editor = window.library_editor
+    assert editor.open_file(editor.command_list.commands["HeadNod"])
+    qtbot.mouseClick(editor.preview_button, Qt.MouseButton.LeftButton)
+    assert player.is_playing and "library editor preview" in player.title
+    qtbot.wait(150)
+    assert not markers_on_screen(window)
+    player.pause()
+    playhead.set_time(0.4)
+    assert not markers_on_screen(window)
+    assert mocap.plot_dock.plot.playhead_s is None         # nor does the marker plot's line follow the preview
+
+    # Motion capture ▸ Show the recording: back, on the recording's clock
+    window.actions_by_id["mocap.show"].trigger()
+    assert player.timeline is recording and markers_on_screen(window)
+    playhead.set_time(0.5)
+    assert mocap.plot_dock.plot.playhead_s == pytest.approx(0.5)
+    assert playhead.duration == pytest.approx((session.n_frames - 1) / session.rate_hz)
+
+    # the gallery's preview; a click on the marker plot brings the recording back at the frame clicked
+    assert window.expression_gallery.preview("Happy") is not None
+    assert player.is_playing and not markers_on_screen(window)
+    plot = mocap.plot_dock.plot
+    window.mocap.plot_dock.show()
+    plot.resize(900, 240)
+    qtbot.mouseClick(plot, Qt.MouseButton.LeftButton, pos=QPoint(int(plot.x_of_frame(150)), plot.height() // 2))
+    assert player.timeline is recording and abs(playhead.frame - 150) <= 1 and markers_on_screen(window)
+    present = np.isfinite(session.positions[playhead.frame]).all(axis=1)
+    np.testing.assert_allclose(mocap.overlay.shown_points,
+                               mocap.overlay.to_model(session.positions[playhead.frame][present]))
+
+    # an animation file opened; a PCA run ending does not take the player back, a component shown does
+    nod = tmp_path / "nod.xml"
+    nod.write_text(NOD)
+    assert window.timeline_dock.open_animation(nod)
+    assert not markers_on_screen(window)
+    pca = mocap.pca_dock
+    mocap.plot_dock.select_by_phones(["V", "C"])
+    pca.run_pca()
+    wait_jobs(qtbot)
+    assert player.timeline is not recording and not markers_on_screen(window)
+    pca.component_combo.setCurrentIndex(1)
+    pca.amplitude.setValue(150)
+    assert player.timeline is recording and markers_on_screen(window)
+
+    # a component animating stops when the gallery takes the player (its timer would take it back)
+    pca.animate_button.setChecked(True)
+    qtbot.wait(100)
+    window.expression_gallery.preview("Sad")
+    qtbot.wait(150)
+    assert not pca.animate_button.isChecked() and "Sad" in player.title and not markers_on_screen(window)
+    qtbot.mouseClick(pca.show_session_button, Qt.MouseButton.LeftButton)        # "Show the session"
+    assert player.timeline is recording and markers_on_screen(window)
+    np.testing.assert_allclose(mocap.overlay.shown_points, mocap.overlay.to_model(session.positions[0][
+        np.isfinite(session.positions[0]).all(axis=1)]))
+
+
+@pytest.mark.skipif(shutil.which("festival") is None, reason="Festival is not installed")
+def test_speech_puts_the_markers_away_until_the_recording_is_shown(head_window, qtbot, take):
+    window = head_window
+    import_session(window, qtbot, take)
+    panel = window.script_panel
+    panel.editor.setPlainText("Hyvää huomenta.")
+    with qtbot.waitSignal(window.player.loaded, timeout=60000):
+        panel.say()
+    assert window.player.is_playing and not markers_on_screen(window)
+    qtbot.wait(200)
+    assert not markers_on_screen(window)
+    window.actions_by_id["mocap.show"].trigger()
+    assert markers_on_screen(window) and not window.player.is_playing
 
 
 SCREENSHOTS = os.environ.get("AP_SCREENSHOT_DIR")

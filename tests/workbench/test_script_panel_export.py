@@ -141,3 +141,41 @@ def test_export_plan_checks():
         ExportPlan(DEFAULT_HEAD.parent, "x", set()).check()
     with pytest.raises(UserError, match="not a file name"):
         ExportPlan(DEFAULT_HEAD.parent, "a/b", {"wav"}).check()
+
+
+def test_form_labels_show_their_mnemonics_and_alt_letter_moves_to_the_field(said_window, qtbot):
+    """No literal '&' on screen ("&Folder:", "Frame &size (px):"); Alt+F, Alt+B, … focus the field named."""
+    from PySide6.QtWidgets import QFormLayout, QLabel
+    from pytestqt.exceptions import TimeoutError as QtBotTimeout
+
+    labels_seen, focused = {}, {}
+
+    def look():
+        dialog = QApplication.activeModalWidget()
+        assert dialog.objectName() == "script_panel.export_dialog"
+        form = dialog.findChild(QFormLayout)
+        for row in range(form.rowCount()):
+            label = form.itemAt(row, QFormLayout.ItemRole.LabelRole).widget()
+            plain = QLabel(label.text().replace("&", ""))
+            plain.setFont(label.font())
+            # a mnemonic is drawn as an underline, not as a character: the label is as wide as its plain text
+            labels_seen[plain.text()] = (label.buddy() is not None or "&" not in label.text(),
+                                         label.sizeHint().width() == plain.sizeHint().width())
+        dialog.activateWindow()
+        qtbot.waitUntil(lambda: QApplication.activeWindow() is dialog)     # the mnemonics work in the active window
+        for letter, field in (("F", dialog.folder_edit), ("S", dialog.width_box), ("B", dialog.base_edit),
+                              ("R", dialog.fps_box), ("C", dialog.view_box)):
+            # through the QWindow, as the window system delivers keys, so Qt's shortcut map sees them
+            qtbot.keyClick(dialog.windowHandle(), getattr(Qt.Key, f"Key_{letter}"), Qt.KeyboardModifier.AltModifier)
+            try:
+                qtbot.waitUntil(field.hasFocus, timeout=2000)
+                focused[letter] = True
+            except QtBotTimeout:
+                focused[letter] = False
+        dialog.reject()
+
+    QTimer.singleShot(0, look)
+    said_window.actions_by_id["speech.export"].trigger()
+    rows = ("Files:", "Folder:", "Base name:", "Frame size (px):", "Frame rate:", "Camera:")
+    assert labels_seen == dict.fromkeys(rows, (True, True))      # (a buddy where there is a mnemonic, no '&' drawn)
+    assert focused == dict.fromkeys("FSBRC", True)

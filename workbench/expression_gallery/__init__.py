@@ -32,6 +32,8 @@ from .thumbnails import THUMBNAIL_SIZE, ThumbnailCache
 
 DOCK_NAME = "dock:expression-gallery"
 MAX_INTENSITY = 150
+COLUMNS = 3                 # faces side by side when the gallery is opened
+USEFUL_HEIGHT = 500
 NAME_ROLE = Qt.ItemDataRole.UserRole
 
 
@@ -72,9 +74,9 @@ class ExpressionGallery(QWidget):
         layout.addLayout(header)
         layout.addWidget(self.hint)
         layout.addWidget(self.expressions_label)
-        layout.addWidget(self.expressions_list, 2)
+        layout.addWidget(self.expressions_list, 1)
         layout.addWidget(self.units_label)
-        layout.addWidget(self.units_list, 3)
+        layout.addWidget(self.units_list, 1)
         self._intensity_changed(self.intensity.value())
 
         document = window.document
@@ -83,6 +85,14 @@ class ExpressionGallery(QWidget):
         document.regions_changed.connect(self._regions_changed)
         self.sources.changed.connect(self.rebuild)
         self.rebuild()
+
+    def width_for_columns(self, columns: int) -> int:
+        """The gallery's width at which its lists show ``columns`` faces side by side."""
+        view = self.expressions_list
+        grid = view.gridSize().width() + 2 * view.spacing()
+        scroll_bar = view.style().pixelMetric(view.style().PixelMetric.PM_ScrollBarExtent)
+        margins = self.layout().contentsMargins()
+        return columns * grid + scroll_bar + 2 * view.frameWidth() + margins.left() + margins.right() + 8
 
     # -- building ---------------------------------------------------------------
     def _make_list(self) -> QListWidget:
@@ -194,12 +204,10 @@ def install(window) -> None:
     dock = QDockWidget("Expression gallery", window)
     dock.setObjectName(DOCK_NAME)
     dock.setWidget(gallery)
-    window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, dock)
-    neighbours = [d for d in window.findChildren(QDockWidget) if d is not dock
-                  and window.dockWidgetArea(d) == Qt.DockWidgetArea.LeftDockWidgetArea]
-    if neighbours:
-        window.tabifyDockWidget(neighbours[0], dock)     # a tab of its own height, not a squeezed strip
+    window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, dock)   # the task layouts give it its place
     dock.hide()
+    # three faces or more across, and room for a row of expressions and one of units (LayoutManager.reveal)
+    dock.useful_size = lambda: QSize(gallery.width_for_columns(COLUMNS), USEFUL_HEIGHT)
     window.expression_gallery = gallery
     window.expression_gallery_dock = dock
     toggle = dock.toggleViewAction()

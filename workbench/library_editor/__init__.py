@@ -10,7 +10,7 @@ the "library changed" signal are ``window.library_sources``
 
 from __future__ import annotations
 
-from PySide6.QtCore import QEvent, QObject, Qt
+from PySide6.QtCore import QEvent, QObject, QSize, Qt
 from PySide6.QtWidgets import QDockWidget
 
 from ..actions import ActionSpec, add_actions
@@ -19,6 +19,7 @@ from .editor import LibraryEditor
 from .folders import LibrarySources
 
 DOCK_NAME = "dock:library-editor"
+USEFUL_SIZE = QSize(760, 320)
 MENU = "&Library"
 
 __all__ = ["DOCK_NAME", "LibraryEditor", "LibrarySources", "install", "library_sources"]
@@ -52,8 +53,7 @@ class _CloseGuard(QObject):
 
 
 def _show(window) -> None:
-    window.library_editor_dock.show()
-    window.library_editor_dock.raise_()
+    window.layouts.reveal(window.library_editor_dock)
     window.library_editor.text.setFocus()
 
 
@@ -63,8 +63,9 @@ def install(window) -> None:
     dock = QDockWidget("Library editor", window)
     dock.setObjectName(DOCK_NAME)
     dock.setWidget(editor)
-    window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, dock)
+    window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, dock)   # the task layouts give it its place
     dock.hide()
+    dock.useful_size = lambda: USEFUL_SIZE      # the text pane wide, a dozen lines high (LayoutManager.reveal)
     editor.title_changed.connect(dock.setWindowTitle)
     window.library_editor = editor
     window.library_editor_dock = dock

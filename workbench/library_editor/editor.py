@@ -10,7 +10,13 @@ curves (:class:`CurvePlot`).
 bound to the open model; problems are underlined at their line and listed in
 the status line, and the chosen command is translated with the form's
 arguments and plotted. Preview plays the same translation through
-``window.player``.
+``window.player``. Blank text is not an error: the editor shows what to type
+(an example in the empty text, links to a template and to a file in the
+status line) until there is text to check.
+
+Unsaved text is autosaved for crash recovery by :class:`LibraryAutosaver`
+(``editor.autosaver``); :meth:`LibraryEditor.offer_recovery` offers what a
+crashed workbench left behind.
 """
 
 from __future__ import annotations
@@ -37,16 +43,22 @@ from engine.formats.atomic import atomic_write_text
 from engine.timeline.command_curves import CommandCurves, command_curves
 
 from ..icons import icon
+from ..recovery import LibraryCopy
 from .arguments_form import ArgumentsForm
+from .autosave import LibraryAutosaver, recovery_question
 from .code_editor import CodeEditor
 from .command_list import CommandList
 from .curve_plot import CurvePlot
 from .dialogs import LibraryFoldersDialog, NewCommandDialog
 from .folders import LAST_DIR, LAST_FILE, LibrarySources, is_shipped, recall, remember
-from .templates import template_text
+from .templates import example_text, template_text
 
 CHECK_DELAY_MS = 300
 FILE_FILTER = "Library files (*.lib);;All files (*)"
+HINT = ("Type a library file in the text, or start from a template: <a href='new'>New command…</a> "
+        "or <a href='open'>Open a library file…</a>")
+HINT_COLOUR = "#5f6368"
+Button = QMessageBox.StandardButton
 
 
 class LibraryEditor(QWidget):
@@ -71,7 +83,7 @@ class LibraryEditor(QWidget):
         self.status = QLabel()
         self.status.setWordWrap(True)
         self.status.setTextInteractionFlags(Qt.TextInteractionFlag.LinksAccessibleByMouse)
-        self.status.linkActivated.connect(lambda line: self.text.go_to_line(int(line)))
+        self.status.linkActivated.connect(self._status_link)
         self.command_list = CommandList(sources)
         self.command_list.file_activated.connect(self._open_from_list)
         self.command_choice = QComboBox()
@@ -125,17 +137,31 @@ class LibraryEditor(QWidget):
         self._timer.setInterval(CHECK_DELAY_MS)
         self._timer.timeout.connect(self.check_now)
         self.text.textChanged.connect(self._timer.start)
+        self.text.textChanged.connect(self._text_changed)
         self.text.modificationChanged.connect(self._modification_changed)
+        self.autosaver = LibraryAutosaver(self)
+        self.autosaver.autosaved.connect(self._autosaved)
+        self.autosaver.failed.connect(self._autosave_failed)
         document = window.document
         document.model_replaced.connect(self._model_changed)
         document.parameters_changed.connect(self._model_changed)
         sources.changed.connect(self.command_list.reload)
-        self.check_now()
+        self._model_changed()             # the example in the empty text, and the first check
 
     # -- state ----------------------------------------------------------------
     @property
     def is_modified(self) -> bool:
         return self.text.document().isModified()
+
+    @property
+    def is_blank(self) -> bool:
+        """Whether there is no text to check yet (nothing, or only white space)."""
+        return not self.text.toPlainText().strip()
+
+    @property
+    def edits_discarded(self) -> bool:
+        """Whether the user chose Discard for the unsaved edits (and has not typed since)."""
+        return self._confirmed_discard
 
     @property
     def check_pending(self) -> bool:
@@ -166,7 +192,11 @@ class LibraryEditor(QWidget):
     def check_now(self) -> CheckResult:
         """Parse and bind the text now (the debounce timer calls this 300 ms after typing stops)."""
         self._timer.stop()
-        self.result = check_library_text(self.text.toPlainText(), self.display_name(), self.window_.document.model)
+        if self.is_blank:                 # nothing written yet is not an error: _show_status says what to do
+            self.result = CheckResult()
+        else:
+            self.result = check_library_text(self.text.toPlainText(), self.display_name(),
+                                             self.window_.document.model)
         self.text.set_problems({p.line or 1: p.message for p in self.result.problems})
         self._show_status(self.result.problems)
         names = [d.name for d in self.result.definitions]
@@ -181,6 +211,10 @@ class LibraryEditor(QWidget):
         return self.result
 
     def _show_status(self, problems: list[Problem]) -> None:
+        if self.is_blank:
+            self.status.setText(HINT)
+            self.status.setStyleSheet(f"color: {HINT_COLOUR}")
+            return
         if not problems:
             count = len(self.result.definitions)
             self.status.setText(f"✓ {count} command{'s' if count != 1 else ''}, fits the model "
@@ -202,7 +236,8 @@ class LibraryEditor(QWidget):
         definition = self.definition()
         self.curves = None
         if definition is None:
-            self.plot.set_message("Nothing to plot: the text does not define a command yet"
+            self.plot.set_message("Nothing to plot yet: no command written" if self.is_blank
+                                  else "Nothing to plot: the text does not define a command yet"
                                   if self.result.problems else "No command")
         else:
             try:
@@ -215,6 +250,7 @@ class LibraryEditor(QWidget):
         return self.curves
 
     def _model_changed(self, *_args) -> None:
+        self.text.setPlaceholderText(example_text(self.window_.document.model.parameters.names))
         self.check_now()
 
     # -- preview ------------------------------------------------------------------
@@ -231,20 +267,37 @@ class LibraryEditor(QWidget):
         player.play()
         return True
 
-    # -- files --------------------------------------------------------------------
-    def maybe_save(self, reason: str = "closing") -> bool:
-        """Ask Save / Discard / Cancel when the text has unsaved edits; False means stop."""
-        if not self.is_modified or self._confirmed_discard:
-            return True
-        answer = QMessageBox.question(
+    # -- questions (replaced by tests) -------------------------------------------
+    def ask_unsaved(self, reason: str) -> QMessageBox.StandardButton:
+        """Save, Discard or Cancel, before ``reason`` (e.g. "closing") would drop the unsaved edits."""
+        return QMessageBox.question(
             self, "Unsaved library file",
             f"The library file {self.display_name()} has unsaved edits. Save them before {reason}?",
-            QMessageBox.StandardButton.Save | QMessageBox.StandardButton.Discard | QMessageBox.StandardButton.Cancel,
-            QMessageBox.StandardButton.Save)
-        if answer == QMessageBox.StandardButton.Save:
+            Button.Save | Button.Discard | Button.Cancel, Button.Save)
+
+    def ask_recover(self, copy: LibraryCopy) -> QMessageBox.StandardButton:
+        """Yes (recover), Discard (delete the copy) or Ignore (ask again next time)."""
+        return recovery_question(self, copy)
+
+    # -- crash recovery -------------------------------------------------------------
+    def offer_recovery(self) -> bool:
+        """Offer the unsaved text a crashed workbench left behind (:meth:`LibraryAutosaver.offer_recovery`)."""
+        return self.autosaver.offer_recovery()
+
+    # -- files --------------------------------------------------------------------
+    def maybe_save(self, reason: str = "closing") -> bool:
+        """Ask Save / Discard / Cancel when the text has unsaved edits; False means stop.
+
+        Discard also drops the recovery copy: the user chose to lose the edits.
+        """
+        if not self.is_modified or self._confirmed_discard:
+            return True
+        answer = self.ask_unsaved(reason)
+        if answer == Button.Save:
             return self.save()
-        if answer == QMessageBox.StandardButton.Discard:
+        if answer == Button.Discard:
             self._confirmed_discard = True
+            self.autosaver.clear()
             return True
         return False
 
@@ -330,10 +383,28 @@ class LibraryEditor(QWidget):
     def _open_from_list(self, path: str, line: int) -> None:
         self.open_file(path, line)
 
+    def _status_link(self, link: str) -> None:
+        if link == "new":
+            self.new_dialog()
+        elif link == "open":
+            self.open_dialog()
+        else:
+            self.text.go_to_line(int(link))
+
+    def _text_changed(self) -> None:
+        self._confirmed_discard = False   # edits made after Discard are new edits, worth keeping
+
     def _modification_changed(self, modified: bool) -> None:
         if modified:
             self._confirmed_discard = False
         self.title_changed.emit(self.title())
+
+    def _autosaved(self, _path: str) -> None:
+        self.window_.statusBar().showMessage(
+            f"Autosaved the library text of {self.display_name()}: a crash would not lose its edits", 4000)
+
+    def _autosave_failed(self, message: str) -> None:
+        self.window_.statusBar().showMessage(f"Autosave of the library file failed: {message}", 4000)
 
 
 def _escape(text: str) -> str:

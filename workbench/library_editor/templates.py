@@ -1,4 +1,4 @@
-"""Starting points for a new library command, one per expansion procedure.
+"""Starting points for a new library command, one per expansion procedure; the empty editor's example.
 
 >>> print(template_text("once", "Twitch", "brow_raise"))        # doctest: +NORMALIZE_WHITESPACE
 # Twitch: brow_raise rises and falls back once, over duration ms.
@@ -56,3 +56,14 @@ def template_text(kind: str, name: str, parameter: str) -> str:
     if kind not in TEMPLATES:
         raise ValueError(f"unknown template '{kind}' (known: {', '.join(TEMPLATES)})")
     return TEMPLATES[kind][1].format(name=name, parameter=parameter)
+
+
+def example_text(parameters: list[str]) -> str:
+    """What the empty library editor shows, greyed, until something is typed: an example and where templates are.
+
+    The example drives the model's first parameter, so it would be valid as written.
+    """
+    parameter = parameters[0] if parameters else "parameter_name"
+    return ("Type a library file (§2.3) here, for example:\n\n"
+            + template_text("periodic", "MyGesture", parameter)
+            + "\nor start from a template: New on the toolbar.")

@@ -28,6 +28,7 @@ from .import_dialog import ImportDialog
 from .marker_overlay import HIGHLIGHT_COLOR, MarkerOverlay, default_colors, error_colors, marker_to_model_transform
 from .pca_dock import PcaDock
 from .plot_dock import MarkerPlotDock
+from .recording_playback import RecordingPlayback
 from .state import MocapState
 from .worker import run_in_background, show_error
 
@@ -49,9 +50,8 @@ class MocapTool(QObject):
         self.job = None
         self.plot_dock = MarkerPlotDock(self.state, window.playhead, window)
         self.pca_dock = PcaDock(self.state, window.document, window)
-        window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.plot_dock)
-        window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.pca_dock)
-        window.tabifyDockWidget(window.tool_options, self.pca_dock)     # shares the tool-options place
+        window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.plot_dock)   # the task layouts
+        window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.pca_dock)     # give them their places
         self.plot_dock.hide()
         self.pca_dock.hide()
 
@@ -62,6 +62,7 @@ class MocapTool(QObject):
         self.pca_dock.errors_changed.connect(self._on_errors)
         # a bound method, not a lambda: a lambda in the document's connection list would keep the window alive
         window.document.model_replaced.connect(self._on_model_replaced)
+        self.playback = RecordingPlayback(self)     # the session on the player; markers only while it plays
 
     # -- sessions --------------------------------------------------------------------
     def import_dialog_for(self, path: str | Path | None = None) -> ImportDialog:
@@ -111,10 +112,9 @@ class MocapTool(QObject):
         if session is None:
             self.overlay.hide()
             return
-        self.window.playhead.set_range((session.n_frames - 1) / session.rate_hz, session.rate_hz)
-        self.plot_dock.show()
-        self.pca_dock.show()
-        self.pca_dock.raise_()
+        self.playback.show_session()
+        self.window.layouts.reveal(self.plot_dock, task="mocap")    # a recording to analyse: the window turns
+        self.window.layouts.reveal(self.pca_dock)                   # to that task
         self._place_markers()
         self.window.statusBar().showMessage(f"Capture session: {session.source}, {session.n_frames} frames, "
                                             f"{session.n_markers} markers", 4000)
@@ -173,10 +173,14 @@ def install(window) -> None:
                    icon="session-open", tip="Open a capture session file (.h5) made by an import"),
         ActionSpec("mocap.save", "&Save session as…", MENU, triggered=lambda w: w.mocap._save_dialog(),
                    icon="session-save", tip="Write the capture session, with its phone labels, to an HDF5 file"),
+        ActionSpec("mocap.show", "Show the &recording", MENU, triggered=lambda w: w.mocap.playback.show_session(),
+                   icon="mocap-show",
+                   tip="Put the capture session back on the player: its markers show and Space plays them"),
         ActionSpec("mocap.plot", "Marker &coordinates", MENU, separator_before=True,
-                   triggered=lambda w: w.mocap.plot_dock.show(), icon="marker-plot",
+                   triggered=lambda w: w.layouts.reveal(w.mocap.plot_dock, task="mocap"), icon="marker-plot",
                    tip="Plot a marker coordinate over time and select frames"),
-        ActionSpec("mocap.pca", "Multistage &PCA…", MENU, triggered=lambda w: w.mocap.pca_dock.show(),
-                   icon="mocap-pca", tip="Derive articulatory parameters from the selected frames (§3.1.2)"),
+        ActionSpec("mocap.pca", "Multistage &PCA…", MENU,
+                   triggered=lambda w: w.layouts.reveal(w.mocap.pca_dock, task="mocap"), icon="mocap-pca",
+                   tip="Derive articulatory parameters from the selected frames (§3.1.2)"),
     ))
     return tool

@@ -41,7 +41,7 @@ class CoordinatePlot(QWidget):
 
     def __init__(self, parent: QWidget | None = None):
         super().__init__(parent)
-        self.setMinimumHeight(160)
+        self.setMinimumSize(240, 160)     # never a sliver: the dock scrolls below this
         self.setSizePolicy(QSizePolicy.Policy.Expanding, QSizePolicy.Policy.Expanding)
         self.setMouseTracking(False)
         self.values = np.zeros(0)
@@ -49,7 +49,7 @@ class CoordinatePlot(QWidget):
         self.title = ""
         self.spans: list = []           # Span(start, end, label)
         self.phones: list = []          # (start_ms, end_ms, label)
-        self.playhead_s = 0.0
+        self.playhead_s: float | None = 0.0   # None: the player plays something else, no line
         self._press_x: float | None = None
         self._drag_x: float | None = None
 
@@ -69,8 +69,9 @@ class CoordinatePlot(QWidget):
         self.phones = list(phones)
         self.update()
 
-    def set_playhead(self, seconds: float) -> None:
-        self.playhead_s = float(seconds)
+    def set_playhead(self, seconds: float | None) -> None:
+        """The red line at ``seconds``; ``None`` takes it away (the player plays another animation)."""
+        self.playhead_s = None if seconds is None else float(seconds)
         self.update()
 
     # -- coordinates -------------------------------------------------------------------
@@ -197,9 +198,10 @@ class CoordinatePlot(QWidget):
             painter.setPen(QColor(60, 60, 60))
             painter.drawText(box, Qt.AlignmentFlag.AlignCenter, label)
 
-        x = self.x_of_frame(self.playhead_s * self.rate_hz)
-        painter.setPen(QPen(PLAYHEAD_COLOR, 1.5))
-        painter.drawLine(QPointF(x, rect.top()), QPointF(x, rect.bottom() + PHONE_BAND))
+        if self.playhead_s is not None:
+            x = self.x_of_frame(self.playhead_s * self.rate_hz)
+            painter.setPen(QPen(PLAYHEAD_COLOR, 1.5))
+            painter.drawLine(QPointF(x, rect.top()), QPointF(x, rect.bottom() + PHONE_BAND))
 
 
 def _nice_step(raw: float) -> float:

@@ -11,8 +11,13 @@ leaves missing (:func:`engine.mocap.gaps.marker_gap_stats`, by the very
 rule the import then applies). Phone labels come from a TextGrid or label
 file, or from Festival's timing of the spoken text. **Import** runs
 :func:`engine.mocap.importer.import_marker_file` off the GUI thread and
-saves the session file (HDF5); a bad file ends in a dialog naming file and
-line, and the dialog stays open with everything as it was.
+saves the session file (HDF5).
+
+A file that cannot be read ends in a dialog naming file and line; the
+table and summary then show nothing of any earlier file (the summary says
+what went wrong) and Import stays off until a file reads. An import that
+fails ends in the same dialog, and the dialog stays open with everything as
+it was.
 """
 
 from __future__ import annotations
@@ -55,6 +60,7 @@ COLUMNS = ("Label in file", "Feature point", "Reference", "Missing frames", "Gap
            "Filled frames", "Excluded frames")
 LABEL, POINT, REFERENCE, MISSING, GAPS, LONGEST, FILLED, EXCLUDED = range(len(COLUMNS))
 TITLE = "Import motion capture"
+MAX_GAP_TIP = "Gaps up to this long are filled by a cubic spline; longer ones are excluded"
 
 
 class ImportDialog(QDialog):
@@ -119,7 +125,7 @@ class ImportDialog(QDialog):
         self.max_gap.setDecimals(0)
         self.max_gap.setSuffix(" ms")
         self.max_gap.setValue(DEFAULT_MAX_GAP_MS)
-        self.max_gap.setToolTip("Gaps up to this long are filled by a cubic spline; longer ones are excluded")
+        self.max_gap.setToolTip(MAX_GAP_TIP)
         self.max_gap.valueChanged.connect(self._refresh_gaps)
 
         self.table = QTableWidget(0, len(COLUMNS))
@@ -201,8 +207,9 @@ class ImportDialog(QDialog):
         self.csv_box.setVisible(self._format() == "csv" or path.suffix.lower() == ".csv")
         fmt, layout = self._format(), self.csv_layout()
         self.import_button.setEnabled(False)
-        self.job = run_in_background(self, f"Reading {path.name}…", lambda: read_marker_file(path, fmt, layout),
-                                     self._on_read, self._on_read_failed, title=TITLE)
+        job = self.job = run_in_background(self, f"Reading {path.name}…", lambda: read_marker_file(path, fmt, layout),
+                                           self._on_read, self._on_read_failed, title=TITLE,
+                                           on_finished=lambda: self._on_read_ended(job, path))
 
     def csv_layout(self) -> CsvLayout:
         return CsvLayout(columns=self.csv_columns.text().strip() or None,
@@ -238,8 +245,23 @@ class ImportDialog(QDialog):
         self.import_button.setEnabled(True)
 
     def _on_read_failed(self, exc: Exception) -> None:
-        self.summary.setText(f"Could not read the file: {exc}")
+        self._forget_recording(f"Could not read the file: {exc}")
         show_error(self, TITLE, exc)
+
+    def _on_read_ended(self, job, path: Path) -> None:
+        if job.outcome == "cancelled" and job is self.job:       # not when a later read has begun
+            self._forget_recording(f"Reading {path.name} was cancelled: choose a file or read it again.")
+
+    def _forget_recording(self, why: str) -> None:
+        """No file read: nothing of an earlier one stays in the table, ``why`` in the summary, Import off."""
+        self.recording = None
+        self._references_edited = False
+        self._updating = True
+        self.table.setRowCount(0)
+        self._updating = False
+        self.max_gap.setToolTip(MAX_GAP_TIP)
+        self.import_button.setEnabled(False)
+        self.summary.setText(why)
 
     # -- naming and reference ----------------------------------------------------------
     def labels(self) -> list[str]:

@@ -9,6 +9,12 @@ rotation, translation, the engine's Umeyama fit) takes the markers there.
 
 The actor is ours (one point cloud rendered as spheres, per-point colours);
 pyvista is imported here only when the first markers are shown.
+
+The markers belong to their recording: while another animation has the
+window's player (a library-editor or gallery preview, speech) the overlay is
+*inactive* — the face moves by that animation's clock, and markers following
+the shared playhead would float beside it — and draws nothing; it keeps the
+markers it was last given and draws them again when it is active once more.
 """
 
 from __future__ import annotations
@@ -79,14 +85,20 @@ def error_colors(errors_mm, good_mm: float = 0.5, bad_mm: float = 2.0) -> np.nda
 
 
 class MarkerOverlay:
-    """Spheres at marker positions in the viewport's plotter, moved and recoloured in place."""
+    """Spheres at marker positions in the viewport's plotter, moved and recoloured in place.
+
+    ``shown_points`` and ``shown_colors`` are the markers of the frame now (model
+    coordinates, missing ones left out); they are on screen while the overlay is
+    :attr:`active` and not hidden.
+    """
 
     def __init__(self, viewport):
         self._viewport = viewport
         self._mesh = None
         self._actor = None
+        self.active = True          # False while another animation has the player: draw nothing
         self.transform = (1.0, np.eye(3), np.zeros(3))
-        self.shown_points = np.zeros((0, 3))      # model coordinates of the spheres drawn now
+        self.shown_points = np.zeros((0, 3))      # model coordinates of the markers of the frame now
         self.shown_colors = np.zeros((0, 3), dtype=np.uint8)
 
     def set_transform(self, scale: float, rotation, translation) -> None:
@@ -97,13 +109,42 @@ class MarkerOverlay:
         return scale * np.asarray(points, dtype=float) @ rotation.T + translation
 
     def show(self, points, colors) -> None:
-        """Draw markers at ``points`` (M, 3, marker space; NaN rows are hidden) with ``colors`` (M, 3) uint8."""
-        import pyvista as pv
+        """Markers at ``points`` (M, 3, marker space; NaN rows are hidden) with ``colors`` (M, 3) uint8.
 
+        Drawn now if the overlay is active, else kept for when it is.
+        """
         points = self.to_model(points)
         present = np.isfinite(points).all(axis=1)
         self.shown_points = points[present]
         self.shown_colors = np.asarray(colors, dtype=np.uint8)[present]
+        if self.active:
+            self._draw()
+
+    def hide(self) -> None:
+        """Forget the markers (no session): nothing is drawn until :meth:`show` again."""
+        self.shown_points = np.zeros((0, 3))
+        self.shown_colors = np.zeros((0, 3), dtype=np.uint8)
+        self._take_off_screen()
+
+    def set_active(self, active: bool) -> None:
+        """Draw the markers (``True``) or keep them off screen while another animation plays (``False``)."""
+        active = bool(active)
+        if active == self.active:
+            return
+        self.active = active
+        if active and len(self.shown_points):
+            self._draw()
+        else:
+            self._take_off_screen()
+
+    @property
+    def visible(self) -> bool:
+        """Whether markers are on screen now."""
+        return self._actor is not None and bool(self._actor.GetVisibility())
+
+    def _draw(self) -> None:
+        import pyvista as pv
+
         cloud = pv.PolyData(self.shown_points if len(self.shown_points) else np.zeros((0, 3)))
         cloud.point_data["marker_colors"] = self.shown_colors if len(self.shown_colors) else np.zeros((0, 3), np.uint8)
         plotter = self._viewport.plotter
@@ -117,12 +158,7 @@ class MarkerOverlay:
         self._actor.SetVisibility(bool(len(self.shown_points)))
         self._viewport.render_now()
 
-    def hide(self) -> None:
-        if self._actor is not None:
+    def _take_off_screen(self) -> None:
+        if self.visible:
             self._actor.SetVisibility(False)
-            self.shown_points = np.zeros((0, 3))
             self._viewport.render_now()
-
-    @property
-    def visible(self) -> bool:
-        return self._actor is not None and bool(self._actor.GetVisibility())

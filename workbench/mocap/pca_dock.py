@@ -20,20 +20,18 @@
 from __future__ import annotations
 
 import numpy as np
-from PySide6.QtCore import Qt, QTimer, Signal
+from PySide6.QtCore import QSize, Qt, QTimer, Signal
 from PySide6.QtGui import QBrush, QColor, QFontDatabase
 from PySide6.QtWidgets import (
     QComboBox,
     QDockWidget,
     QFileDialog,
-    QFrame,
     QHBoxLayout,
     QHeaderView,
     QLabel,
     QLineEdit,
     QPlainTextEdit,
     QPushButton,
-    QScrollArea,
     QSlider,
     QSpinBox,
     QTableWidget,
@@ -48,6 +46,7 @@ from engine.mocap.articulation_file import save_articulation_file
 from engine.mocap.held_out import reconstruct_held_out
 from engine.mocap.pca import DEFAULT_STAGES, Stage, multistage_pca
 
+from ..dock_scroller import DockScroller
 from .apply_command import AddArticulationCommand
 from .marker_overlay import error_colors
 from .state import MocapState
@@ -56,6 +55,7 @@ from .worker import run_in_background, show_error
 
 TITLE = "Multistage PCA"
 AMPLITUDE_SD = 2.0
+USEFUL_WIDTH, USEFUL_HEIGHT = 440, 380
 
 
 class PcaDock(QDockWidget):
@@ -81,11 +81,7 @@ class PcaDock(QDockWidget):
         self.tabs.addTab(self._stages_page(), "1 Stages")
         self.tabs.addTab(self._results_page(), "2 Results")
         self.tabs.addTab(self._apply_page(), "3 Apply")
-        scroller = QScrollArea()       # the dock may be narrower than its content: scroll, not widen the window
-        scroller.setWidgetResizable(True)
-        scroller.setFrameShape(QFrame.Shape.NoFrame)
-        scroller.setWidget(self.tabs)
-        self.setWidget(scroller)
+        self.setWidget(DockScroller(self.tabs))   # narrower than its content: scroll, not widen the window
         self._phase = 0.0
         self.timer = QTimer(self)
         self.timer.setInterval(40)
@@ -95,6 +91,10 @@ class PcaDock(QDockWidget):
         state.articulation_changed.connect(self._on_articulation)
         self.set_stages([(",".join(s.markers), s.components) for s in DEFAULT_STAGES])
         self._update_frames_label()
+
+    def useful_size(self) -> QSize:
+        """Room for the stage table with its Components column and the Run PCA button (LayoutManager.reveal)."""
+        return QSize(USEFUL_WIDTH, USEFUL_HEIGHT)
 
     # -- step 1: stages ---------------------------------------------------------------
     def _stages_page(self) -> QWidget:
@@ -116,8 +116,8 @@ class PcaDock(QDockWidget):
         buttons.addStretch(1)
         buttons.addWidget(self.run_button)
         layout = QVBoxLayout(page)
-        layout.addWidget(QLabel("Each stage takes the principal components of its markers in what the earlier "
-                                "stages left (§3.1.2): the jaw first, then the lips."))
+        layout.addWidget(_wrapped("Each stage takes the principal components of its markers in what the earlier "
+                                  "stages left (§3.1.2): the jaw first, then the lips."))
         layout.addWidget(self.stage_table, 1)
         layout.addWidget(self.frames_label)
         layout.addLayout(buttons)
@@ -190,17 +190,22 @@ class PcaDock(QDockWidget):
         self.animate_button = QPushButton("Animate")
         self.animate_button.setCheckable(True)
         self.animate_button.toggled.connect(self.animate)
-        stop = QPushButton("Show the session")
+        stop = self.show_session_button = QPushButton("Show the session")
         stop.clicked.connect(self.stop_preview)
         self.save_button = QPushButton("Save articulation file…")
         self.save_button.clicked.connect(self._save_dialog)
+        choose = QHBoxLayout()          # two short rows, not one long one: the dock stays narrow
+        choose.addWidget(QLabel("Component"))
+        choose.addWidget(self.component_combo)
+        choose.addWidget(self.amplitude, 1)
         row = QHBoxLayout()
-        for w in (QLabel("Component"), self.component_combo, self.amplitude, self.animate_button, stop):
+        for w in (self.animate_button, stop):
             row.addWidget(w)
         row.addStretch(1)
         row.addWidget(self.save_button)
         layout = QVBoxLayout(page)
         layout.addWidget(self.chart, 2)
+        layout.addLayout(choose)
         layout.addLayout(row)
         layout.addWidget(self.report, 1)
         return page
@@ -289,9 +294,9 @@ class PcaDock(QDockWidget):
         row.addWidget(self.apply_button)
         row.addStretch(1)
         layout = QVBoxLayout(page)
-        layout.addWidget(QLabel("One translation parameter per component is added to the open model "
-                                "(one undo step); the session's other frames are then reconstructed "
-                                "through the face and compared with the captured markers."))
+        layout.addWidget(_wrapped("One translation parameter per component is added to the open model "
+                                  "(one undo step); the session's other frames are then reconstructed "
+                                  "through the face and compared with the captured markers."))
         layout.addLayout(row)
         body = QHBoxLayout()
         body.addWidget(self.error_table, 1)
@@ -345,3 +350,10 @@ class PcaDock(QDockWidget):
         """The error table as ``{marker: mm}`` (what the user reads)."""
         return {self.error_table.item(r, 0).text(): float(self.error_table.item(r, 1).text())
                 for r in range(self.error_table.rowCount())}
+
+
+def _wrapped(text: str) -> QLabel:
+    """A label that wraps its lines to the dock's width instead of setting the dock's minimum width."""
+    label = QLabel(text)
+    label.setWordWrap(True)
+    return label

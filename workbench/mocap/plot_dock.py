@@ -12,6 +12,7 @@ text (:mod:`engine.mocap.labels`), and drawn along the time axis.
 
 from __future__ import annotations
 
+from PySide6.QtCore import QSize, Qt
 from PySide6.QtWidgets import (
     QCheckBox,
     QComboBox,
@@ -20,12 +21,10 @@ from PySide6.QtWidgets import (
     QDockWidget,
     QFileDialog,
     QFormLayout,
-    QFrame,
     QHBoxLayout,
     QLabel,
     QLineEdit,
     QPushButton,
-    QScrollArea,
     QVBoxLayout,
     QWidget,
 )
@@ -34,6 +33,8 @@ from engine.mocap.errors import MocapError
 from engine.mocap.frame_selection import select_frames
 from engine.mocap.labels import festival_phones, read_labels
 
+from ..dock_scroller import DockScroller
+from ..flow_layout import FlowLayout
 from .coordinate_plot import CoordinatePlot
 from .import_dialog import LABEL_FILES
 from .state import MocapState
@@ -41,6 +42,7 @@ from .worker import run_in_background, show_error
 
 AXES = ("x", "y", "z")
 TITLE = "Marker coordinates"
+USEFUL_WIDTH, USEFUL_HEIGHT = 640, 240
 
 
 class MarkerPlotDock(QDockWidget):
@@ -79,23 +81,20 @@ class MarkerPlotDock(QDockWidget):
         festival_button.clicked.connect(self._festival_dialog)
         self.count_label = QLabel()
 
-        row = QHBoxLayout()
-        for w in (QLabel("Marker"), self.marker_combo, self.axis_combo, QLabel("Phone"), self.phone_edit,
-                  self.selectors_edit, select_button, remove_button, clear_button, labels_button, festival_button):
-            row.addWidget(w)
-        row.addStretch(1)
-        row.addWidget(self.count_label)
+        row = FlowLayout(spacing=4)     # one line when the dock is wide, wrapped when it is narrow
+        for group in ((QLabel("Marker"), self.marker_combo, self.axis_combo), (QLabel("Phone"), self.phone_edit),
+                      (self.selectors_edit, select_button), (remove_button, clear_button),
+                      (labels_button, festival_button)):
+            row.addWidget(_side_by_side(*group))
+        row.addWidget(self.count_label, stretch=1)
+        self.count_label.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
         self.plot = CoordinatePlot()
         body = QWidget()
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 2, 4, 2)
         layout.addLayout(row)
         layout.addWidget(self.plot, 1)
-        scroller = QScrollArea()       # the dock may be narrower than its content: scroll, not widen the window
-        scroller.setWidgetResizable(True)
-        scroller.setFrameShape(QFrame.Shape.NoFrame)
-        scroller.setWidget(body)
-        self.setWidget(scroller)
+        self.setWidget(DockScroller(body))   # narrower than its content: scroll, not widen the window
 
         self.marker_combo.currentTextChanged.connect(self._update_curve)
         self.axis_combo.currentTextChanged.connect(self._update_curve)
@@ -104,8 +103,19 @@ class MarkerPlotDock(QDockWidget):
         state.session_changed.connect(self._on_session)
         state.phones_changed.connect(self._on_phones)
         state.selection_changed.connect(self._on_selection)
-        playhead.time_changed.connect(self.plot.set_playhead)
+        playhead.time_changed.connect(self._on_playhead)
         self._on_session(state.session)
+
+
+    #: Whether the playhead is the recording's (the player plays the session); set by the recording's playback.
+    playhead_is_recording = True
+
+    def _on_playhead(self, seconds: float) -> None:
+        """The red line follows the playhead only while the player plays this recording."""
+        self.plot.set_playhead(seconds if self.playhead_is_recording else None)
+    def useful_size(self) -> QSize:
+        """Wide enough to read phones along the time axis, high enough for the curve (LayoutManager.reveal)."""
+        return QSize(USEFUL_WIDTH, USEFUL_HEIGHT)
 
     # -- what is shown -------------------------------------------------------------------
     def show_coordinate(self, marker: str, axis: str) -> None:
@@ -227,3 +237,14 @@ class MarkerPlotDock(QDockWidget):
         form.addRow(buttons)
         if dialog.exec() == QDialog.DialogCode.Accepted:
             self.align_with_festival(text.text(), stretch.isChecked())
+
+
+def _side_by_side(*widgets: QWidget) -> QWidget:
+    """Widgets that belong together (a label and its box), kept on one line when the row wraps."""
+    holder = QWidget()
+    layout = QHBoxLayout(holder)
+    layout.setContentsMargins(0, 0, 0, 0)
+    layout.setSpacing(4)
+    for widget in widgets:
+        layout.addWidget(widget)
+    return holder

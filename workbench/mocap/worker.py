@@ -37,6 +37,7 @@ class BackgroundJob(QObject):
     def __init__(self, work: Callable[[], object], on_done, on_error, on_finished, parent: QObject | None = None):
         super().__init__(parent)
         self.cancelled = False
+        self.outcome: str | None = None     # once ended: "done", "failed" or "cancelled" (the result thrown away)
         self._on_done, self._on_error, self._on_finished = on_done, on_error, on_finished
         self.future: Future = _EXECUTOR.submit(work)
         self._timer = QTimer(self)
@@ -59,8 +60,11 @@ class BackgroundJob(QObject):
         self._timer.stop()
         _RUNNING.discard(self)
         try:
-            if not self.cancelled:
+            if self.cancelled:
+                self.outcome = "cancelled"
+            else:
                 exc = self.future.exception()
+                self.outcome = "done" if exc is None else "failed"
                 if exc is None:
                     self._on_done(self.future.result())
                 else:
@@ -82,6 +86,7 @@ def run_in_background(parent: QWidget, text: str, work: Callable[[], object], on
     dialog.setWindowTitle(title)
     dialog.setWindowModality(Qt.WindowModality.WindowModal)
     dialog.setMinimumDuration(300)
+    dialog.setValue(0)      # starts the minimum-duration clock: without a value Qt shows the dialog after 4 s
     dialog.setAutoClose(False)
     dialog.setAutoReset(False)
 

@@ -89,8 +89,11 @@ class PaintOptionsPage(QWidget):
         self.mirror_info = QLabel()
         self.mirror_info.setWordWrap(True)
         self.mirror_info.setEnabled(False)
+        self.mirror_info.hide()             # shown with the mirror map's statistics, while X-mirror is on
         self.front_only = QCheckBox("Front faces only")
-        self.connected = QCheckBox("Connected surface only (no jumping gaps such as the lips)")
+        self.connected = QCheckBox("Connected surface only")
+        self.connected.setToolTip("Reach only surface joined to the point under the mouse: no jumping gaps "
+                                  "such as the lips")
         self.part = QComboBox()
         self.hold = QCheckBox("Hold the parameter at")
         self.hold_value = SpinSlider(0.0, 100.0, 0, " %")
@@ -111,15 +114,17 @@ class PaintOptionsPage(QWidget):
         where_layout.addRow(self.connected)
         where_layout.addRow(self.mirror)
         where_layout.addRow(self.mirror_info)
-        live = QGroupBox("Live preview")
+        live = self.live_preview = QGroupBox("Live preview")
         live_layout = QFormLayout(live)
         live_layout.addRow(self.hold, self.hold_value)
         live_layout.addRow(self.hold_label)
+        # Live preview before "Where it paints": on a laptop's screen it is on show without scrolling.
         layout = QVBoxLayout(self)
+        layout.setSpacing(4)
         layout.addWidget(self.title)
         layout.addLayout(brush)
-        layout.addWidget(where)
         layout.addWidget(live)
+        layout.addWidget(where)
         layout.addStretch(1)
 
         self.tool.currentIndexChanged.connect(lambda _i: controller.set_tool(self.tool.currentData()))
@@ -210,3 +215,4 @@ class PaintOptionsPage(QWidget):
             self.mirror_info.setText("Mirror map: " + ctx.mirror.summary(ctx.parts, ctx.vertex_part))
         else:
             self.mirror_info.clear()
+        self.mirror_info.setVisible(on)

@@ -21,6 +21,7 @@ from PySide6.QtWidgets import (
     QFileDialog,
     QFormLayout,
     QHBoxLayout,
+    QLabel,
     QLineEdit,
     QMessageBox,
     QProgressDialog,
@@ -82,11 +83,13 @@ class ExportSpeechDialog(QDialog):
 
         form = QFormLayout()
         form.addRow("Files:", files)
-        form.addRow("&Folder:", folder_row)
-        form.addRow("&Base name:", self.base_edit)
-        form.addRow("Frame &size (px):", size_row)
-        form.addRow("Frame &rate:", self.fps_box)
-        form.addRow("&Camera:", self.view_box)
+        # Labels made here, each with its buddy: a label QFormLayout makes for a row of several widgets has
+        # none, and without a buddy QLabel shows "&Folder:" literally instead of as the mnemonic Alt+F.
+        form.addRow(_buddy_label("&Folder:", self.folder_edit), folder_row)
+        form.addRow(_buddy_label("&Base name:", self.base_edit), self.base_edit)
+        form.addRow(_buddy_label("Frame &size (px):", self.width_box), size_row)
+        form.addRow(_buddy_label("Frame &rate:", self.fps_box), self.fps_box)
+        form.addRow(_buddy_label("&Camera:", self.view_box), self.view_box)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
         buttons.button(QDialogButtonBox.StandardButton.Ok).setText("Export")
         buttons.accepted.connect(self.accept)
@@ -115,6 +118,13 @@ class ExportSpeechDialog(QDialog):
         folder = QFileDialog.getExistingDirectory(self, "Export into folder", self.folder_edit.text())
         if folder:
             self.folder_edit.setText(folder)
+
+
+def _buddy_label(text: str, buddy: QWidget) -> QLabel:
+    """A form label whose ``&`` mnemonic puts the keyboard focus on ``buddy``."""
+    label = QLabel(text)
+    label.setBuddy(buddy)
+    return label
 
 
 def _spin(low: int, high: int, value: int) -> QSpinBox:

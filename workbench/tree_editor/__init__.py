@@ -60,6 +60,10 @@ def install(window: MainWindow) -> None:
     editor.sheet = PropertySheet(editor)
     window.tool_options.add_page(TOOL_ID, editor.sheet)     # the dock scrolls every page
     editor.dock.picked_by_user.connect(lambda name: window.tool_options.show_page(TOOL_ID))
+    # With no tool active, Tool options shows the selected parameter's properties rather than "no tool".
+    view_state = window.view_state
+    window.tool_options.set_idle_page(TOOL_ID, lambda: view_state.selected_parameter is not None)
+    view_state.selected_parameter_changed.connect(window.tool_options.refresh_idle)
     editor.gizmo = ParameterGizmo(window.viewport, window.document, window.view_state, editor)
     editor.actions = add_actions(window, ACTIONS)
     window.menus["&View"].addAction(editor.dock.toggleViewAction())
