@@ -56,24 +56,30 @@ def recovery_dir() -> Path:
 
 
 @dataclass(frozen=True)
-class RecoveryEntry:
-    """An orphaned autosave: the model left behind by a workbench that did not shut down cleanly."""
+class _OrphanedCopy:
+    """What a workbench that did not shut down cleanly left in its recovery session, and whose file it was."""
 
     folder: Path
     session: str
-    original: Path | None      # the file the model belongs to; None for a model never saved
+    original: Path | None      # the file the copy belongs to; None for one never saved
     saved_at: float            # seconds since the epoch
-    model_name: str
-
-    @property
-    def model_path(self) -> Path:
-        return self.folder / f"{self.session}.xml"
 
     def is_newer_than_original(self) -> bool:
         """True unless the original file was saved after this copy was made."""
         if self.original is None or not self.original.exists():
             return True
         return self.saved_at > self.original.stat().st_mtime
+
+
+@dataclass(frozen=True)
+class RecoveryEntry(_OrphanedCopy):
+    """An orphaned autosave: the model left behind by a workbench that did not shut down cleanly."""
+
+    model_name: str
+
+    @property
+    def model_path(self) -> Path:
+        return self.folder / f"{self.session}.xml"
 
     def load(self) -> engine.Model:
         return engine.load_model(self.model_path)
@@ -83,13 +89,9 @@ class RecoveryEntry:
 
 
 @dataclass(frozen=True)
-class LibraryCopy:
+class LibraryCopy(_OrphanedCopy):
     """An orphaned library-editor text: unsaved edits left by a workbench that did not shut down cleanly."""
 
-    folder: Path
-    session: str
-    original: Path | None      # the library file the text belongs to; None for a new file never saved
-    saved_at: float            # seconds since the epoch
     text: str
 
     @property
@@ -98,12 +100,6 @@ class LibraryCopy:
 
     def display_name(self) -> str:
         return self.original.name if self.original is not None else "untitled.lib"
-
-    def is_newer_than_original(self) -> bool:
-        """True unless the library file was saved after this copy was made."""
-        if self.original is None or not self.original.exists():
-            return True
-        return self.saved_at > self.original.stat().st_mtime
 
     def remove(self) -> None:
         with contextlib.suppress(FileNotFoundError):
