@@ -18,6 +18,7 @@ The verbs live in one module each (``model_verbs``, ``command_verbs``,
 from __future__ import annotations
 
 import argparse
+import errno
 import sys
 from importlib import import_module
 from importlib.metadata import entry_points
@@ -27,6 +28,9 @@ from engine.errors import UserError
 
 #: The engine's own verb modules, in the order ``--help`` lists them; each has ``add_verbs(verbs)``.
 VERB_MODULES = ("model_verbs", "command_verbs", "speech_verbs", "export_verbs", "config_verbs", "mocap_verbs")
+#: System errors that a user's own file name causes (too long, a folder where a file belongs):
+#: bad input, status 2, like every other mistake in the arguments.
+USER_ERRNOS = frozenset({errno.ENAMETOOLONG, errno.EISDIR, errno.ENOTDIR})
 #: Entry point group through which other packages add verbs (``add_verbs(verbs)`` callables).
 PLUGIN_GROUP = "artificial_person.verbs"
 
@@ -50,7 +54,7 @@ def main(argv: list[str] | None = None) -> int:
     except OSError as exc:  # disk full, permissions: not a bug, so no traceback either
         where = f"{exc.filename}: " if exc.filename else ""
         say_error(f"{where}{exc.strerror or exc}")
-        return 1
+        return 2 if exc.errno in USER_ERRNOS else 1
 
 
 def build_parser() -> argparse.ArgumentParser:

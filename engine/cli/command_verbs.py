@@ -13,7 +13,14 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from engine.cli.common import add_library_option, add_model_option, load_model_argument, positive_number, require_suffix
+from engine.cli.common import (
+    add_library_option,
+    add_model_option,
+    frame_rate,
+    load_model_argument,
+    require_suffix,
+    time_ms,
+)
 
 if TYPE_CHECKING:
     from engine.commands.command_files import Activation
@@ -34,8 +41,8 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("input", metavar="IN.xml", help="command file, high- or low-level")
     add_library_option(p)
     add_model_option(p)
-    p.add_argument("--fps", type=positive_number, default=60.0, metavar="N", help="frames per second (default 60)")
-    p.add_argument("--end", type=float, default=None, metavar="MS",
+    p.add_argument("--fps", type=frame_rate, default=60.0, metavar="N", help="frames per second (default 60)")
+    p.add_argument("--end", type=time_ms, default=None, metavar="MS",
                    help="last time to sample (default: the last key)")
     p.add_argument("-o", "--output", required=True, metavar="OUT.csv", help="tracks table to write")
     p.set_defaults(run=run_tracks)

@@ -100,6 +100,34 @@ def positive_number(text: str) -> float:
     return number
 
 
+def frame_rate(text: str) -> float:
+    """Frames per second: a number above 0 and at most :data:`engine.commands.limits.MAX_FPS`.
+
+    >>> frame_rate("25")
+    25.0
+    """
+    from engine.commands.limits import LimitProblem, check_fps
+
+    try:
+        return check_fps(positive_number(text))
+    except LimitProblem as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def time_ms(text: str) -> float:
+    """A time in ms: a finite number within ±:data:`engine.commands.limits.MAX_TIME_MS`."""
+    from engine.commands.limits import LimitProblem, check_time
+
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number of milliseconds") from None
+    try:
+        return check_time(value, "the time")
+    except LimitProblem as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
 def non_negative(text: str) -> float:
     """A finite number, 0 or more."""
     try:

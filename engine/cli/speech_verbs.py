@@ -14,11 +14,12 @@ from engine.cli.common import (
     VIEW_NAMES,
     add_library_option,
     add_model_option,
+    frame_rate,
     load_model_argument,
-    positive_number,
     size,
 )
 from engine.errors import UserError
+from engine.formats.text_files import read_bounded_text
 
 OUTPUT_SUFFIXES = (".mp4", ".wav", ".xml")
 #: The table options, in the order the old verb checked them: each is a kind of speech file.
@@ -35,13 +36,14 @@ def add_verbs(verbs: Any) -> None:
     add_model_option(p)
     add_library_option(p)
     p.add_argument("--articulation", default=None, metavar="TABLE",
-                   help="phone → target table (default library/articulation/finnish.phones)")
+                   help="phone → target table (default: the shipped table of the voice's phone set, "
+                        "library/articulation/*.phones; phones a table lacks get targets from their features)")
     p.add_argument("--coarticulation", choices=("cohen-massaro", "none"), default="cohen-massaro",
                    help="Cohen–Massaro dominance functions (default) or the paper's plain target interpolation")
     p.add_argument("--prosody", action="store_true",
                    help="add visual prosody: blinks, brows on accented words, nods at phrase ends")
     p.add_argument("--seed", type=int, default=0, metavar="N", help="seed for --prosody (default 0)")
-    p.add_argument("--fps", type=positive_number, default=30.0, metavar="N", help="frames per second (default 30)")
+    p.add_argument("--fps", type=frame_rate, default=30.0, metavar="N", help="frames per second (default 30)")
     p.add_argument("--size", type=size, default=(640, 480), metavar="WxH", help="video size (default 640x480)")
     p.add_argument("--view", choices=VIEW_NAMES, default="front", help="camera (default front)")
     p.add_argument("-o", "--output", default=None, metavar="OUT.(mp4|wav|xml)",
@@ -76,7 +78,7 @@ def run_say(args: argparse.Namespace) -> int:
     text, name = _text(args)
     model = load_model_argument(args.model)
     library = load_library(args.library)
-    table = load_articulation(args.articulation)
+    table = load_articulation(args.articulation) if args.articulation else None
     speech = speak(text, model, voice=args.voice, library=library, table=table,
                    coarticulation=args.coarticulation, prosody_seed=args.seed if args.prosody else None, name=name)
     progress = None
@@ -100,7 +102,7 @@ def _text(args: argparse.Namespace) -> tuple[str, str]:
     if args.file is None:
         return args.text, "<text>"
     try:
-        return Path(args.file).read_text(encoding="utf-8"), args.file
+        return read_bounded_text(args.file, error=UserError, what="text"), args.file
     except OSError as exc:
         raise UserError(f"cannot read the text: {exc.strerror or exc}", file=args.file) from None
     except UnicodeDecodeError:

@@ -43,6 +43,7 @@ import numpy as np
 import numpy.typing as npt
 
 from engine.commands.command_definition import IMPLICIT_ARGUMENTS, CommandDefinition
+from engine.commands.limits import check_key_count
 from engine.errors import LibraryError
 
 
@@ -247,10 +248,14 @@ def periodic_timing(args: Arguments, template_length: float) -> tuple[int, float
         else:  # end only
             quantities["count"] = 1.0
     if "period" not in quantities:
+        check_key_count(quantities["count"], "count")
         return int(quantities["count"]), quantities["end"] / quantities["count"]
     if "count" not in quantities:
-        count = max(1, round(quantities["end"] / quantities["period"]))
+        repetitions = quantities["end"] / quantities["period"]
+        check_key_count(repetitions, f"end={quantities['end']:g} at period={quantities['period']:g}")
+        count = max(1, round(repetitions))
         return count, quantities["end"] / count
+    check_key_count(quantities["count"], "count")
     return int(quantities["count"]), quantities["period"]
 
 
@@ -279,6 +284,7 @@ def periodic(times: np.ndarray, values: np.ndarray, span: tuple[float, float],
              args: Arguments) -> tuple[np.ndarray, np.ndarray]:
     """The template repeated ``count`` times, one repetition per ``period`` (§2.3)."""
     count, period = periodic_timing(args, span[1] - span[0])
+    check_key_count(count * times.size, f"count={count} repetitions of {times.size} keys")
     one = stretch(times, span, 0.0, period)
     all_times = np.concatenate([one + k * period for k in range(count)])
     return all_times, np.tile(values, count)

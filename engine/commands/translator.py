@@ -28,6 +28,7 @@ import numpy as np
 from engine.commands.command_files import Activation, HighLevelCommand
 from engine.commands.library import Library, parameter_of_line
 from engine.commands.library_format import AMPLITUDE, START, CommandDefinition
+from engine.commands.limits import LimitProblem, check_time
 from engine.commands.procedures import ArgumentProblem, Arguments, expand
 from engine.errors import CommandError
 
@@ -64,17 +65,33 @@ def translate_command(command: HighLevelCommand, library: Library, model: Model)
     args = command_arguments(command, definition)
     parameters = [parameter_of_line(definition, curve, model) for curve in definition.curves]
     try:
+        check_time(args[START], START)
         laid_out = expand(definition, args)
-    except ArgumentProblem as exc:
+    except (ArgumentProblem, LimitProblem) as exc:
         raise command.error(f"<{command.name}>: {exc}") from None
     scale = args[AMPLITUDE] / 100.0
     source = f"{command.file}:{command.line}" if command.line is not None else command.file
     activations: list[Activation] = []
     for curve, parameter, (times, values) in zip(definition.curves, parameters, laid_out, strict=True):
         factor = scale * (args[curve.scale] if curve.scale else 1.0)
-        activations.append(Activation(parameter, _tidy(times + args[START]), _tidy(values * factor),
+        with np.errstate(over="ignore", invalid="ignore"):
+            shifted, scaled = times + args[START], values * factor
+        _check_laid_out(command, curve.name, shifted, scaled)
+        activations.append(Activation(parameter, _tidy(shifted), _tidy(scaled),
                                       definition.interpolation, command.name, curve.name, source))
     return activations
+
+
+def _check_laid_out(command: HighLevelCommand, line: str, times: np.ndarray, values: np.ndarray) -> None:
+    """Every key of one translated line lies on the timeline and has a finite value."""
+    for t in (times.min(initial=0.0), times.max(initial=0.0)):
+        try:
+            check_time(float(t), f"line '{line}' reaches a key time; it")
+        except LimitProblem as exc:
+            raise command.error(f"<{command.name}>: {exc} (check at, count, period, duration)") from None
+    if not np.all(np.isfinite(values)):
+        raise command.error(f"<{command.name}>: line '{line}' has values too large to represent "
+                            "(check amplitude and the arguments that scale it)")
 
 
 def command_arguments(command: HighLevelCommand, definition: CommandDefinition) -> Arguments:

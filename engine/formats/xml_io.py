@@ -2,7 +2,10 @@
 
 Model descriptions and command files are XML that may come from anywhere, so
 the parser expands no entities, loads no DTD and never touches the network.
-Syntax and schema errors become a :class:`~engine.errors.UserError` (or the
+A document that declares entities or names an external DTD is refused with a
+clear error rather than read with the entity references left empty (none of
+our formats uses them). Files are read whole with a bound
+(:mod:`engine.formats.text_files`). Syntax and schema errors become a :class:`~engine.errors.UserError` (or the
 subclass the caller names) carrying the file and line.
 
 >>> from engine.formats.xml_io import parse_xml_text
@@ -19,6 +22,7 @@ from typing import cast
 from lxml import etree
 
 from engine.errors import UserError
+from engine.formats.text_files import read_bounded_bytes
 
 SCHEMA_DIR = Path(__file__).parent / "schemas"
 
@@ -31,12 +35,7 @@ def safe_xml_parser() -> etree.XMLParser:
 
 def parse_xml(path: str | Path, error: type[UserError] = UserError) -> etree._ElementTree:
     """Parse an XML file safely; a syntax error becomes ``error`` with file:line."""
-    path = Path(path)
-    try:
-        data = path.read_bytes()
-    except OSError as exc:
-        raise error(f"cannot read file: {exc.strerror or exc}", file=path) from None
-    return parse_xml_bytes(data, path, error)
+    return parse_xml_bytes(read_bounded_bytes(path, error=error), Path(path), error)
 
 
 def parse_xml_text(text: str | bytes, name: str | Path = "<text>",
@@ -47,14 +46,50 @@ def parse_xml_text(text: str | bytes, name: str | Path = "<text>",
 
 
 def parse_xml_bytes(data: bytes, name: str | Path, error: type[UserError] = UserError) -> etree._ElementTree:
+    """Parse XML bytes safely; ``name`` is what error messages call the document."""
     try:
-        return etree.ElementTree(etree.fromstring(data, safe_xml_parser()))
+        doc = etree.ElementTree(etree.fromstring(data, safe_xml_parser()))
     except etree.XMLSyntaxError as exc:
         line = exc.lineno if exc.lineno else None
         msg = exc.msg.split(", line ")[0] if exc.msg else "malformed XML"
         raise error(f"malformed XML: {msg}", file=name, line=line) from None
     except ValueError as exc:  # e.g. a str with an encoding declaration
         raise error(f"malformed XML: {exc}", file=name) from None
+    start = data.find(b"<!DOCTYPE")
+    refuse_entities(doc, name, error, data[:start].count(b"\n") + 1 if start >= 0 else None)
+    return doc
+
+
+def refuse_entities(doc: etree._ElementTree, name: str | Path, error: type[UserError] = UserError,
+                    doctype_line: int | None = None) -> None:
+    """Refuse a document whose DTD is external or declares entities, or that holds an entity reference.
+
+    Entities are never expanded (that is how XML reads files off the disk or
+    the network), and an undeclared one in an attribute reads as an empty
+    string: a file relying on them would be read wrongly in silence.
+
+    >>> refuse_entities(parse_xml_text("<commands/>"), "ok.xml")
+    >>> parse_xml_text('<!DOCTYPE commands SYSTEM "cmds.dtd"><commands/>', "ext.xml")
+    Traceback (most recent call last):
+    engine.errors.UserError: ext.xml:1: the file names an external DTD ('cmds.dtd'); entities and DTDs are not \
+read (write the content out in the file)
+    """
+    info = doc.docinfo
+    root = doc.getroot()
+    line = source_line(root)
+    # lxml-stubs leave out DocInfo.system_url and DTD.iterentities, which lxml has had since 2.x and 3.x
+    external = info.system_url or info.public_id  # type: ignore[attr-defined]
+    if external:
+        raise error(f"the file names an external DTD ('{external}'); entities and DTDs are not read "
+                    "(write the content out in the file)", file=name, line=doctype_line)
+    dtd = info.internalDTD
+    declared = list(dtd.iterentities()) if dtd is not None else []  # type: ignore[attr-defined]
+    if declared:
+        raise error("the file declares entities in its DTD; entities are not expanded "
+                    "(write the content out in the file)", file=name, line=doctype_line)
+    for reference in root.iter(etree.Entity):
+        raise error(f"entity reference {reference.text} is not expanded (write the content out in the file)",
+                    file=name, line=source_line(reference) or line)
 
 
 def source_line(element: etree._Element) -> int | None:

@@ -23,10 +23,13 @@ clock (0 ms = the first frame).
 
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from engine.commands.limits import MAX_TIME_MS
+from engine.formats.text_files import read_bounded_bytes
 from engine.mocap.errors import LabelFileError
 
 if TYPE_CHECKING:
@@ -34,7 +37,12 @@ if TYPE_CHECKING:
 
 PHONE_TIER_NAMES = ("phones", "phone", "phonemes", "segments", "segment")
 _UNITS = re.compile(r"#\s*units?\s*[:=]?\s*(ms|s)\s*$", re.IGNORECASE)
-_TOKEN = re.compile(r'"(?:[^"]|"")*"|\[[^\]"\n]*\]|<exists>|<absent>|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?')
+# Each alternative consumes what it scans, so tokenizing is linear: a quoted text with no closing quote runs
+# to the end of the file (and is refused), a bracket comment with no ']' to the end of its line.
+_TOKEN = re.compile(r'"(?:[^"]|"")*(?:"|\Z)|\[[^\]"\n]*(?:\]|$)|<exists>|<absent>'
+                    r'|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?', re.MULTILINE)
+_UNTERMINATED = re.compile(r'(?:[^"]|"")*\Z')
+
 
 
 def read_labels(path: str | Path, tier: str | None = None) -> list[tuple[float, float, str]]:
@@ -53,14 +61,13 @@ def read_labels(path: str | Path, tier: str | None = None) -> list[tuple[float, 
 
 
 def _read_text(path: Path) -> str:
-    try:
-        data = path.read_bytes()
-    except FileNotFoundError:
-        raise LabelFileError("no such file", file=path) from None
-    except OSError as exc:
-        raise LabelFileError(f"cannot read: {exc.strerror or exc}", file=path) from None
+    data = read_bounded_bytes(path, error=LabelFileError, what="label file")
     if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
-        return data.decode("utf-16")
+        try:
+            return data.decode("utf-16")
+        except UnicodeDecodeError as exc:
+            raise LabelFileError(f"not valid UTF-16 text at byte {exc.start + 1} ({exc.reason})", file=path,
+                                 line=data[:exc.start].count("\n".encode("utf-16-le")) + 1) from None
     try:
         return data.decode("utf-8-sig")
     except UnicodeDecodeError:
@@ -89,6 +96,7 @@ def parse_label_lines(lines: list[str], path: str | Path) -> list[tuple[float, f
         if not (end >= start >= 0):
             raise LabelFileError(f"segment ends ({parts[1]}) before it starts ({parts[0]}) or starts before 0",
                                  file=path, line=number)
+        _check_segment_end(end, path, number)
         out.append((start, end, parts[2].strip()))
     return out
 
@@ -106,8 +114,9 @@ def _phones_csv(text: str, path: Path) -> list[tuple[float, float, str]]:
             start, end = float(cells[0]), float(cells[1])
         except ValueError:
             raise LabelFileError(f"'{cells[0]}', '{cells[1]}' are not times in ms", file=path, line=number) from None
-        if not end >= start:
-            raise LabelFileError("segment ends before it starts", file=path, line=number)
+        if not end >= start >= 0:
+            raise LabelFileError("segment ends before it starts, or starts before 0", file=path, line=number)
+        _check_segment_end(end, path, number)
         out.append((start, end, cells[2]))
     return out
 
@@ -131,6 +140,8 @@ def parse_textgrid(text: str, path: str | Path, tier: str | None = None) -> list
         if kind == "string":
             if not token.startswith('"'):
                 raise LabelFileError(f"expected a quoted text, found '{token}'", file=path, line=line_of(offset))
+            if len(token) < 2 or _UNTERMINATED.fullmatch(token, 1):
+                raise LabelFileError("a quoted text has no closing quote", file=path, line=line_of(offset))
             return token[1:-1].replace('""', '"'), offset
         if kind == "number" and token.startswith(('"', "<")):
             raise LabelFileError(f"expected a number, found {token}", file=path, line=line_of(offset))
@@ -138,7 +149,18 @@ def parse_textgrid(text: str, path: str | Path, tier: str | None = None) -> list
 
     def take_number() -> tuple[float, int]:
         token, offset = take("number")
-        return float(token), offset
+        value = float(token)
+        if not math.isfinite(value):
+            raise LabelFileError(f"the number {token} is too large", file=path, line=line_of(offset))
+        return value, offset
+
+    def take_count(what: str) -> int:
+        """A count of tiers or intervals: whole, not negative, and no more than the tokens left."""
+        value, offset = take_number()
+        if value != int(value) or value < 0 or value > len(tokens) - pos:
+            raise LabelFileError(f"{what} {value:g} is not a whole number the file can hold", file=path,
+                                 line=line_of(offset))
+        return int(value)
 
     file_type, _ = take("string")
     object_class, offset = take("string")
@@ -149,14 +171,14 @@ def parse_textgrid(text: str, path: str | Path, tier: str | None = None) -> list
     flag, offset = take("flag")
     if flag != "<exists>":
         raise LabelFileError("the TextGrid has no tiers", file=path, line=line_of(offset))
-    n_tiers = int(take_number()[0])
+    n_tiers = take_count("the number of tiers")
     tiers = []
     for _ in range(n_tiers):
         kind, offset = take("string")
         name, _ = take("string")
         take_number()
         take_number()
-        n = int(take_number()[0])
+        n = take_count("the number of intervals")
         items = []
         for _ in range(n):
             if kind == "IntervalTier":
@@ -184,9 +206,16 @@ def parse_textgrid(text: str, path: str | Path, tier: str | None = None) -> list
     for start, end, label, at in chosen[0][2]:
         if end < start:
             raise LabelFileError("an interval ends before it starts", file=path, line=line_of(at))
+        _check_segment_end(end * 1000.0, path, line_of(at))
         if label.strip():
             out.append((start * 1000.0, end * 1000.0, label.strip()))
     return out
+
+
+def _check_segment_end(end_ms: float, path: str | Path, line: int) -> None:
+    if not end_ms <= MAX_TIME_MS:
+        raise LabelFileError(f"a segment ends at {end_ms:g} ms, beyond {MAX_TIME_MS:.0f} ms (24 hours)",
+                             file=path, line=line)
 
 
 def festival_phones(text: str, voice: str | None = None, duration_ms: float | None = None,

@@ -24,7 +24,6 @@ True
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
@@ -32,6 +31,7 @@ from numpy.typing import ArrayLike
 
 from engine.commands.command_files import Activation
 from engine.commands.interpolation import interpolate
+from engine.commands.limits import LimitProblem, frame_count
 from engine.commands.translator import check_activation
 from engine.errors import UserError
 from engine.formats.atomic import atomic_write_text
@@ -87,13 +87,16 @@ class Timeline:
         return dict(zip(self.parameters, self.sample([time])[0].tolist(), strict=True))
 
     def frame_times(self, fps: float, start: float = 0.0, end: float | None = None) -> np.ndarray:
-        """Frame times ``start, start + 1000/fps, …`` up to and including ``end`` (default: the last key)."""
-        if not (fps > 0 and math.isfinite(fps)):
-            raise UserError(f"frames per second must be a positive number (got {fps:g})")
+        """Frame times ``start, start + 1000/fps, …`` up to and including ``end`` (default: the last key).
+
+        At most :data:`engine.commands.limits.MAX_FRAMES` frames, ``fps`` at most
+        :data:`~engine.commands.limits.MAX_FPS`, times within ±24 hours; beyond them a :class:`UserError`.
+        """
         end = self.end if end is None else end
-        if end < start:
-            raise UserError(f"the end time {end:g} ms comes before the start time {start:g} ms")
-        count = math.floor((end - start) * fps / 1000.0 + 1e-9) + 1
+        try:
+            count = frame_count(start, end, fps)
+        except LimitProblem as exc:
+            raise UserError(str(exc)) from None
         return start + np.arange(count) * (1000.0 / fps)
 
     def sample_frames(self, fps: float = 60.0, start: float = 0.0,
