@@ -17,17 +17,19 @@ True
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
 import h5py
 import numpy as np
-import numpy.typing as npt
 from lxml import etree
 
 from engine.errors import ModelFileError, ParameterError, UserError
-from engine.formats.atomic import atomic_files
+from engine.formats.atomic import atomic_files, finish_interrupted_writes
+from engine.formats.hdf5_reading import HDF5Reader
+from engine.formats.hdf5_reading import text as hdf5_text
 from engine.formats.xml_io import parse_xml, source_line, validate
 from engine.model.landmarks import FEATURE_POINTS
 from engine.model.model import InfluenceRegion, Model
@@ -57,6 +59,7 @@ def load_model(path: str | Path | None = None) -> Model:
         if len(candidates) != 1:
             raise ModelFileError("a model folder must hold exactly one .xml description", file=path)
         path = candidates[0]
+    finish_interrupted_writes(path.parent)      # a save killed half-way is completed first (atomic.py)
     if not path.exists():
         raise ModelFileError("no such file", file=path)
     doc = parse_xml(path, ModelFileError)
@@ -138,7 +141,16 @@ def load_model(path: str | Path | None = None) -> Model:
             landmark_lines[key] = source_line(el)
 
     arrays_path = (path.parent / _required(root, "arrays", path)).resolve()
-    vertices, faces, vertex_part, regions, colors_rgb = _read_arrays(arrays_path, tree, len(parts))
+    if arrays_path.parent != path.parent.resolve():
+        finish_interrupted_writes(arrays_path.parent)
+    vertices, faces, vertex_part, regions, colors_rgb, generation = _read_arrays(arrays_path, tree, len(parts))
+    described = root.get("generation")
+    if described is not None and generation != described:
+        raise ModelFileError(
+            f"the description and its arrays file {arrays_path.name} come from different saves (generation "
+            f"{described} here, {generation or 'none'} there): the pair was mixed by copying one file, or a "
+            "save is under way; load it again, or restore both files from one save",
+            file=path, line=source_line(root))
     n = len(vertices)
     for key, v in landmarks.items():
         if v >= n:
@@ -182,66 +194,50 @@ def _vec(text: str) -> np.ndarray:
 
 
 def _read_arrays(path: Path, tree: ParameterTree, n_parts: int
-                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, InfluenceRegion], np.ndarray | None]:
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, InfluenceRegion], np.ndarray | None,
+                            str | None]:
+    """The arrays file's contents, checked (kind, shape, size, finite values) before and after reading.
+
+    Returns vertices, faces, per-vertex parts, regions, vertex colours and the
+    file's ``generation`` attribute (None in files written before it existed).
+    """
     if not path.exists():
         raise ModelFileError("the arrays file named by the model description does not exist", file=path)
-    try:
-        f = h5py.File(path, "r")
-    except OSError:
-        raise ModelFileError("not a readable HDF5 file", file=path) from None
-    with f:
-        fmt = f.attrs.get("format")
-        if isinstance(fmt, bytes):
-            fmt = fmt.decode()
+    with HDF5Reader(path, ModelFileError) as f:
+        fmt = hdf5_text(f.attribute("format"))
         if fmt != ARRAYS_FORMAT:
-            raise ModelFileError(f"not an Artificial Person arrays file (format attribute is {fmt!r})", file=path)
-        version = int(f.attrs.get("version", 0))
-        if version > VERSION or version < 1:
-            raise ModelFileError(f"arrays format version {version} is not one this program reads ({VERSION})",
-                                 file=path)
+            raise f.fail(f"not an Artificial Person arrays file (format attribute is {fmt!r})")
+        version = _integer(hdf5_text(f.attribute("version")))
+        if version is None or version > VERSION or version < 1:
+            raise f.fail(f"arrays format version {version} is not one this program reads ({VERSION})")
+        generation = hdf5_text(f.attribute("generation"))
 
-        def dataset(name: str, dtype: npt.DTypeLike, shape_tail: tuple[int, ...] | None = None) -> np.ndarray:
-            if name not in f:
-                raise ModelFileError(f"missing HDF5 dataset '/{name}'", file=path)
-            data = f[name]
-            if not isinstance(data, h5py.Dataset):
-                raise ModelFileError(f"'/{name}' is not a dataset", file=path)
-            arr = np.asarray(data[()])
-            if shape_tail is not None and (arr.ndim != 1 + len(shape_tail) or arr.shape[1:] != shape_tail):
-                raise ModelFileError(f"dataset '/{name}' has shape {arr.shape}, expected (n, "
-                                     f"{', '.join(map(str, shape_tail))})", file=path)
-            if shape_tail is None and arr.ndim != 1:
-                raise ModelFileError(f"dataset '/{name}' has shape {arr.shape}, expected one dimension", file=path)
-            return arr.astype(dtype)
-
-        vertices = dataset("mesh/vertices", float, (3,))
-        faces = dataset("mesh/faces", np.int64)
-        vertex_part = dataset("mesh/part", np.int64)
+        vertices = f.array("mesh/vertices", "f", tail=(3,)).astype(float)
+        faces = f.array("mesh/faces", "iu").astype(np.int64)
+        vertex_part = f.array("mesh/part", "iu").astype(np.int64)
         if len(vertex_part) != len(vertices):
-            raise ModelFileError(f"'/mesh/part' has {len(vertex_part)} entries for {len(vertices)} vertices",
-                                 file=path)
-        if len(vertex_part) and vertex_part.max() >= n_parts:
-            raise ModelFileError(f"'/mesh/part' names part {vertex_part.max()} but the model has {n_parts} parts",
-                                 file=path)
+            raise f.fail(f"'/mesh/part' has {len(vertex_part)} entries for {len(vertices)} vertices")
+        if len(vertex_part) and (vertex_part.max() >= n_parts or vertex_part.min() < 0):
+            raise f.fail(f"'/mesh/part' names part {vertex_part.max()} but the model has {n_parts} parts")
         colors: np.ndarray | None = None
-        if "mesh/colors" in f:
-            colors = dataset("mesh/colors", np.int64, (3,))
-            if len(colors) != len(vertices) or colors.min() < 0 or colors.max() > 255:
-                raise ModelFileError("'/mesh/colors' must hold one sRGB triple (0-255) per vertex", file=path)
+        if f.has("mesh/colors"):
+            colors = f.array("mesh/colors", "iu", tail=(3,))
+            if len(colors) != len(vertices) or (colors.size and (colors.min() < 0 or colors.max() > 255)):
+                raise f.fail("'/mesh/colors' must hold one sRGB triple (0-255) per vertex")
             colors = colors.astype(np.uint8)
         regions: dict[str, InfluenceRegion] = {}
         for p in tree:
             base = f"parameters/{p.name}"
-            if base not in f:
-                raise ModelFileError(f"missing HDF5 group '/{base}' for parameter '{p.name}'", file=path)
-            idx = dataset(f"{base}/indices", np.int64)
-            w = dataset(f"{base}/weights", float)
-            disp = dataset(f"{base}/displacements", float, (3,)) if p.field else None
+            if not f.has(base):
+                raise f.fail(f"missing HDF5 group '/{base}' for parameter '{p.name}'")
+            idx = f.array(f"{base}/indices", "iu").astype(np.int64)
+            w = f.array(f"{base}/weights", "f").astype(float)
+            disp = f.array(f"{base}/displacements", "f", tail=(3,)).astype(float) if p.field else None
             try:
                 regions[p.name] = InfluenceRegion(idx, w, disp)
             except UserError as exc:
-                raise ModelFileError(f"parameter '{p.name}': {exc.message}", file=path) from None
-    return vertices, faces, vertex_part, regions, colors
+                raise f.fail(f"parameter '{p.name}': {exc.message}") from None
+    return vertices, faces, vertex_part, regions, colors, generation
 
 
 # ---------------------------------------------------------------------------
@@ -288,15 +284,37 @@ def write_model_files(model: Model, description: str | Path, arrays: str | Path,
     the description gives the arrays file (where it will end up, relative to
     the description). Use :func:`save_model` otherwise.
     """
-    xml = model_to_xml(model, arrays_name)          # a UserError here, before the arrays are written
-    _write_arrays(model, arrays)
-    Path(description).write_bytes(xml)
+    arrays_content = _arrays_of(model)
+    unmarked = model_to_xml(model, arrays_name)     # a UserError here, before the arrays are written
+    generation = save_generation(unmarked, arrays_content)
+    _write_arrays(arrays_content, arrays, generation)
+    Path(description).write_bytes(model_to_xml(model, arrays_name, generation))
 
 
-def model_to_xml(model: Model, arrays_name: str) -> bytes:
-    """The model description (format version :data:`VERSION`) naming ``arrays_name`` as its arrays file."""
+def save_generation(description: bytes, arrays: list[tuple[str, np.ndarray, dict[str, Any]]]) -> str:
+    """The token that marks the two files of one save: a digest of their contents (16 hex digits).
+
+    Written as ``generation`` on ``<model>`` and as the arrays file's root
+    attribute; a description whose token differs from its arrays file's was
+    not saved with it, and :func:`load_model` refuses the pair. Derived from
+    the contents, so saving the same model twice gives the same bytes.
+    """
+    digest = hashlib.sha256(description)
+    for name, data, _ in sorted(arrays, key=lambda item: item[0]):     # in any order the model lists them
+        digest.update(f"\0{name}\0{data.dtype.str}\0{data.shape}\0".encode())
+        digest.update(np.ascontiguousarray(data).tobytes())
+    return digest.hexdigest()[:16]
+
+
+def model_to_xml(model: Model, arrays_name: str, generation: str | None = None) -> bytes:
+    """The model description (format version :data:`VERSION`) naming ``arrays_name`` as its arrays file.
+
+    ``generation``: the token of :func:`save_generation` shared with the arrays file, if any.
+    """
     root = etree.Element("model", format=FORMAT, version=str(VERSION), name=_xml_text(model.name, "the model name"),
                          arrays=arrays_name, units="mm")
+    if generation is not None:
+        root.set("generation", generation)
     if model.description:
         etree.SubElement(root, "description").text = _xml_text(model.description, "the model description")
     parts = etree.SubElement(root, "parts")
@@ -359,23 +377,35 @@ def _nums(v: Iterable[float]) -> str:
     return " ".join(_num(x) for x in v)
 
 
-def _write_arrays(model: Model, path: str | Path) -> None:
+def _arrays_of(model: Model) -> list[tuple[str, np.ndarray, dict[str, Any]]]:
+    """Every dataset of the arrays file, in file order: ``(path, data, h5py storage options)``."""
+    packed: dict[str, Any] = {"compression": "gzip", "shuffle": True}
+    out: list[tuple[str, np.ndarray, dict[str, Any]]] = [
+        ("mesh/vertices", np.asarray(model.vertices), packed),
+        ("mesh/faces", np.asarray(model.faces), packed),
+        ("mesh/part", model.vertex_part.astype(np.int32), {"compression": "gzip"}),
+    ]
+    if model.vertex_colors is not None:
+        out.append(("mesh/colors", np.asarray(model.vertex_colors), {"compression": "gzip"}))
+    for p in model.parameters:
+        r = model.regions[p.name]
+        out.append((f"parameters/{p.name}/indices", r.indices.astype(np.int64), {}))
+        out.append((f"parameters/{p.name}/weights", np.asarray(r.weights), {}))
+        if r.displacements is not None:
+            out.append((f"parameters/{p.name}/displacements", np.asarray(r.displacements), {}))
+    return out
+
+
+def _write_arrays(arrays: list[tuple[str, np.ndarray, dict[str, Any]]], path: str | Path, generation: str) -> None:
     with h5py.File(path, "w", track_order=True) as f:
         f.attrs["format"] = ARRAYS_FORMAT
         f.attrs["version"] = VERSION
         f.attrs["units"] = "mm"
-        mesh = f.create_group("mesh")
-        mesh.create_dataset("vertices", data=model.vertices, compression="gzip", shuffle=True)
-        mesh.create_dataset("faces", data=model.faces, compression="gzip", shuffle=True)
-        mesh.create_dataset("part", data=model.vertex_part.astype(np.int32), compression="gzip")
-        if model.vertex_colors is not None:
-            mesh.create_dataset("colors", data=model.vertex_colors, compression="gzip")
-        params = f.create_group("parameters", track_order=True)
-        for p in model.parameters:
-            r = model.regions[p.name]
-            g = params.create_group(p.name)
-            g.create_dataset("indices", data=r.indices.astype(np.int64))
-            g.create_dataset("weights", data=r.weights)
-            if r.displacements is not None:
-                g.create_dataset("displacements", data=r.displacements)
-
+        f.attrs["generation"] = generation
+        f.create_group("mesh")
+        f.create_group("parameters", track_order=True)
+        for name, data, storage in arrays:
+            group, _, leaf = name.rpartition("/")
+            if group not in f:
+                f.create_group(group)
+            f[group].create_dataset(leaf, data=data, **storage)

@@ -176,8 +176,8 @@ def test_failed_arrays_write_leaves_previous_files_and_no_temporaries(saved, mon
     before = {name: (folder / name).read_bytes() for name in files_in(folder)}
     real = model_files._write_arrays
 
-    def half_then_fail(model, tmp):
-        real(model, tmp)
+    def half_then_fail(arrays, tmp, generation):
+        real(arrays, tmp, generation)
         with h5py.File(tmp, "a") as f:       # the temporary file is really half written
             del f["parameters"]
         raise Boom("disk full")
