@@ -112,11 +112,14 @@ class FileController:
         return bool(path) and self.new_from_mesh(path)
 
     def new_from_mesh(self, path: str | Path) -> bool:
-        """Import ``path`` (any mesh pyvista reads; glTF in metres, others in mm) as a new, unsaved model."""
+        """Import ``path`` (any mesh pyvista reads; glTF in metres, others in mm) as a new, unsaved model.
+
+        The engine reads OBJ, PLY and glTF itself and every other format in a child process, so a
+        damaged file ends in a message here, never in a crash or a hang that would lose unsaved work."""
         path = Path(path)
         scale = 1000.0 if path.suffix.lower() in METRE_FORMATS else None
         try:
-            model = import_mesh(path, scale=scale)
+            model = import_mesh(path)
         except engine.UserError as exc:
             QMessageBox.critical(self.window, f"{TITLE}: cannot import mesh", str(exc))
             return False

@@ -58,7 +58,13 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("-o", "--output", required=True, metavar="MODEL.xml",
                    help="model description to write (its arrays go beside it as .h5)")
     p.add_argument("--scale", type=positive_number, default=None, metavar="S",
-                   help="multiply coordinates by S to get mm (default 1: the file is in mm)")
+                   help="multiply coordinates by S to get mm (default: glTF is in metres, so 1000; "
+                        "every other format is taken to be in mm, so 1)")
+    p.add_argument("--keep-units", action="store_true",
+                   help="keep the file's numbers as they are (no metres-to-mm conversion for glTF)")
+    p.add_argument("--up", default="+Y", metavar="AXIS",
+                   help="the file's up direction: +Y (default), -Y, +Z, -Z, +X or -X; the mesh is "
+                        "turned so that it points along +Y, the model's up")
     p.set_defaults(run=run_import_mesh)
 
 
@@ -94,11 +100,32 @@ def run_pose(args: argparse.Namespace) -> int:
 
 def run_import_mesh(args: argparse.Namespace) -> int:
     out = require_suffix(args.output, (".xml",), "import-mesh")
-    from engine.formats.mesh_io import import_mesh
+    from pathlib import Path
+
+    from engine.formats.mesh_io import read_mesh
     from engine.formats.model_files import save_model
 
-    save_model(import_mesh(args.file, scale=args.scale), out)
+    mesh = read_mesh(args.file, scale=args.scale, keep_units=args.keep_units, up=args.up)
+    save_model(mesh.to_model(Path(args.file).stem, Path(args.file).name), out)
+    print(import_report(mesh, args.file, out))
     return 0
+
+
+def import_report(mesh: Any, source: str, out: str | Any) -> str:
+    """What ``import-mesh`` read: sizes, units, up axis, texture coordinates and material images."""
+    lines = [f"{source}: {len(mesh.vertices)} vertices, {len(mesh.part_names)} part(s); model written to {out}",
+             f"units: coordinates × {mesh.scale:g} to mm; up: {mesh.up} (turned to +Y)"]
+    texture = mesh.texture
+    if texture is None or not texture.has_coordinates:
+        lines.append("texture coordinates: none")
+    else:
+        seams = "one per vertex" if texture.vertex_uv(mesh.faces, len(mesh.vertices)) is not None \
+            else "per polygon corner (the file has texture seams)"
+        lines.append(f"texture coordinates: yes, {seams}")
+    if texture is not None:
+        lines += [f"material {m.name}: image {m.image or 'none'}" for m in texture.materials]
+    lines += [f"note: {note}" for note in mesh.notes]
+    return "\n".join(lines)
 
 
 def model_summary(model: Model) -> dict[str, Any]:

@@ -16,6 +16,7 @@ from __future__ import annotations
 import base64
 import json
 import struct
+import urllib.parse
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -222,57 +223,12 @@ class _Reader:
         self.cache: dict[int, np.ndarray] = {}
 
     def _buffer(self, i: int, spec: dict, embedded: dict[int, bytes]) -> bytes:
-        """Buffer ``i``: the GLB's binary chunk, data handed in (a file being checked before it is
-        written), a data: URI or a file beside the document."""
-        uri, length = spec.get("uri"), int(spec["byteLength"])
-        if i in embedded:
-            data, slack = embedded[i], 3 if uri is None else 0     # the BIN chunk is padded to 4 bytes
-        elif uri is None:
-            self.fail(f"buffer {i} has no uri and there is no binary chunk")
-        elif uri.startswith("data:"):
-            data, slack = base64.b64decode(uri.partition(",")[2]), 0
-        else:
-            try:
-                data, slack = (self.path.parent / uri).read_bytes(), 0
-            except OSError as exc:
-                self.fail(f"buffer {i}: cannot read '{uri}': {exc.strerror or exc}")
-        if not length <= len(data) <= length + slack:
-            self.fail(f"buffer {i}: byteLength {length} but its data hold {len(data)} bytes")
-        return data[:length]
+        return load_buffer(self.path, i, spec, embedded, self.fail)
 
     def accessor(self, index: int) -> np.ndarray:
-        if index in self.cache:
-            return self.cache[index]
-        a = self.doc["accessors"][index]
-        where = f"accessor {index}"
-        if "sparse" in a or "bufferView" not in a:
-            self.fail(f"{where}: sparse or buffer-less accessors are not supported")
-        dtype = np.dtype(_COMPONENTS[a["componentType"]]).newbyteorder("<")
-        width, count = _WIDTHS[a["type"]], int(a["count"])
-        view = self.doc["bufferViews"][a["bufferView"]]
-        buffer = self.buffers[view["buffer"]]
-        start, length = int(view.get("byteOffset", 0)), int(view["byteLength"])
-        if start + length > len(buffer):
-            self.fail(f"bufferView {a['bufferView']} runs past the end of buffer {view['buffer']}")
-        item = dtype.itemsize * width
-        stride = int(view.get("byteStride", item))
-        offset = int(a.get("byteOffset", 0))
-        if count < 1 or offset % dtype.itemsize or stride < item:
-            self.fail(f"{where}: bad count, offset or stride")
-        if offset + stride * (count - 1) + item > length:
-            self.fail(f"{where}: {count} elements do not fit in bufferView {a['bufferView']} ({length} bytes)")
-        raw = np.frombuffer(buffer, dtype=np.uint8, count=stride * (count - 1) + item, offset=start + offset)
-        rows = np.lib.stride_tricks.as_strided(raw, shape=(count, item), strides=(stride, 1))
-        array = np.ascontiguousarray(rows).view(dtype).reshape(count, width).astype(dtype.newbyteorder("="))
-        for key, reduce in (("min", np.min), ("max", np.max)):
-            if key in a:
-                bound = np.asarray(a[key], dtype=float)
-                # other writers may print bounds in decimal: allow float32 rounding, no more
-                if bound.shape != (width,) or not np.allclose(reduce(array, axis=0), bound, rtol=1e-6, atol=0):
-                    self.fail(f"{where}: {key} {a[key]} does not match its data")
-        array = array[:, 0] if width == 1 else array
-        self.cache[index] = array
-        return array
+        if index not in self.cache:
+            self.cache[index] = decode_accessor(self.doc, self.buffers.__getitem__, index, self.fail)
+        return self.cache[index]
 
     def mesh(self) -> GltfMesh:
         doc = self.doc
@@ -364,3 +320,84 @@ class _Reader:
         return GltfPrimitive(name, positions, flat.reshape(-1, 3), arrays.get("NORMAL"), arrays.get("COLOR_0"),
                              None if vertex is None else vertex.astype(np.int64), targets, material,
                              None if joints is None else joints.astype(np.int64), arrays.get("WEIGHTS_0"))
+
+
+# -- pieces shared with the mesh importer (:mod:`engine.formats.mesh_gltf`) ------------
+
+#: The first line of a Git LFS pointer file, which a clone without LFS holds instead of the data.
+LFS_POINTER = b"version https://git-lfs.github.com/spec/v1"
+
+
+def load_buffer(path: Path, i: int, spec: dict, embedded: dict[int, bytes], fail: Callable[[str], NoReturn]) -> bytes:
+    """Buffer ``i`` of the document at ``path``: the GLB's binary chunk, data handed in (a file
+    being checked before it is written), a ``data:`` URI or a file beside the document. A
+    missing file or a Git LFS pointer in its place is said so plainly."""
+    uri, length = spec.get("uri"), int(spec["byteLength"])
+    if length < 0:
+        fail(f"buffer {i}: byteLength {length} is negative")
+    if i in embedded:
+        data, slack = embedded[i], 3 if uri is None else 0     # the BIN chunk is padded to 4 bytes
+    elif uri is None:
+        fail(f"buffer {i} has no uri and there is no binary chunk")
+    elif not isinstance(uri, str):
+        fail(f"buffer {i}: its uri is not a string")
+    elif uri.startswith("data:"):
+        try:
+            data, slack = base64.b64decode(uri.partition(",")[2], validate=True), 0
+        except ValueError:
+            fail(f"buffer {i}: its data: URI is not valid base64")
+    else:
+        name = urllib.parse.unquote(uri)
+        if "://" in name or Path(name).is_absolute():
+            fail(f"buffer {i}: '{uri}' is not a file beside the document (only relative file names are read)")
+        target = path.parent / name
+        if not target.is_file():
+            fail(f"buffer {i}: cannot read '{name}': the file is missing (it belongs beside {path.name})")
+        try:
+            data, slack = target.read_bytes(), 0
+        except OSError as exc:
+            fail(f"buffer {i}: cannot read '{name}': {exc.strerror or exc}")
+        if data.startswith(LFS_POINTER):
+            fail(f"buffer {i}: '{name}' is a Git LFS pointer, not the data (fetch it with 'git lfs pull')")
+    if not length <= len(data) <= length + slack:
+        fail(f"buffer {i}: byteLength {length} but its data hold {len(data)} bytes")
+    return data[:length]
+
+
+def decode_accessor(doc: dict, buffer: Callable[[int], bytes], index: int, fail: Callable[[str], NoReturn],
+                    check_bounds: bool = True) -> np.ndarray:
+    """Accessor ``index`` as an array (N, width), or (N,) for scalars; ``buffer(i)`` gives buffer ``i``.
+
+    Every offset, stride and count is checked against the bytes that exist
+    before anything is read. With ``check_bounds`` the accessor's ``min`` and
+    ``max`` must match its data (to float32 rounding)."""
+    a = doc["accessors"][index]
+    where = f"accessor {index}"
+    if "sparse" in a or "bufferView" not in a:
+        fail(f"{where}: sparse or buffer-less accessors are not supported")
+    if a.get("componentType") not in _COMPONENTS or a.get("type") not in _WIDTHS:
+        fail(f"{where}: unknown componentType or type")
+    dtype = np.dtype(_COMPONENTS[a["componentType"]]).newbyteorder("<")
+    width, count = _WIDTHS[a["type"]], int(a["count"])
+    view = doc["bufferViews"][a["bufferView"]]
+    data = buffer(int(view["buffer"]))
+    start, length = int(view.get("byteOffset", 0)), int(view["byteLength"])
+    if start < 0 or length < 0 or start + length > len(data):
+        fail(f"bufferView {a['bufferView']} runs past the end of buffer {view['buffer']}")
+    item = dtype.itemsize * width
+    stride = int(view.get("byteStride", item))
+    offset = int(a.get("byteOffset", 0))
+    if count < 1 or offset < 0 or offset % dtype.itemsize or stride < item:
+        fail(f"{where}: bad count, offset or stride")
+    if offset + stride * (count - 1) + item > length:
+        fail(f"{where}: {count} elements do not fit in bufferView {a['bufferView']} ({length} bytes)")
+    raw = np.frombuffer(data, dtype=np.uint8, count=stride * (count - 1) + item, offset=start + offset)
+    rows = np.lib.stride_tricks.as_strided(raw, shape=(count, item), strides=(stride, 1))
+    array = np.ascontiguousarray(rows).view(dtype).reshape(count, width).astype(dtype.newbyteorder("="))
+    for key, reduce in (("min", np.min), ("max", np.max)):
+        if check_bounds and key in a:
+            bound = np.asarray(a[key], dtype=float)
+            # other writers may print bounds in decimal: allow float32 rounding, no more
+            if bound.shape != (width,) or not np.allclose(reduce(array, axis=0), bound, rtol=1e-6, atol=0):
+                fail(f"{where}: {key} {a[key]} does not match its data")
+    return array[:, 0] if width == 1 else array

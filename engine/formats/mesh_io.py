@@ -1,9 +1,11 @@
 """Mesh files in and out: import a surface as a :class:`~engine.model.Model`, write posed meshes.
 
-* :func:`import_mesh` reads OBJ with our own reader (VTK's OBJ reader splits
-  vertices at texture seams, which would break the vertex order the file
-  defines) and everything else pyvista reads (PLY, STL, VTK/VTP, glTF/GLB, …)
-  through pyvista, imported lazily so that ``import engine`` loads no VTK.
+* :func:`read_mesh` reads OBJ, PLY and glTF with our own readers
+  (:mod:`~engine.formats.mesh_obj`, :mod:`~engine.formats.mesh_ply`,
+  :mod:`~engine.formats.mesh_gltf`), keeping texture coordinates and material
+  images, and everything else pyvista reads (STL, VTK/VTP, OFF, …) with VTK in
+  a child process (:mod:`~engine.formats.mesh_child`), so that no damaged file
+  can crash or hang the caller; :func:`import_mesh` makes the result a model.
 * :func:`write_mesh` writes ``.obj``, ``.ply`` (ASCII or binary little-endian)
   and ``.npz`` with our own small writers, keeping the vertex order given.
 
@@ -14,33 +16,30 @@ Lengths are millimetres.
 >>> head = engine.load_model()
 >>> posed = write_mesh(f"{tempfile.mkdtemp()}/posed.obj", head.deform(jaw_open=0.5), head.faces,
 ...                    parts=head.parts, vertex_part=head.vertex_part)
->>> import_mesh(posed).n_vertices == head.n_vertices            # a scan in metres: scale=1000.0
+>>> import_mesh(posed).n_vertices == head.n_vertices            # a Z-up scan in metres: up="+Z", scale=1000
 True
 """
 
 from __future__ import annotations
 
-import contextlib
 import io
 import re
-import warnings
-from collections.abc import Iterator, Sequence
+from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import numpy as np
 import numpy.typing as npt
 
 from engine.errors import MeshImportError, UserError
 from engine.formats.atomic import atomic_write_bytes
+from engine.formats.gltf_read import LFS_POINTER
+from engine.formats.mesh_child import read_in_child
+from engine.formats.mesh_data import ImportedMesh, RawMesh
+from engine.formats.mesh_gltf import read_gltf_mesh
+from engine.formats.mesh_obj import read_obj
+from engine.formats.mesh_ply import read_ply
 from engine.model.cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
 from engine.model.model import Model
-
-if TYPE_CHECKING:
-    import pyvista as pv
-
-#: What the readers return: vertices (N, 3), flat cell array, part names, each face's part index.
-_MeshArrays = tuple[np.ndarray, np.ndarray, list[str], np.ndarray]
 
 WRITE_FORMATS = (".obj", ".ply", ".npz")
 _DEFAULT_PART = "surface"
@@ -50,49 +49,117 @@ _DEFAULT_PART = "surface"
 # Import
 # ---------------------------------------------------------------------------
 
-def import_mesh(path: str | Path, scale: float | None = None, name: str | None = None) -> Model:
+def import_mesh(path: str | Path, scale: float | None = None, name: str | None = None, *,
+                keep_units: bool = False, up: str = "+Y", timeout: float | None = None) -> Model:
     """Read a polygon surface as a new :class:`Model` with no parameters.
+
+    The arguments are :func:`read_mesh`'s; ``name`` is the model's name (the
+    file's stem by default). The texture coordinates and material images
+    the file holds are on :func:`read_mesh`'s result, not on the model (the
+    model files have no place for them yet): read the file with
+    :func:`read_mesh` to have both.
+    """
+    return read_mesh(path, scale, keep_units=keep_units, up=up, timeout=timeout).to_model(
+        name or Path(path).stem, Path(path).name)
+
+
+def read_mesh(path: str | Path, scale: float | None = None, *, keep_units: bool = False, up: str = "+Y",
+              timeout: float | None = None) -> ImportedMesh:
+    """Read a polygon surface: vertices in mm with +Y up, polygons, parts, texture.
 
     Parameters
     ----------
     path : file name
-        OBJ, PLY, STL, VTK/VTP, glTF/GLB or any other mesh format pyvista reads.
+        OBJ (+ MTL), PLY, glTF/GLB (read by our own code), or STL, VTK/VTP/VTU,
+        OFF or any other format pyvista reads (read by VTK in a child process
+        that is stopped after ``timeout`` seconds, so no file can crash or
+        hang the caller).
     scale : float, optional
-        Multiplies every coordinate. The file's units are taken to be
-        millimetres unless you say otherwise, e.g. ``scale=1000`` for a file
-        in metres (glTF files are in metres by that format's convention).
-    name : str, optional
-        Model name; defaults to the file's stem.
+        Multiplies every coordinate, whatever the format says. By default a
+        glTF file is in metres (its specification says so) and is scaled by
+        1000; every other format is taken to be in millimetres.
+    keep_units : bool
+        Keep the file's numbers as they are (no metres → mm for glTF).
+    up : ``"+Y"``, ``"-Y"``, ``"+Z"``, ``"-Z"``, ``"+X"`` or ``"-X"``
+        The file's up direction; the mesh is turned (a rotation, never a
+        mirror) so that it points along +Y, the model's up. ``"+Z"`` maps
+        (x, y, z) to (x, z, −y): a Z-up scan facing −Y ends facing +Z.
 
     Polygons are kept as they are (quads stay quads); triangle strips are
     split into triangles; lines and points are dropped, and so are vertices
     that no polygon uses (the others keep their order). Parts: one per OBJ
     group (``g``, or ``o`` where there are no groups) or glTF mesh, otherwise
-    one part ``"surface"``.
+    one part ``"surface"``. Texture coordinates (OBJ ``vt``, PLY u/v, s/t,
+    texture_u/texture_v or per-corner ``texcoord``, glTF ``TEXCOORD_0``) and
+    colour images (MTL ``map_Kd``, PLY ``comment TextureFile``, glTF
+    ``baseColorTexture``) are in ``texture``, one (u, v) per polygon corner.
 
     Raises :class:`~engine.errors.MeshImportError` naming the file when it
     cannot be read or holds no polygons.
     """
     path = Path(path)
     factor = _check_scale(scale)
+    rotation = up_rotation(up)
+    raw = _read_raw(path, timeout)
+    if len(raw.faces) == 0:
+        raise MeshImportError("holds no polygons (points and lines alone are not a surface)", file=path)
+    try:
+        vertices, faces, vertex_part, part_names = _compact(raw.vertices, raw.faces, raw.face_part,
+                                                            raw.part_names)
+    except UserError as exc:
+        raise MeshImportError(exc.message, file=path) from None
+    if not np.all(np.isfinite(vertices)):
+        raise MeshImportError("has vertex coordinates that are not finite numbers", file=path)
+    if scale is None:
+        factor = 1000.0 if raw.units == "m" and not keep_units else 1.0
+    return ImportedMesh(vertices @ rotation.T * factor, faces, part_names, vertex_part, raw.texture, factor,
+                        up.upper() if up[0] in "+-" else "+" + up.upper(), raw.notes)
+
+
+def up_rotation(up: str) -> np.ndarray:
+    """The rotation (3×3) taking a file's ``up`` direction to +Y, the model's up.
+
+    >>> up_rotation("+Z") @ [0, 0, 1]
+    array([0., 1., 0.])
+    """
+    text = str(up).strip().upper()
+    text = text if text[:1] in ("+", "-") else "+" + text
+    if text not in _UP_ROTATIONS:
+        raise MeshImportError(f"up must be one of {', '.join(_UP_ROTATIONS)}, not {up!r}")
+    return np.array(_UP_ROTATIONS[text], dtype=float)
+
+
+_UP_ROTATIONS = {
+    "+Y": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],
+    "-Y": [[1, 0, 0], [0, -1, 0], [0, 0, -1]],     # half a turn about X
+    "+Z": [[1, 0, 0], [0, 0, 1], [0, -1, 0]],      # a quarter turn about X: +Z → +Y, −Y → +Z
+    "-Z": [[1, 0, 0], [0, 0, -1], [0, 1, 0]],
+    "+X": [[0, -1, 0], [1, 0, 0], [0, 0, 1]],      # a quarter turn about Z
+    "-X": [[0, 1, 0], [-1, 0, 0], [0, 0, 1]],
+}
+
+
+def _read_raw(path: Path, timeout: float | None) -> RawMesh:
+    """The reader for the file's format: our own for OBJ, PLY and glTF, VTK's in a child otherwise."""
     if not path.exists():
         raise MeshImportError("no such file", file=path)
     if path.is_dir():
         raise MeshImportError("is a folder, not a mesh file", file=path)
-    if path.suffix.lower() == ".obj":
-        vertices, faces, part_names, face_part = _read_obj(path)
-    else:
-        vertices, faces, part_names, face_part = _read_with_pyvista(path)
-    if len(faces) == 0:
-        raise MeshImportError("holds no polygons (points and lines alone are not a surface)", file=path)
-    vertices, faces, vertex_part, part_names = _compact(vertices, faces, face_part, part_names)
-    if not np.all(np.isfinite(vertices)):
-        raise MeshImportError("has vertex coordinates that are not finite numbers", file=path)
     try:
-        return Model(vertices * factor, faces, part_names, vertex_part,
-                     name=name or path.stem, description=f"imported from {path.name}")
-    except UserError as exc:
-        raise MeshImportError(exc.message, file=path) from None
+        with path.open("rb") as stream:
+            head = stream.read(len(LFS_POINTER))
+    except OSError as exc:
+        raise MeshImportError(f"cannot read file: {exc.strerror or exc}", file=path) from None
+    if head == LFS_POINTER:
+        raise MeshImportError("is a Git LFS pointer, not the mesh itself (fetch it with 'git lfs pull')", file=path)
+    suffix = path.suffix.lower()
+    if suffix == ".obj":
+        return read_obj(path)
+    if suffix == ".ply":
+        return read_ply(path)
+    if suffix in (".gltf", ".glb"):
+        return read_gltf_mesh(path)
+    return read_in_child(path, timeout)
 
 
 def _check_scale(scale: float | None) -> float:
@@ -105,167 +172,6 @@ def _check_scale(scale: float | None) -> float:
     if not np.isfinite(factor) or factor <= 0:
         raise MeshImportError(f"scale must be a positive number, not {scale!r}")
     return factor
-
-
-def _read_obj(path: Path) -> _MeshArrays:
-    """Wavefront OBJ: ``v`` and ``f`` records, ``g``/``o`` as parts; everything else ignored."""
-    try:
-        text = path.read_bytes().decode("utf-8", errors="replace")
-    except OSError as exc:
-        raise MeshImportError(f"cannot read file: {exc.strerror or exc}", file=path) from None
-    vertices: list[list[float]] = []
-    cells: list[int] = []
-    face_part: list[int] = []
-    part_names: list[str] = []
-    part_index: dict[str, int] = {}
-    group = object_name = None
-    current = -1
-    pending, pending_line = "", 0
-    for at, raw in enumerate(text.splitlines(), start=1):
-        if raw.endswith("\\"):  # a record continued on the next line
-            pending, pending_line = pending + raw[:-1] + " ", pending_line or at
-            continue
-        lineno = pending_line or at
-        tokens = (pending + raw).split("#", 1)[0].split()
-        pending, pending_line = "", 0
-        if not tokens:
-            continue
-        key = tokens[0]
-        if key == "v":
-            try:
-                vertices.append([float(t) for t in tokens[1:4]])
-            except ValueError:
-                raise MeshImportError("a vertex coordinate is not a number", file=path, line=lineno) from None
-            if len(vertices[-1]) != 3:
-                raise MeshImportError("a vertex needs three coordinates", file=path, line=lineno)
-        elif key == "f":
-            if len(tokens) < 4:
-                raise MeshImportError("a face needs at least 3 vertices", file=path, line=lineno)
-            n = len(vertices)
-            cells.append(len(tokens) - 1)
-            for token in tokens[1:]:
-                try:
-                    i = int(token.split("/", 1)[0])
-                except ValueError:
-                    raise MeshImportError(f"face vertex '{token}' is not an index", file=path,
-                                          line=lineno) from None
-                i = i - 1 if i > 0 else n + i
-                if not 0 <= i < n:
-                    raise MeshImportError(f"face vertex '{token}' names a vertex that is not defined yet",
-                                          file=path, line=lineno)
-                cells.append(i)
-            if current < 0:
-                current = _part_slot(group or object_name or _DEFAULT_PART, part_names, part_index)
-            face_part.append(current)
-        elif key in ("g", "o"):
-            label = "_".join(tokens[1:]) or None
-            if key == "g":
-                group = label
-            else:
-                object_name, group = label, None
-            current = -1
-    return (np.array(vertices, dtype=float).reshape(-1, 3), np.array(cells, dtype=np.int64),
-            part_names, np.array(face_part, dtype=np.int64))
-
-
-def _part_slot(label: str, names: list[str], index: dict[str, int]) -> int:
-    if label not in index:
-        index[label] = len(names)
-        names.append(label)
-    return index[label]
-
-
-def _read_with_pyvista(path: Path) -> _MeshArrays:
-    import pyvista as pv
-    from vtkmodules.vtkCommonCore import vtkObject
-
-    # VTK readers report damaged files through VTK's log, Python's logging and
-    # warnings at once; silence all three and report one error of our own.
-    shown = vtkObject.GetGlobalWarningDisplay()
-    try:
-        quiet_log = pv.vtk_verbosity("off") if hasattr(pv, "vtk_verbosity") else contextlib.nullcontext()
-        with warnings.catch_warnings(), quiet_log:
-            warnings.simplefilter("ignore")
-            vtkObject.GlobalWarningDisplayOff()
-            data = pv.read(str(path))
-    except Exception as exc:  # VTK readers raise assorted errors on damaged or unknown files
-        text = str(exc).lower()
-        if "automatically read" in text or "not supported" in text or "extension" in text:
-            raise MeshImportError(f"unknown mesh format '{path.suffix or path.name}' "
-                                  "(try .obj, .ply, .stl, .vtk, .vtp, .gltf or .glb)", file=path) from None
-        raise MeshImportError("cannot read as a mesh: the file is empty, damaged or not in the format "
-                              "its extension says", file=path) from None
-    finally:
-        vtkObject.SetGlobalWarningDisplay(shown)
-
-    pieces = list(_leaf_datasets(data, None))
-    if not pieces:
-        raise MeshImportError("holds no mesh (the file is empty, damaged or not a mesh)", file=path)
-    vertex_blocks: list[np.ndarray] = []
-    cell_blocks: list[np.ndarray] = []
-    part_names: list[str] = []
-    face_part: list[np.ndarray] = []
-    part_index: dict[str, int] = {}
-    offset = 0
-    for label, ds in pieces:
-        if isinstance(ds, (pv.ImageData, pv.RectilinearGrid)):
-            raise MeshImportError(f"holds an image or grid ({type(ds).__name__}), not a polygon surface",
-                                  file=path)
-        surface = ds if isinstance(ds, pv.PolyData) else _boundary_surface(ds)
-        if surface.n_points == 0:
-            continue
-        cells = _polys_and_strips(surface)
-        if len(cells) == 0:
-            continue
-        counts = cell_sizes(cells)
-        shifted = cells.copy()
-        shifted[index_mask(cells, counts)] += offset
-        slot = _part_slot(label if len(pieces) > 1 else _DEFAULT_PART, part_names, part_index)
-        vertex_blocks.append(np.asarray(surface.points, dtype=float))
-        cell_blocks.append(shifted)
-        face_part.append(np.full(len(counts), slot, dtype=np.int64))
-        offset += surface.n_points
-    if not cell_blocks:
-        return np.zeros((0, 3)), np.zeros(0, dtype=np.int64), [], np.zeros(0, dtype=np.int64)
-    return (np.concatenate(vertex_blocks), np.concatenate(cell_blocks), part_names,
-            np.concatenate(face_part))
-
-
-def _leaf_datasets(data: pv.DataObject | None, label: str | None) -> Iterator[tuple[str, pv.DataObject]]:
-    """(name, dataset) for every non-empty dataset in a possibly nested MultiBlock."""
-    import pyvista as pv
-
-    if data is None:
-        return
-    if isinstance(data, pv.MultiBlock):
-        for key, block in zip(data.keys(), data, strict=True):
-            yield from _leaf_datasets(block, key or label)
-    elif data.n_points:
-        yield (label or _DEFAULT_PART), data
-
-
-def _boundary_surface(ds: pv.DataObject) -> pv.PolyData:
-    """The outer surface of a volume mesh or grid, as PolyData (VTK's filter, stable across pyvista versions)."""
-    import pyvista as pv
-    from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter
-
-    surface = vtkDataSetSurfaceFilter()
-    surface.SetInputData(ds)
-    surface.Update()
-    return pv.wrap(surface.GetOutput())
-
-
-def _polys_and_strips(ds: pv.PolyData) -> np.ndarray:
-    """The polygons of a PolyData as a flat cell array, triangle strips split into triangles."""
-    polys = np.asarray(ds.faces, dtype=np.int64) if ds.GetNumberOfPolys() else np.zeros(0, dtype=np.int64)
-    if not ds.GetNumberOfStrips():
-        return polys
-    tris = []
-    for strip in split_cells(np.asarray(ds.strips, dtype=np.int64)):
-        for j in range(len(strip) - 2):
-            a, b, c = strip[j], strip[j + 1], strip[j + 2]
-            tris.append((3, a, b, c) if j % 2 == 0 else (3, b, a, c))
-    return np.concatenate([polys, np.array(tris, dtype=np.int64).reshape(-1)])
 
 
 def _compact(vertices: np.ndarray, faces: np.ndarray, face_part: np.ndarray,

@@ -1,0 +1,199 @@
+"""Wavefront OBJ (and its MTL materials) read by our own code, keeping the file's vertex order.
+
+VTK's OBJ reader splits vertices at texture seams, which would break the
+vertex order the file defines; this reader keeps one vertex per ``v`` record
+and the texture coordinates per polygon corner (``f v/vt/vn``). Groups
+(``g``, or ``o`` where there are no groups) become parts; ``usemtl`` gives
+each polygon its material and ``mtllib`` files beside the OBJ give each
+material its colour image (``map_Kd``, options such as ``-s 1 1 1`` skipped).
+
+>>> import tempfile, pathlib
+>>> folder = pathlib.Path(tempfile.mkdtemp())
+>>> _ = (folder / "skin.mtl").write_text("newmtl skin\\nmap_Kd -s 1 1 1 photo.png\\n")
+>>> _ = (folder / "tri.obj").write_text("mtllib skin.mtl\\nv 0 0 0\\nv 1 0 0\\nv 0 1 0\\n"
+...                                     "vt 0 0\\nvt 1 0\\nvt 0 1\\nusemtl skin\\nf 1/1 2/2 3/3\\n")
+>>> mesh = read_obj(folder / "tri.obj")
+>>> mesh.texture.corner_uv.tolist(), pathlib.Path(mesh.texture.images()[0]).name
+([[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]], 'photo.png')
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from engine.errors import MeshImportError
+from engine.formats.mesh_data import MeshMaterial, MeshTexture, RawMesh
+
+_DEFAULT_PART = "surface"
+#: map_Kd options and how many values follow each
+_MAP_OPTIONS = {"-blendu": 1, "-blendv": 1, "-bm": 1, "-boost": 1, "-cc": 1, "-clamp": 1, "-imfchan": 1,
+                "-mm": 2, "-o": 3, "-s": 3, "-t": 3, "-texres": 1, "-type": 1}
+
+
+def read_obj(path: Path) -> RawMesh:
+    """``v``, ``vt`` and ``f`` records, ``g``/``o`` as parts, ``usemtl``/``mtllib`` materials;
+    everything else ignored. :class:`MeshImportError` names the file and line of a mistake."""
+    try:
+        text = path.read_bytes().decode("utf-8", errors="replace")
+    except OSError as exc:
+        raise MeshImportError(f"cannot read file: {exc.strerror or exc}", file=path) from None
+    reader = _ObjReader(path)
+    pending, pending_line = "", 0
+    for at, raw in enumerate(text.splitlines(), start=1):
+        if raw.endswith("\\"):  # a record continued on the next line
+            pending, pending_line = pending + raw[:-1] + " ", pending_line or at
+            continue
+        lineno = pending_line or at
+        tokens = (pending + raw).split("#", 1)[0].split()
+        pending, pending_line = "", 0
+        if tokens:
+            reader.record(tokens, lineno)
+    return reader.result()
+
+
+class _ObjReader:
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self.vertices: list[list[float]] = []
+        self.uvs: list[list[float]] = []
+        self.cells: list[int] = []
+        self.corner_uv: list[tuple[float, float]] = []
+        self.face_part: list[int] = []
+        self.face_material: list[int] = []
+        self.part_names: list[str] = []
+        self.part_index: dict[str, int] = {}
+        self.materials: list[MeshMaterial] = []
+        self.material_index: dict[str, int] = {}
+        self.libraries: list[str] = []
+        self.group: str | None = None
+        self.object_name: str | None = None
+        self.current_part = -1
+        self.current_material = -1
+
+    def fail(self, what: str, line: int) -> MeshImportError:
+        return MeshImportError(what, file=self.path, line=line)
+
+    def record(self, tokens: list[str], line: int) -> None:
+        key = tokens[0]
+        if key == "v":
+            try:
+                self.vertices.append([float(t) for t in tokens[1:4]])
+            except ValueError:
+                raise self.fail("a vertex coordinate is not a number", line) from None
+            if len(self.vertices[-1]) != 3:
+                raise self.fail("a vertex needs three coordinates", line)
+        elif key == "vt":
+            try:
+                uv = [float(t) for t in tokens[1:3]]
+            except ValueError:
+                raise self.fail("a texture coordinate is not a number", line) from None
+            self.uvs.append(uv + [0.0] * (2 - len(uv)) if uv else [np.nan, np.nan])
+        elif key == "f":
+            self.face(tokens[1:], line)
+        elif key in ("g", "o"):
+            label = "_".join(tokens[1:]) or None
+            if key == "g":
+                self.group = label
+            else:
+                self.object_name, self.group = label, None
+            self.current_part = -1
+        elif key == "usemtl":
+            name = " ".join(tokens[1:])
+            self.current_material = _slot(name, self.materials, self.material_index)
+        elif key == "mtllib":
+            self.libraries.append(" ".join(tokens[1:]))
+
+    def face(self, corners: list[str], line: int) -> None:
+        if len(corners) < 3:
+            raise self.fail("a face needs at least 3 vertices", line)
+        self.cells.append(len(corners))
+        for token in corners:
+            fields = token.split("/")
+            self.cells.append(self.index(fields[0], len(self.vertices), token, "vertex", line))
+            if len(fields) > 1 and fields[1]:
+                k = self.index(fields[1], len(self.uvs), token, "texture coordinate", line)
+                self.corner_uv.append((self.uvs[k][0], self.uvs[k][1]))
+            else:
+                self.corner_uv.append((np.nan, np.nan))
+        if self.current_part < 0:
+            label = self.group or self.object_name or _DEFAULT_PART
+            if label not in self.part_index:
+                self.part_index[label] = len(self.part_names)
+                self.part_names.append(label)
+            self.current_part = self.part_index[label]
+        self.face_part.append(self.current_part)
+        self.face_material.append(self.current_material)
+
+    def index(self, text: str, n: int, token: str, what: str, line: int) -> int:
+        try:
+            i = int(text)
+        except ValueError:
+            raise self.fail(f"face vertex '{token}' is not an index", line) from None
+        i = i - 1 if i > 0 else n + i
+        if not 0 <= i < n:
+            raise self.fail(f"face vertex '{token}' names a {what} that is not defined yet", line)
+        return i
+
+    def result(self) -> RawMesh:
+        texture = None
+        corner_uv = np.array(self.corner_uv, dtype=float).reshape(-1, 2)
+        if self.materials:
+            images = _material_images(self.path, self.libraries)
+            for material in self.materials:
+                material.image = images.get(material.name)
+        if (len(corner_uv) and not np.all(np.isnan(corner_uv))) or self.materials:
+            texture = MeshTexture(corner_uv, self.materials, np.array(self.face_material, dtype=np.int64))
+        return RawMesh(np.array(self.vertices, dtype=float).reshape(-1, 3), np.array(self.cells, dtype=np.int64),
+                       self.part_names, np.array(self.face_part, dtype=np.int64), texture)
+
+
+def _slot(name: str, materials: list[MeshMaterial], index: dict[str, int]) -> int:
+    if name not in index:
+        index[name] = len(materials)
+        materials.append(MeshMaterial(name))
+    return index[name]
+
+
+def _material_images(obj_path: Path, libraries: list[str]) -> dict[str, str]:
+    """Material name → colour image path (``map_Kd``) from the MTL files that exist; a missing or
+    unreadable MTL file leaves its materials without images (the mesh itself is still fine)."""
+    images: dict[str, str] = {}
+    for library in libraries:
+        mtl = obj_path.parent / library
+        try:
+            text = mtl.read_bytes()[:10_000_000].decode("utf-8", errors="replace")
+        except OSError:
+            continue
+        current = None
+        for raw in text.splitlines():
+            tokens = raw.split("#", 1)[0].split()
+            if not tokens:
+                continue
+            if tokens[0] == "newmtl":
+                current = " ".join(tokens[1:])
+            elif tokens[0].lower() == "map_kd" and current is not None and current not in images:
+                name = _map_file_name(tokens[1:])
+                if name:
+                    images[current] = str(mtl.parent / name.replace("\\", "/"))
+    return images
+
+
+def _map_file_name(tokens: list[str]) -> str:
+    k = 0
+    while k < len(tokens) - 1 and tokens[k] in _MAP_OPTIONS:
+        most = _MAP_OPTIONS[tokens[k]]
+        k += 2                              # the option and its first value
+        for _ in range(most - 1):           # -o/-s/-t/-mm take further numbers, which may be left out
+            if k < len(tokens) - 1 and _is_number(tokens[k]):
+                k += 1
+    return " ".join(tokens[k:])
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
