@@ -13,6 +13,7 @@ function that adds its sub-parser and sets ``run``; :data:`STEPS` lists them.
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -48,6 +49,9 @@ def add_import(steps: Any) -> None:
     p.add_argument("--reference-frame", type=_reference_frame, default="first", metavar="first|mean|N",
                    help="align to the first frame with every reference marker (default), their mean shape, "
                         "or frame N (0-based)")
+    p.add_argument("--up", default="auto", metavar="auto|X|Y|Z|-X|-Y|-Z",
+                   help="the file's up axis; the markers are turned to the toolkit's +Y up, +Z facing "
+                        "(default auto: found from the MPEG-4-named markers, else kept)")
     labels = p.add_mutually_exclusive_group()
     labels.add_argument("--labels", default=None, metavar="TEXTGRID|LABELS",
                         help="phone labels: a Praat TextGrid, a 'start end label' file (seconds) or a phones CSV")
@@ -145,7 +149,7 @@ def run_import(args: argparse.Namespace) -> int:
     session = import_marker_file(args.file, format=args.format, mapping=args.mapping, max_gap_ms=args.max_gap,
                                  reference=args.reference, reference_frame=args.reference_frame,
                                  labels=args.labels, tier=args.tier, text=args.text, voice=args.voice,
-                                 stretch_text=args.stretch_text, csv_layout=layout)
+                                 stretch_text=args.stretch_text, csv_layout=layout, up=args.up)
     save_session(session, out)
     print(format_report(session))
     print(f"wrote {out}")
@@ -203,6 +207,8 @@ def run_apply(args: argparse.Namespace) -> int:
                                  parent=None if args.parent == "none" else args.parent,
                                  value_range=args.value_range, inner_mm=args.inner, outer_mm=args.outer)
     print(applied.report())
+    for warning in applied.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
     if args.held_out:
         session = load_session(args.held_out)
         frames = np.arange(session.n_frames)

@@ -102,6 +102,8 @@ class AppliedArticulation:
     parent: str | None
     marker_displacements: np.ndarray = field(default_factory=lambda: np.zeros((0, 0, 3)))
     """(C, used markers, 3) model-space displacement of the marker vertices for value 1, mm."""
+    warnings: list[str] = field(default_factory=list)
+    """What looks wrong and should be checked (a rest pose far outside the value range)."""
 
     def to_model(self, positions: npt.ArrayLike) -> np.ndarray:
         """Marker-space positions (…, 3) → model space, mm."""
@@ -121,6 +123,7 @@ class AppliedArticulation:
                      + ", ".join(f"{v:+.2f}" for v in self.rest_values))
         lines.append(f"influence region: {len(self.region)} vertices, {int(np.sum(self.weights >= 1))} "
                      f"with weight 1")
+        lines += [f"warning: {w}" for w in self.warnings]
         return "\n".join(lines) + "\n"
 
 
@@ -252,7 +255,25 @@ def apply_articulation(model: Model, art: Articulation, *, names: str | Sequence
             model.remove_parameter(name)
         raise
     return AppliedArticulation(chosen, used, ignored, scale, rotation, translation, rest_values, rms,
-                               region, weights, parent_name, marker_disp)
+                               region, weights, parent_name, marker_disp,
+                               rest_pose_warnings(chosen, rest_values, (lo, hi)))
+
+
+def rest_pose_warnings(names: Sequence[str], rest_values: np.ndarray, value_range: tuple[float, float]) -> list[str]:
+    """Warnings for components whose rest value lies outside ``value_range`` (SD).
+
+    The recording's mean shape should be near the model's rest shape; a rest
+    pose many standard deviations out means the markers and the model do
+    not match (wrong mapping, units or axes, or a take that never rests).
+
+    >>> rest_pose_warnings(["pca1", "pca2"], np.array([19.2, 0.4]), (-3.0, 3.0))  # doctest: +ELLIPSIS
+    ["the model's rest pose is at +19.2 SD on pca1, outside the range -3..+3: ..."]
+    """
+    lo, hi = value_range
+    return [f"the model's rest pose is at {v:+.1f} SD on {name}, outside the range {lo:g}..{hi:+g}: the "
+            "recording's mean mouth shape is far from the model's rest shape — check the marker mapping, "
+            "the units and the up axis (mocap import --up), and that the take has frames at rest"
+            for name, v in zip(names, rest_values, strict=True) if not lo <= v <= hi]
 
 
 def _parent(model: Model, markers: list[str], vertices: np.ndarray) -> str | None:

@@ -1,79 +1,191 @@
-"""C3D marker files, through the PyPI reader ``c3d`` (pure Python, numpy only).
+"""C3D marker files, read by our own parser (:mod:`engine.mocap.c3d_parameters`) and one numpy pass.
 
-The reader parses the header and parameter section (labels ``POINT:LABELS``
-and ``LABELS2``…, rate ``POINT:RATE``, scale ``POINT:SCALE``, units
-``POINT:UNITS``); for Intel-format files the point data are then read in one
-numpy pass instead of frame by frame (an hour at 60 fps reads in about a
-second instead of ten). Other processor formats (DEC, MIPS) go through the
-reader's own frame iterator. A sample is missing when its residual word is
-negative, a coordinate is not finite, or it is exactly ``(0, 0, 0)``.
+Labels come from ``POINT:LABELS`` (and ``LABELS2``…), the rate from
+``POINT:RATE``, the scale from ``POINT:SCALE`` (negative: float data), the
+unit from ``POINT:UNITS`` (one string, or one per marker; NUL padding
+ignored), each falling back on the header. The frame count is the one the
+header, ``POINT:FRAMES`` and ``TRIAL:ACTUAL_START/END_FIELD`` agree on with
+the file's size (docs/capture-files.md says how disagreements are settled).
+
+A sample is missing when its fourth word (camera mask and residual) is
+negative — for float data, when the stored float is negative, whatever its
+size (some writers put +1.7e38 there for valid samples) — when a coordinate
+is not finite, or when it is exactly ``(0, 0, 0)``.
+
+>>> rec = read_c3d("take1.c3d")           # doctest: +SKIP
+>>> rec.positions.shape, rec.rate_hz      # doctest: +SKIP
+((600, 32, 3), 60.0)
 """
 
 from __future__ import annotations
 
-import warnings
 from pathlib import Path
-from typing import TYPE_CHECKING, BinaryIO
 
 import numpy as np
 
+from engine.mocap.c3d_parameters import C3dHeader, C3dParameters, decode_floats, int_order, read_parameters
 from engine.mocap.errors import MarkerFileError
 from engine.mocap.recording import Recording, unit_scale, zero_triplets_to_nan
 
-if TYPE_CHECKING:
-    import c3d
+MAX_FILE_BYTES = 4 << 30
+"""Larger files are refused rather than read into memory whole (4 GiB: about 10 hours of 100 markers at 100 Hz)."""
 
 
 def read_c3d(path: str | Path) -> Recording:
     """Read the 3D points of a C3D file; positions in mm, invalid samples as NaN."""
     path = Path(path)
-    try:
-        import c3d
-    except ImportError:
-        raise MarkerFileError("reading C3D needs the Python package 'c3d' (pip install c3d)", file=path) from None
-    with open(path, "rb") as fh:
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")  # the reader warns about missing analog data and the like
-                reader = c3d.Reader(fh)
-                labels = _labels(reader)
-                rate = float(reader.point_rate)
-                n_points = int(reader.point_used)
-                n_frames = int(reader.frame_count)
-                units_param = reader.get("POINT:UNITS")
-                units = units_param.string_value.strip() if units_param is not None else "mm"
-        except MarkerFileError:
-            raise
-        except Exception as exc:  # the reader raises whatever its parsing hits: report, don't crash
-            raise MarkerFileError(f"not a readable C3D file ({_describe(exc)})", file=path) from None
-        if not (np.isfinite(rate) and rate > 0):
-            raise MarkerFileError(f"POINT:RATE is {rate}: not a frame rate", file=path)
-        if len(labels) < n_points:
-            labels += [f"point{k + 1}" for k in range(len(labels), n_points)]
-        labels = labels[:n_points]
-        labels = _unique(labels)
-        mm = unit_scale(units or "mm", path)
-        if reader.proc_type in ("INTEL", "MIPS"):  # IEEE floats, little- or big-endian
-            xyz, valid = _read_points(fh, reader, n_frames, n_points, path)
-        else:
-            xyz, valid = _read_points_slowly(reader, n_frames, n_points, path)
-    xyz = xyz.astype(float) * mm
+    data = _read_bytes(path)
+    header, params = read_parameters(data, path)
+    notes = list(params.notes)
+    rate = _rate(header, params, path)
+    n_points = _point_count(header, params, notes)
+    labels = _unique(_labels(params, n_points))
+    if n_points == 0:
+        analog = params.number("ANALOG:USED") or 0
+        raise MarkerFileError("the file holds no 3D marker points (POINT:USED is 0)"
+                              + (f"; it holds {int(analog)} analog channels only, which are not marker data"
+                                 if analog else ""), file=path)
+    scales = _unit_scales(params, n_points, path)
+    scale = params.number("POINT:SCALE")
+    scale = header.scale if scale is None or scale == 0 else scale
+    is_float = scale < 0
+    word = 4 if is_float else 2
+    analog_words = _analog_words(header, params, rate)
+    data_block = params.number("POINT:DATA_START") or header.data_block
+    start = (int(data_block) - 1) * 512
+    if not 512 <= start <= len(data):
+        raise MarkerFileError(f"the point data are said to start in block {int(data_block)}, outside the file",
+                              file=path)
+    frame_bytes = (4 * n_points + analog_words) * word
+    available = (len(data) - start) // frame_bytes
+    n_frames = _frame_count(header, params, available, notes, path)
+    frames = np.frombuffer(data, dtype=np.uint8, count=n_frames * frame_bytes, offset=start)
+    frames = frames.reshape(n_frames, frame_bytes)[:, :4 * n_points * word]
+    if is_float:
+        words = decode_floats(frames.tobytes(), params.processor).reshape(n_frames, n_points, 4)
+        xyz = words[..., :3].astype(np.float64)
+        valid = ~(words[..., 3] < 0)  # NaN or +1.7e38 is not "negative": the sample is valid
+    else:
+        ints = frames.copy().view(int_order(params.processor) + "i2").reshape(n_frames, n_points, 4)
+        xyz = ints[..., :3].astype(np.float64) * abs(scale)
+        valid = ints[..., 3] >= 0
+    valid &= np.all(np.isfinite(xyz), axis=-1)
+    xyz *= scales[None, :, None]
     xyz[~valid] = np.nan
     positions = zero_triplets_to_nan(xyz)
+    if n_frames and not np.isfinite(positions).any():
+        raise MarkerFileError(f"every sample of all {n_points} points in {n_frames} frames is marked missing "
+                              "(negative residual, not finite or 0 0 0): nothing to import", file=path)
+    first = _first_frame(header, params)
+    units = sorted(set(_unit_texts(params, n_points)))
     return Recording(labels=labels, positions=positions, rate_hz=rate, source=path.name, format="c3d",
-                     units=units or "mm", start_ms=1000.0 * (int(reader.first_frame) - 1) / rate)
+                     units="/".join(units) or "mm", start_ms=1000.0 * (first - 1) / rate, notes=notes)
 
 
-def _labels(reader: c3d.Reader) -> list[str]:
+def _read_bytes(path: Path) -> bytes:
+    try:
+        size = path.stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise MarkerFileError(f"the file is {size / 2**30:.1f} GiB, more than the "
+                                  f"{MAX_FILE_BYTES / 2**30:.0f} GiB read here", file=path)
+        return path.read_bytes()
+    except OSError as exc:
+        raise MarkerFileError(f"cannot read: {exc.strerror or exc}", file=path) from None
+
+
+def _rate(header: C3dHeader, params: C3dParameters, path: Path) -> float:
+    rate = params.number("POINT:RATE")
+    if rate is None or not (np.isfinite(rate) and rate > 0):
+        rate = header.rate
+    if not (np.isfinite(rate) and 0 < rate < 1e7):
+        raise MarkerFileError(f"POINT:RATE is {rate:g}: not a frame rate", file=path)
+    return float(rate)
+
+
+def _point_count(header: C3dHeader, params: C3dParameters, notes: list[str]) -> int:
+    used = params.get("POINT:USED")
+    if used is None or used.kind not in (1, 2, 4):
+        return header.point_count
+    count = int(used.unsigned_words()[0]) if used.numbers().size else header.point_count
+    if count != header.point_count:
+        notes.append(f"POINT:USED says {count} points, the header {header.point_count}; POINT:USED used")
+    return count
+
+
+def _analog_words(header: C3dHeader, params: C3dParameters, point_rate: float) -> int:
+    """Analog samples stored after each frame's points: ANALOG:USED × (ANALOG:RATE / POINT:RATE), else the header's."""
+    used, rate = params.number("ANALOG:USED"), params.number("ANALOG:RATE")
+    if used is None or rate is None or not np.isfinite(rate) or rate <= 0:
+        return header.analog_per_frame
+    return int(used) * round(rate / point_rate)
+
+
+def _frame_count(header: C3dHeader, params: C3dParameters, available: int, notes: list[str], path: Path) -> int:
+    """The declared frame count that the file's data hold; one frame fewer than declared is read with a note."""
+    declared = []
+    start, end = params.get("TRIAL:ACTUAL_START_FIELD"), params.get("TRIAL:ACTUAL_END_FIELD")
+    if start is not None and end is not None and start.kind == end.kind == 2 and len(start.raw) >= 4 \
+            and len(end.raw) >= 4:
+        lo_hi = end.unsigned_words()[:2] - start.unsigned_words()[:2]
+        declared.append(int(lo_hi[0] + 65536 * lo_hi[1]) + 1)
+    if header.last_frame >= header.first_frame:
+        declared.append(header.last_frame - header.first_frame + 1)
+    frames = params.get("POINT:FRAMES")
+    if frames is not None and frames.numbers().size:
+        declared.append(int(frames.unsigned_words()[0]))
+    declared = [n for n in declared if n > 0]
+    if not declared:
+        raise MarkerFileError("the file declares no frames (the header's last frame is before its first)",
+                              file=path)
+    fitting = [n for n in declared if n <= available]
+    if fitting:
+        n = max(fitting)
+        if len(set(declared)) > 1:
+            notes.append(f"frame counts disagree ({', '.join(map(str, dict.fromkeys(declared)))}); "
+                         f"{n} frames read, as the data hold")
+        return n
+    wanted = min(declared)
+    if wanted - available == 1:
+        notes.append(f"the data end one frame early ({available} of {wanted} frames); {available} read")
+        return available
+    raise MarkerFileError(f"the data end after {available} of {wanted} frames (truncated?)", file=path)
+
+
+def _first_frame(header: C3dHeader, params: C3dParameters) -> int:
+    start = params.get("TRIAL:ACTUAL_START_FIELD")
+    if start is not None and start.kind == 2 and len(start.raw) >= 4:
+        lo, hi = start.unsigned_words()[:2]
+        return max(1, int(lo + 65536 * hi))
+    return max(1, header.first_frame)
+
+
+def _labels(params: C3dParameters, n_points: int) -> list[str]:
     labels: list[str] = []
     for key in ["POINT:LABELS"] + [f"POINT:LABELS{k}" for k in range(2, 100)]:
-        param = reader.get(key)
+        param = params.get(key)
         if param is None:
             if key != "POINT:LABELS":
                 break
             continue
-        labels += [str(s).strip() for s in np.atleast_1d(param.string_array).ravel()]
-    return labels
+        labels += param.strings()
+    labels += [f"point{k + 1}" for k in range(len(labels), n_points)]
+    return labels[:n_points]
+
+
+def _unit_texts(params: C3dParameters, n_points: int) -> list[str]:
+    param = params.get("POINT:UNITS")
+    texts = [t for t in param.strings() if t] if param is not None else []
+    return texts or ["mm"]
+
+
+def _unit_scales(params: C3dParameters, n_points: int, path: Path) -> np.ndarray:
+    """Millimetres per file unit for each point (POINT:UNITS may give one unit or one per point)."""
+    texts = _unit_texts(params, n_points)
+    if len(texts) == 1 or len(set(texts)) == 1:
+        return np.full(n_points, unit_scale(texts[0], path))
+    if len(texts) < n_points:
+        raise MarkerFileError(f"POINT:UNITS gives {len(texts)} different units for {n_points} points", file=path)
+    return np.array([unit_scale(t, path) for t in texts[:n_points]])
 
 
 def _unique(labels: list[str]) -> list[str]:
@@ -86,56 +198,3 @@ def _unique(labels: list[str]) -> list[str]:
         seen.add(name)
         out.append(name)
     return out
-
-
-def _read_points(fh: BinaryIO, reader: c3d.Reader, n_frames: int, n_points: int,
-                 path: Path) -> tuple[np.ndarray, np.ndarray]:
-    """All frames' point words in one read: (F, P, 3) coordinates (scaled) and (F, P) validity."""
-    is_float = reader.point_scale < 0
-    word = 4 if is_float else 2
-    order = ">" if reader.proc_type == "MIPS" else "<"
-    n_analog = int(reader.analog_used) * int(reader.analog_per_frame)
-    frame_bytes = 4 * n_points * word + n_analog * word
-    start = (int(reader.header.data_block) - 1) * 512
-    fh.seek(start)
-    data = fh.read(frame_bytes * n_frames)
-    complete = len(data) // frame_bytes if frame_bytes else n_frames
-    if complete < n_frames:
-        raise MarkerFileError(f"the data end after {complete} of {n_frames} frames (truncated?)", file=path)
-    if n_points == 0:
-        return np.zeros((n_frames, 0, 3)), np.zeros((n_frames, 0), bool)
-    frames = np.frombuffer(data, dtype=np.uint8).reshape(n_frames, frame_bytes)[:, :4 * n_points * word]
-    if is_float:
-        words = frames.copy().view(order + "f4").reshape(n_frames, n_points, 4)
-        xyz = words[..., :3].astype(np.float64)
-        # the fourth word is an integer (camera bits and residual) stored as a float; negative means invalid
-        valid = np.nan_to_num(words[..., 3], nan=-1.0, posinf=-1.0, neginf=-1.0).astype(np.int64) >= 0
-    else:
-        words = frames.copy().view(order + "i2").reshape(n_frames, n_points, 4)
-        xyz = words[..., :3].astype(np.float64) * abs(float(reader.point_scale))
-        valid = words[..., 3] >= 0
-    valid &= np.all(np.isfinite(xyz), axis=-1)
-    return xyz, valid
-
-
-def _read_points_slowly(reader: c3d.Reader, n_frames: int, n_points: int, path: Path) -> tuple[np.ndarray, np.ndarray]:
-    xyz = np.full((n_frames, n_points, 3), np.nan)
-    valid = np.zeros((n_frames, n_points), bool)
-    count = 0
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        for k, (_, points, _analog) in enumerate(reader.read_frames(copy=False, check_nan=True)):
-            if k >= n_frames:
-                break
-            xyz[k] = points[:, :3]
-            valid[k] = points[:, 3] >= 0
-            count = k + 1
-    if count < n_frames:
-        note = f" ({caught[0].message})" if caught else ""
-        raise MarkerFileError(f"the data end after {count} of {n_frames} frames (truncated?){note}", file=path)
-    return xyz, valid
-
-
-def _describe(exc: Exception) -> str:
-    text = " ".join(str(exc).split())
-    return f"{type(exc).__name__}: {text}" if text else type(exc).__name__

@@ -1,7 +1,8 @@
 """From a marker file to a :class:`~engine.mocap.session.Session` (what ``mocap import`` does).
 
 The steps, each its own engine function: read the file (:mod:`.readers`),
-name the markers (:mod:`.naming`), fill short gaps (:mod:`.gaps`), remove
+name the markers (:mod:`.naming`), turn them to the toolkit's axes
+(:mod:`.capture_axes`: +Y up, +Z facing), fill short gaps (:mod:`.gaps`), remove
 head motion (:mod:`.head_motion`), attach phone labels (:mod:`.labels`).
 :func:`build_session` does all but the reading, for arrays that come from
 elsewhere (a generator, another tool).
@@ -18,6 +19,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from engine.mocap.capture_axes import detect_axes
 from engine.mocap.errors import MocapError
 from engine.mocap.gaps import fill_gaps, max_gap_frames
 from engine.mocap.head_motion import MIN_REFERENCE, remove_head_motion
@@ -39,7 +41,7 @@ def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str |
                        reference_frame: str | int = "first", labels: str | Path | None = None,
                        tier: str | None = None, text: str | None = None, voice: str | None = None,
                        stretch_text: bool = False, csv_layout: CsvLayout | None = None,
-                       synthesizer: Synthesizer | None = None) -> Session:
+                       synthesizer: Synthesizer | None = None, up: str = "auto") -> Session:
     """Read a marker file and prepare it for analysis.
 
     ``mapping`` is a mapping file or a ``{label: id}`` dict; ``max_gap_ms``
@@ -47,7 +49,9 @@ def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str |
     session name (default :func:`~engine.mocap.naming.default_reference`;
     ``[]`` leaves head motion in); ``labels`` a TextGrid, label file or
     phones CSV, or ``text`` the spoken text for Festival's timings
-    (``stretch_text`` stretches them over the whole recording).
+    (``stretch_text`` stretches them over the whole recording); ``up`` the
+    file's up axis (``"Z"``, ``"-Y"`` …) or ``"auto"`` to find it from the
+    markers (:func:`~engine.mocap.capture_axes.detect_axes`).
     """
     recording = read_marker_file(path, format=format, csv_layout=csv_layout)
     if isinstance(mapping, (str, Path)):
@@ -66,7 +70,7 @@ def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str |
         phones = festival_phones(text, voice=voice, duration_ms=duration, synthesizer=synthesizer)
         phone_source = "Festival" + (" (stretched over the recording)" if stretch_text else "")
     session = build_session(recording, mapping=mapping, max_gap_ms=max_gap_ms, reference=reference,
-                            reference_frame=reference_frame, phones=phones)
+                            reference_frame=reference_frame, phones=phones, up=up)
     if phone_source:
         session.report["phones"] = {"source": phone_source, "count": len(phones)}
     return session
@@ -75,8 +79,12 @@ def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str |
 def build_session(recording: Recording, *, mapping: dict[str, str] | None = None,
                   max_gap_ms: float = DEFAULT_MAX_GAP_MS, reference: list[str] | None = None,
                   reference_frame: str | int = "first",
-                  phones: list[tuple[float, float, str]] | None = None) -> Session:
-    """Name, gap-fill and head-align a :class:`~engine.mocap.recording.Recording` (positions in mm)."""
+                  phones: list[tuple[float, float, str]] | None = None, up: str = "auto") -> Session:
+    """Name, turn to +Y up, gap-fill and head-align a :class:`~engine.mocap.recording.Recording` (positions in mm).
+
+    ``up`` is the file's up axis (``"Z"``, ``"-Y"`` …), or ``"auto"``: found
+    from the MPEG-4-named markers, kept as it is when they cannot tell.
+    """
     if not (np.isfinite(max_gap_ms) and max_gap_ms >= 0):
         raise MocapError(f"the longest gap to fill must be 0 ms or more, not {max_gap_ms}")
     names, naming = marker_names(recording.labels, mapping)
@@ -84,10 +92,13 @@ def build_session(recording: Recording, *, mapping: dict[str, str] | None = None
     keep = [k for k, _ in kept]
     markers = [n for _, n in kept]
     if not markers:
-        raise MocapError("no markers left to import (the mapping drops them all)")
+        raise MocapError(f"{recording.source}: the file has no markers" if not recording.labels
+                         else "no markers left to import (the mapping drops them all)")
     raw = np.asarray(recording.positions, dtype=float)
     if len(keep) < raw.shape[1]:
         raw = raw[:, keep]
+    axes = detect_axes(markers, raw, up=None if up == "auto" else up)
+    raw = axes.apply(raw)
     if raw.shape[0] == 0:
         raise MocapError(f"{recording.source}: the file has no frames")
     gap_frames = max_gap_frames(max_gap_ms, recording.rate_hz)
@@ -110,6 +121,9 @@ def build_session(recording: Recording, *, mapping: dict[str, str] | None = None
         "file_start_ms": recording.start_ms, "max_gap_ms": float(max_gap_ms), "max_gap_frames": gap_frames,
         "gaps": {markers[m]: r for m, r in gap_report.items()},
         "naming": naming, "events": [[name, t] for name, t in recording.events],
+        "file_notes": list(recording.notes),
+        "axes": {"up": axes.up, "facing": axes.facing, "source": axes.source, "rotation": axes.rotation.tolist(),
+                 "text": axes.describe()},
     }
     if reference:
         index = [markers.index(r) for r in reference]
@@ -142,6 +156,9 @@ def format_report(session: Session) -> str:
     fmt = str(r.get("format"))
     lines = [f"{session.source}: {FORMAT_NAMES.get(fmt, fmt)}, {session.n_frames} frames "
              f"at {session.rate_hz:g} Hz, {session.n_markers} markers (file units {r.get('units_in_file', 'mm')})"]
+    lines += [f"note: {note}" for note in r.get("file_notes", [])]
+    if r.get("axes"):
+        lines.append(r["axes"]["text"])
     naming = r.get("naming") or {}
     if naming.get("renamed"):
         lines.append("renamed: " + ", ".join(f"{a} → {b}" for a, b in naming["renamed"].items()))

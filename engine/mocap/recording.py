@@ -43,6 +43,7 @@ class Recording:
     units: str = "mm"
     start_ms: float = 0.0
     events: list[tuple[str, float]] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
 
     @property
     def n_frames(self) -> int:
@@ -51,7 +52,7 @@ class Recording:
 
 def unit_scale(unit: str, path: Path, line: int | None = None) -> float:
     """Millimetres per file unit for ``mm``, ``cm`` or ``m`` (any case)."""
-    scale = UNIT_SCALE.get(unit.strip().lower())
+    scale = UNIT_SCALE.get(unit.replace("\0", " ").strip().lower())
     if scale is None:
         raise MarkerFileError(f"unknown length unit '{unit.strip()}' (use mm, cm or m)", file=path, line=line)
     return scale

@@ -10,7 +10,10 @@
 
 DataRate, NumFrames, NumMarkers and Units (mm, cm or m) are required. A
 missing sample is empty cells (or NaN); a row may leave out the empty cells
-of missing markers at its end.
+of missing markers at its end, and may end in a tab (OpenSim's own example
+files do: the empty cells after the last column are ignored). Columns are
+separated by tabs; a comma-separated file is refused with a message that
+says so.
 """
 
 from __future__ import annotations
@@ -35,6 +38,10 @@ def read_trc(path: str | Path) -> Recording:
     if len(lines) < 5:
         raise MarkerFileError("the TRC header ends early: it needs the key line, the value line, the marker "
                               "names and the X1 Y1 Z1 line (truncated?)", file=path, line=len(lines))
+    if "\t" not in lines[1] and lines[1].count(",") >= 3:
+        raise MarkerFileError("the TRC header is separated by commas; TRC columns are separated by tabs "
+                              "(save it tab-separated, or read it as a CSV table with --format csv)",
+                              file=path, line=2)
     keys = _split(lines[1])
     values = _split(lines[2])
     if len(values) < len(keys):
@@ -63,12 +70,16 @@ def read_trc(path: str | Path) -> Recording:
         raise MarkerFileError(f"the X1 Y1 Z1 line has {len(axes)} coordinate names for {n_markers} markers",
                               file=path, line=5)
 
-    data = lines[5:]
-    tab = any("\t" in ln for ln in data[:5])
     n_columns = 2 + 3 * n_markers
+    data = _without_trailing_empty_cells(lines[5:], n_columns)
+    tab = any("\t" in ln for ln in data[:5])
     ends_with_newline = path.read_bytes()[-1:] in (b"\n", b"\r")
     table = parse_rows(data, 6, n_columns, path, delimiter="\t" if tab else None, empty_is_missing=True,
                        short_rows_at=3, last_line_complete=ends_with_newline)
+    notes = []
+    if len(table) == n_frames - 1 and n_frames > 1:
+        notes.append(f"the data end one frame early ({len(table)} of NumFrames {n_frames}); {len(table)} read")
+        n_frames = len(table)
     if len(table) != n_frames:
         last = len(lines)
         if len(table) < n_frames:
@@ -78,7 +89,19 @@ def read_trc(path: str | Path) -> Recording:
     positions = nan_partial_samples(table[:, 2:].reshape(n_frames, n_markers, 3) * scale)
     start_ms = 1000.0 * float(table[0, 1]) if n_frames and np.isfinite(table[0, 1]) else 0.0
     return Recording(labels=names, positions=positions, rate_hz=rate, source=path.name, format="trc",
-                     units=header["Units"].strip(), start_ms=start_ms)
+                     units=header["Units"].strip(), start_ms=start_ms, notes=notes)
+
+
+def _without_trailing_empty_cells(lines: list[str], n_columns: int) -> list[str]:
+    """Rows with empty tab-separated cells after the last column, as OpenSim writes them, cut to the columns."""
+    out = []
+    for line in lines:
+        cells = line.split("\t") if line.count("\t") >= n_columns else []
+        if cells and not any(c.strip() for c in cells[n_columns:]):
+            out.append("\t".join(cells[:n_columns]))
+        else:
+            out.append(line)
+    return out
 
 
 def _split(line: str) -> list[str]:

@@ -1,0 +1,347 @@
+"""Capture files as labs write them: real public sample files (tests/engine/data/capture, README there).
+
+Each class of failure seen on real files has a test here that fails on the reader as it was before
+(the pure-Python ``c3d`` package under our own code): TRC rows ending in a tab, comma-separated TRC,
+C3D units padded with NULs or given per marker, float residual words of +1.7e38, a group defined twice,
+header and parameters that disagree, a file one frame short, files with no 3D points, files whose every
+sample is invalid; and the axis conventions (Z-up files turned to the toolkit's Y-up).
+
+Where a bigger corpus is on disk (``AP_CAPTURE_CORPUS``: a folder of .c3d/.trc files, e.g. the
+ezc3d-testFiles and OpenSim examples), every file is read and compared with the reference reader
+``ezc3d`` when it is importable; docs/capture-files.md has the figures.
+"""
+
+from __future__ import annotations
+
+import os
+import struct
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from engine.cli import main
+from engine.mocap.capture_axes import detect_axes
+from engine.mocap.errors import MarkerFileError, MocapError
+from engine.mocap.importer import build_session, format_report, import_marker_file
+from engine.mocap.readers import read_marker_file
+from engine.mocap.recording import Recording
+
+DATA = Path(__file__).parent / "data" / "capture"
+CORPUS = os.environ.get("AP_CAPTURE_CORPUS")
+
+
+# -- helpers: find and patch one parameter of a real C3D file (an independent walk of the format) ----------
+
+def _parameter_records(data: bytes):
+    """(group name, name, offset of the record, offset of its data, data length) of every parameter."""
+    start = (data[0] - 1) * 512 + 4
+    groups, params, pos = {}, [], start
+    while True:
+        n = abs(struct.unpack("b", data[pos:pos + 1])[0])
+        gid = struct.unpack("b", data[pos + 1:pos + 2])[0]
+        if n == 0:
+            break
+        name = data[pos + 2:pos + 2 + n].decode("latin-1")
+        link = pos + 2 + n
+        offset = struct.unpack("<h", data[link:link + 2])[0]
+        if gid < 0:
+            groups[-gid] = (name, pos)
+        else:
+            kind = struct.unpack("b", data[link + 2:link + 3])[0]
+            n_dims = data[link + 3]
+            dims = data[link + 4:link + 4 + n_dims]
+            size = abs(kind) * int(np.prod(list(dims), dtype=int))
+            params.append((gid, name, pos, link + 4 + n_dims, size))
+        if offset == 0:
+            break
+        pos = link + offset
+    return {gid: name for gid, (name, _) in groups.items()}, groups, params
+
+
+def _patch_parameter(data: bytearray, group: str, name: str, raw: bytes) -> None:
+    names, _, params = _parameter_records(bytes(data))
+    for gid, pname, _, at, size in params:
+        if names[gid] == group and pname == name:
+            assert len(raw) == size, (group, name, size)
+            data[at:at + size] = raw
+            return
+    raise KeyError(f"{group}:{name}")
+
+
+def _read_parameter(data: bytes, group: str, name: str) -> bytes:
+    names, _, params = _parameter_records(data)
+    for gid, pname, _, at, size in params:
+        if names[gid] == group and pname == name:
+            return data[at:at + size]
+    raise KeyError(f"{group}:{name}")
+
+
+def _residual_offsets(data: bytes, n_frames: int, n_points: int, frame_bytes: int):
+    start = (struct.unpack("<H", data[16:18])[0] - 1) * 512
+    return [start + f * frame_bytes + p * 16 + 12 for f in range(n_frames) for p in range(n_points)]
+
+
+def _fp_type3() -> bytearray:
+    """FP_Type3.c3d: Intel, float data, 34 points, 2 frames, 250 Hz (Vicon Workstation)."""
+    return bytearray((DATA / "FP_Type3.c3d").read_bytes())
+
+
+def _fp_type3_frame_bytes(data: bytes) -> int:
+    analog = struct.unpack("<H", data[4:6])[0]
+    return (34 * 4 + analog) * 4
+
+
+# -- TRC -----------------------------------------------------------------------------------------------------
+
+def test_trc_rows_that_end_in_a_tab_read_as_opensim_writes_them():
+    rec = read_marker_file(DATA / "opensim-exampleFormat.trc")
+    assert rec.labels == ["marker1", "marker2", "marker3"] and rec.positions.shape == (5, 3, 3)
+    assert np.isnan(rec.positions[0, 0]).all()                                  # empty cells: missing
+    np.testing.assert_allclose(rec.positions[0, 1], [-152.0, 245.0, -1710.0])  # m → mm
+    assert np.isnan(rec.positions[2, 1]).all()                                  # "Nan nan NAN"
+
+
+@pytest.mark.parametrize(("name", "frames", "markers"), [
+    ("opensim-walk-CRLF.trc", 10, 41),
+    ("opensim-dataWithNaNsOfDifferentCases.trc", 5, 14),
+])
+def test_opensim_example_trc_files(name, frames, markers):
+    rec = read_marker_file(DATA / name)
+    assert rec.positions.shape == (frames, markers, 3)
+    assert np.isfinite(rec.positions).any()
+
+
+def test_a_trc_file_one_frame_shorter_than_its_header_reads_with_a_note():
+    rec = read_marker_file(DATA / "opensim-futureOrientationIK.trc")
+    assert rec.n_frames == 1202
+    assert any("one frame early" in note for note in rec.notes)
+
+
+def test_comma_separated_trc_is_refused_naming_the_delimiter(tmp_path):
+    text = (DATA / "opensim-exampleFormat.trc").read_text().replace("\t", ",")
+    path = tmp_path / "commas.trc"
+    path.write_text(text)
+    with pytest.raises(MarkerFileError, match=r"commas.trc:2: the TRC header is separated by commas") as info:
+        read_marker_file(path)
+    assert "lacks" not in str(info.value)
+
+
+# -- C3D: units, residuals, parameters -----------------------------------------------------------------------
+
+def test_c3d_units_padded_with_nul_bytes(tmp_path):
+    """Optotrak's per-marker POINT:UNITS (4 × 54 characters) made one unit, 'mm' and two NULs."""
+    path = _optotrak_complete(tmp_path)
+    data = bytearray(path.read_bytes())
+    names, _, params = _parameter_records(bytes(data))
+    at = next(a for gid, name, _, a, _ in params if names[gid] == "POINT" and name == "UNITS")
+    assert data[at - 2:at] == bytes([4, 54])
+    data[at - 1] = 1                               # dims (4, 1); the record's link still skips the rest
+    data[at:at + 4] = b"mm\0\0"
+    nul = tmp_path / "nul-units.c3d"
+    nul.write_bytes(bytes(data))
+    rec = read_marker_file(nul)
+    assert rec.units == "mm"
+    np.testing.assert_array_equal(rec.positions, read_marker_file(path).positions)
+
+
+def _optotrak_complete(tmp_path) -> Path:
+    """Optotrak.c3d says 1149 frames and holds 29 (a cut sample): the header and POINT:FRAMES set to 29."""
+    data = bytearray((DATA / "Optotrak.c3d").read_bytes())
+    data[8:10] = struct.pack("<H", 29)
+    _patch_parameter(data, "POINT", "FRAMES", struct.pack("<h", 29))
+    path = tmp_path / "optotrak-29.c3d"
+    path.write_bytes(bytes(data))
+    return path
+
+
+def test_c3d_units_given_per_marker(tmp_path):
+    rec = read_marker_file(_optotrak_complete(tmp_path))
+    assert rec.positions.shape == (29, 54, 3) and rec.units == "mm" and rec.rate_hz == 30.0
+    assert np.isfinite(rec.positions).any()
+
+
+def test_the_cut_optotrak_sample_is_refused_as_truncated():
+    with pytest.raises(MarkerFileError, match=r"Optotrak.c3d: the data end after 29 of 1149 frames"):
+        read_marker_file(DATA / "Optotrak.c3d")
+
+
+def test_float_residual_words_of_1_7e38_are_valid_samples(tmp_path):
+    data = _fp_type3()
+    frame_bytes = _fp_type3_frame_bytes(data)
+    for at in _residual_offsets(bytes(data), 2, 34, frame_bytes):
+        data[at:at + 4] = struct.pack("<f", 1.7e38)
+    path = tmp_path / "residual.c3d"
+    path.write_bytes(bytes(data))
+    expected = read_marker_file(DATA / "FP_Type3.c3d").positions
+    assert np.isfinite(expected).all()
+    np.testing.assert_array_equal(read_marker_file(path).positions, expected)
+
+
+def test_a_c3d_file_whose_every_sample_is_invalid_is_refused(tmp_path):
+    data = _fp_type3()
+    for at in _residual_offsets(bytes(data), 2, 34, _fp_type3_frame_bytes(data)):
+        data[at:at + 4] = struct.pack("<f", -1.0)
+    path = tmp_path / "all-invalid.c3d"
+    path.write_bytes(bytes(data))
+    with pytest.raises(MarkerFileError, match=r"all-invalid.c3d: every sample of all 34 points in 2 frames"):
+        read_marker_file(path)
+
+
+def test_a_group_defined_twice_reads(tmp_path):
+    """The SEG group's number made POINT's: two groups share a number, as some writers' files do."""
+    data = _fp_type3()
+    names, groups, params = _parameter_records(bytes(data))
+    point_id = next(g for g, n in names.items() if n == "POINT")
+    seg_id = next(g for g, n in names.items() if n == "SEG")
+    data[groups[seg_id][1] + 1] = struct.pack("b", -point_id)[0]
+    for gid, _, pos, _, _ in params:
+        if gid == seg_id:
+            data[pos + 1] = point_id
+    path = tmp_path / "twice.c3d"
+    path.write_bytes(bytes(data))
+    rec = read_marker_file(path)
+    np.testing.assert_array_equal(rec.positions, read_marker_file(DATA / "FP_Type3.c3d").positions)
+    assert any("defined twice" in note for note in rec.notes)
+
+
+def test_header_and_parameters_that_disagree(tmp_path):
+    """The header says 1 point and 1000 frames; POINT:USED (34) and POINT:FRAMES (2) fit the data."""
+    data = _fp_type3()
+    data[2:4] = struct.pack("<H", 1)
+    data[8:10] = struct.pack("<H", 1000)
+    path = tmp_path / "disagree.c3d"
+    path.write_bytes(bytes(data))
+    rec = read_marker_file(path)
+    np.testing.assert_array_equal(rec.positions, read_marker_file(DATA / "FP_Type3.c3d").positions)
+    assert any("POINT:USED says 34 points, the header 1" in note for note in rec.notes)
+
+
+def test_a_header_whose_first_frame_is_0():
+    """read_NOTworking2.c3d (DEC format): frames 0..669; the c3d package counted 671 and found the data short."""
+    rec = read_marker_file(DATA / "read_NOTworking2.c3d")
+    assert rec.positions.shape == (670, 23, 3) and rec.rate_hz == 25.0 and rec.notes == []
+
+
+def test_a_c3d_file_one_frame_shorter_than_its_header_reads_with_a_note(tmp_path):
+    data = (DATA / "read_NOTworking2.c3d").read_bytes()
+    path = tmp_path / "short.c3d"
+    path.write_bytes(data[:-23 * 4 * 2])
+    rec = read_marker_file(path)
+    assert rec.n_frames == 669
+    assert any("one frame early (669 of 670 frames)" in note for note in rec.notes)
+    np.testing.assert_array_equal(rec.positions, read_marker_file(DATA / "read_NOTworking2.c3d").positions[:669])
+    path.write_bytes(data[:-23 * 4 * 2 * 2])
+    with pytest.raises(MarkerFileError, match=r"short\.c3d: the data end after 668 of 670 frames"):
+        read_marker_file(path)
+
+
+def test_analog_only_c3d_says_so(tmp_path, capsys):
+    with pytest.raises(MarkerFileError, match=r"no 3D marker points .* 16 analog channels only"):
+        read_marker_file(DATA / "Kistler-parameters.c3d")
+    assert main(["mocap", "import", str(DATA / "Kistler-parameters.c3d"), "-o", str(tmp_path / "s.h5")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("error: ") and "Kistler-parameters.c3d" in err[0]
+    assert "mapping" not in err[0] and "buffer" not in err[0]
+
+
+def test_a_recording_without_markers_is_not_blamed_on_the_mapping():
+    empty = Recording([], np.zeros((3, 0, 3)), 60.0, "empty.trc", "trc")
+    with pytest.raises(MocapError, match=r"empty\.trc: the file has no markers"):
+        build_session(empty, reference=[])
+
+
+# -- the reference reader ------------------------------------------------------------------------------------
+
+def _ezc3d_positions(path: Path) -> np.ndarray:
+    ezc3d = pytest.importorskip("ezc3d")
+    c = ezc3d.c3d(str(path))
+    units = c["parameters"]["POINT"].get("UNITS", {}).get("value", ["mm"]) or ["mm"]
+    scale = {"m": 1000.0, "cm": 10.0}.get(str(units[0]).strip(), 1.0)
+    xyz = np.transpose(c["data"]["points"][:3], (2, 1, 0)) * scale
+    xyz[np.all(xyz == 0, axis=-1)] = np.nan
+    return xyz
+
+
+@pytest.mark.parametrize("name", ["FP_Type3.c3d", "read_NOTworking2.c3d"])
+def test_equal_to_the_reference_reader(name):
+    expected = _ezc3d_positions(DATA / name)
+    np.testing.assert_allclose(read_marker_file(DATA / name).positions, expected, atol=1e-4)
+
+
+def test_per_marker_units_equal_to_the_reference_reader(tmp_path):
+    path = _optotrak_complete(tmp_path)
+    np.testing.assert_allclose(read_marker_file(path).positions, _ezc3d_positions(path), atol=1e-4)
+
+
+def _corpus_files():
+    if not CORPUS:
+        return []
+    return sorted(p for p in Path(CORPUS).rglob("*") if p.suffix.lower() in (".c3d", ".trc") and p.stat().st_size)
+
+
+@pytest.mark.skipif(not CORPUS, reason="AP_CAPTURE_CORPUS names no folder of sample files")
+@pytest.mark.parametrize("path", _corpus_files(), ids=lambda p: p.name)
+def test_corpus_file_reads_or_is_refused_cleanly(path):
+    try:
+        rec = read_marker_file(path)
+    except MarkerFileError as exc:
+        message = str(exc)
+        assert path.name in message
+        return
+    if path.suffix.lower() == ".c3d":
+        try:
+            import ezc3d  # noqa: F401
+        except ImportError:
+            return
+        np.testing.assert_allclose(rec.positions, _ezc3d_positions(path), atol=1e-4)
+
+
+# -- axes ----------------------------------------------------------------------------------------------------
+
+def _face(head):
+    names = ["2.1", "8.1", "8.2", "8.3", "8.4", "9.3", "4.1", "4.2", "3.5", "3.6"]
+    positions = np.array([head.vertices[head.landmarks[n]] for n in names])[None].repeat(4, axis=0)
+    return names, positions
+
+
+@pytest.mark.parametrize(("to_file", "up", "facing"), [
+    (lambda p: p, "+Y", "+Z"),
+    (lambda p: p[..., [0, 2, 1]] * [1, -1, 1], "+Z", "-Y"),           # Vicon-like: Z up, facing -Y
+    (lambda p: p[..., [2, 0, 1]], "+Z", "+X"),                         # Z up, facing +X
+    (lambda p: p[..., [1, 0, 2]] * [1, -1, 1], "+X", "+Z"),            # lying on its side
+])
+def test_up_and_facing_axes_are_found_from_the_markers(head, to_file, up, facing):
+    names, positions = _face(head)
+    in_file = to_file(positions)
+    axes = detect_axes(names, in_file)
+    assert (axes.up, axes.facing, axes.source) == (up, facing, "markers")
+    np.testing.assert_allclose(axes.apply(in_file), positions, atol=1e-9)
+
+
+def test_import_turns_a_z_up_recording_to_y_up_and_reports_it(head, tmp_path):
+    from engine.mocap.sample_files import write_trc
+
+    names, positions = _face(head)
+    path = write_trc(tmp_path / "z-up.trc", names, positions[..., [0, 2, 1]] * [1, -1, 1], rate_hz=60)
+    session = import_marker_file(path, reference=[])
+    np.testing.assert_allclose(session.positions, positions, atol=1e-3)
+    assert "axes: the file's +Z is up and -Y faces forward (found from the markers)" in format_report(session)
+    kept = import_marker_file(path, reference=[], up="Y")
+    np.testing.assert_allclose(kept.positions[..., 1], -positions[..., 2], atol=1e-3)  # as in the file
+
+
+def test_up_option_on_the_command_line(head, tmp_path, capsys):
+    from engine.mocap.sample_files import write_trc
+
+    path = write_trc(tmp_path / "anon.trc", ["a", "b", "c"], np.arange(18.0).reshape(2, 3, 3), rate_hz=60)
+    out = tmp_path / "s.h5"
+    assert main(["mocap", "import", str(path), "--reference", "none", "--up", "Z", "-o", str(out)]) == 0
+    assert "the file's +Z is up and -Y faces forward (up as given)" in capsys.readouterr().out
+    assert main(["mocap", "import", str(path), "--reference", "none", "--up", "W", "-o", str(out)]) == 2
+    assert "'W' is not an axis" in capsys.readouterr().err
+
+
+def test_without_names_to_tell_the_axes_are_kept_and_said_to_be_assumed():
+    axes = detect_axes(["a", "b"], np.zeros((2, 2, 3)))
+    assert axes.source == "assumed" and np.array_equal(axes.rotation, np.eye(3))
