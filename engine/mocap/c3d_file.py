@@ -79,7 +79,15 @@ def read_c3d(path: str | Path) -> Recording:
     first = _first_frame(header, params)
     units = sorted(set(_unit_texts(params, n_points)))
     return Recording(labels=labels, positions=positions, rate_hz=rate, source=path.name, format="c3d",
-                     units="/".join(units) or "mm", start_ms=1000.0 * (first - 1) / rate, notes=notes)
+                     units="/".join(units) or "mm", start_ms=1000.0 * (first - 1) / rate, notes=notes,
+                     up_hint=_screen_up(params))
+
+
+def _screen_up(params: C3dParameters) -> str | None:
+    """``POINT:Y_SCREEN`` (the axis a viewer shows upward, e.g. ``+Z``), when it names an axis."""
+    param = params.get("POINT:Y_SCREEN")
+    text = param.strings()[0].upper() if param is not None and param.strings() else ""
+    return text if len(text) == 2 and text[0] in "+-" and text[1] in "XYZ" else None
 
 
 def _read_bytes(path: Path) -> bytes:

@@ -47,7 +47,8 @@ class CaptureAxes:
     up: str
     facing: str
     source: str
-    """``markers``, ``--up`` (the up axis given, facing from the markers or the smallest turn) or ``assumed``."""
+    """``markers``, ``--up`` (the up axis given, facing from the markers or the smallest turn), ``file`` (the
+    up axis the file names, C3D ``POINT:Y_SCREEN``, when the markers cannot tell) or ``assumed``."""
     rotation: np.ndarray
     """(3, 3) rows: the file's left, up and facing directions; toolkit position = rotation @ file position."""
 
@@ -57,6 +58,7 @@ class CaptureAxes:
 
     def describe(self) -> str:
         how = {"markers": "found from the markers", "--up": "up as given",
+               "file": "up as the file's POINT:Y_SCREEN names it; the markers cannot tell",
                "assumed": "assumed: the markers cannot tell (no MPEG-4 names above and below the mouth)"}
         turned = "kept as they are" if np.array_equal(self.rotation, np.eye(3)) else "turned to +Y up, +Z facing"
         return f"axes: the file's {self.up} is up and {self.facing} faces forward ({how[self.source]}); {turned}"
@@ -79,8 +81,13 @@ def axis_name(vector: np.ndarray) -> str:
     return ("+" if vector[k] > 0 else "-") + AXIS_NAMES[k]
 
 
-def detect_axes(markers: Sequence[str], positions: np.ndarray, up: str | None = None) -> CaptureAxes:
-    """The file's axes from MPEG-4-named markers ``(F, M, 3)``; ``up`` (e.g. ``'Z'``) overrides the up axis."""
+def detect_axes(markers: Sequence[str], positions: np.ndarray, up: str | None = None,
+                file_up: str | None = None) -> CaptureAxes:
+    """The file's axes from MPEG-4-named markers ``(F, M, 3)``.
+
+    ``up`` (e.g. ``'Z'``) overrides the up axis; ``file_up`` is the up axis the
+    file names, used when the markers cannot tell.
+    """
     mean = _mean_positions(positions)
     index = {m: k for k, m in enumerate(markers) if np.all(np.isfinite(mean[k]))}
     up_direction = _up_direction(index, mean)
@@ -89,6 +96,8 @@ def detect_axes(markers: Sequence[str], positions: np.ndarray, up: str | None = 
         up_axis, source = parse_axis(up), "--up"
     elif up_direction is not None:
         up_axis, source = _snap(up_direction), "markers"
+    elif file_up is not None:
+        up_axis, source = parse_axis(file_up), "file"
     else:
         return CaptureAxes("+Y", "+Z", "assumed", np.eye(3))
     if left_direction is not None:

@@ -97,7 +97,7 @@ def build_session(recording: Recording, *, mapping: dict[str, str] | None = None
     raw = np.asarray(recording.positions, dtype=float)
     if len(keep) < raw.shape[1]:
         raw = raw[:, keep]
-    axes = detect_axes(markers, raw, up=None if up == "auto" else up)
+    axes = detect_axes(markers, raw, up=None if up == "auto" else up, file_up=recording.up_hint)
     raw = axes.apply(raw)
     if raw.shape[0] == 0:
         raise MocapError(f"{recording.source}: the file has no frames")

@@ -44,6 +44,8 @@ class Recording:
     start_ms: float = 0.0
     events: list[tuple[str, float]] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
+    up_hint: str | None = None
+    """The up axis the file names, if any (C3D ``POINT:Y_SCREEN``, e.g. ``'+Z'``)."""
 
     @property
     def n_frames(self) -> int:

@@ -345,3 +345,41 @@ def test_up_option_on_the_command_line(head, tmp_path, capsys):
 def test_without_names_to_tell_the_axes_are_kept_and_said_to_be_assumed():
     axes = detect_axes(["a", "b"], np.zeros((2, 2, 3)))
     assert axes.source == "assumed" and np.array_equal(axes.rotation, np.eye(3))
+
+
+# -- mocap apply: a rest pose far outside the value range ----------------------------------------------------
+
+def test_a_rest_pose_many_standard_deviations_out_warns(head, tmp_path, capsys):
+    """The recording's mean shifted by 19 SD of its first component: the model rests ~19 SD out, as on a real take."""
+    import dataclasses
+
+    from engine.mocap.apply import apply_articulation
+    from engine.mocap.articulation_file import save_articulation_file
+    from engine.mocap.frame_selection import select_frames
+    from engine.mocap.pca import multistage_pca
+    from engine.mocap.synthetic import synthesize_recording
+    from tests.engine.mocap_samples import TRAINING_PHONES, parse_phones
+
+    clean = synthesize_recording(phones=parse_phones(TRAINING_PHONES), model=head, seed=1, noise_mm=0,
+                                 head_motion=False, gaps=False)
+    art = multistage_pca(clean.markers, clean.positions,
+                         frames=select_frames(clean.phones, clean.n_frames, clean.rate_hz, ["V", "C"]))
+    unshifted = apply_articulation(head.copy(), art)
+    assert unshifted.warnings == []
+    shifted = dataclasses.replace(art, mean=art.mean + 19.0 * art.components[0])
+    result = apply_articulation(head.copy(), shifted)
+    assert result.rest_values[0] == pytest.approx(unshifted.rest_values[0] - 19.0, abs=0.1)
+    assert len(result.warnings) == 1 and "rest pose is at -20" in result.warnings[0] and "pca1" in result.warnings[0]
+    assert "warning: the model's rest pose is at -20" in result.report()
+    path = tmp_path / "shifted.h5"
+    save_articulation_file(shifted, path)
+    assert main(["mocap", "apply", str(path), "-o", str(tmp_path / "m.xml")]) == 0
+    assert "warning: the model's rest pose is at -20" in capsys.readouterr().err
+
+
+def test_a_c3d_file_that_names_its_up_axis_is_turned_when_the_markers_cannot_tell():
+    rec = read_marker_file(DATA / "read_NOTworking2.c3d")                  # POINT:Y_SCREEN '+Z'
+    assert rec.up_hint == "+Z"
+    session = build_session(rec, reference=[])
+    assert (session.report["axes"]["up"], session.report["axes"]["source"]) == ("+Z", "file")
+    np.testing.assert_allclose(session.raw[..., 1], rec.positions[..., 2])
