@@ -139,20 +139,22 @@ class HDF5Reader:
     # -- data ------------------------------------------------------------------------
 
     def array(self, name: str, kinds: str, ndim: int | None = None, tail: tuple[int, ...] | None = None,
-              shape: tuple[int, ...] | None = None) -> np.ndarray:
+              shape: tuple[int, ...] | None = None, allow_nan: bool = False) -> np.ndarray:
         """Dataset ``/name`` read whole, after checking its kind, rank and size; never a copy larger than the file.
 
         ``kinds``: numpy kind letters it may hold (``"f"`` floats, ``"iu"``
         integers, ``"b"`` booleans; integers are accepted where floats are).
         ``tail``: the shape after the first axis; ``shape``: the whole shape;
         ``ndim`` the rank (from ``tail`` or ``shape`` if given; 1 otherwise).
-        Floating-point data must be finite.
+        Floating-point data must be finite (``allow_nan``: NaN, "missing",
+        is allowed; infinities never are).
         """
         data = self.dataset(name)
         allowed = kinds + ("iu" if "f" in kinds else "")
         if data.dtype.kind not in allowed:
             what = " or ".join(dict.fromkeys(_KIND_NAMES[k] for k in kinds))
-            raise self.fail(f"dataset '/{name}' holds {_dtype_text(data.dtype)}, expected {what}")
+            raise self.fail(f"dataset '/{name}' does not hold numbers of the right kind: it holds "
+                            f"{_dtype_text(data.dtype)}, expected {what}")
         found = tuple(int(n) for n in data.shape) if data.shape is not None else ()
         if shape is not None:
             fits, wanted = found == tuple(shape), str(tuple(shape))
@@ -167,7 +169,10 @@ class HDF5Reader:
         self._check_size(name, found, data.dtype.itemsize)
         arr = np.asarray(data[()])
         if arr.dtype.kind == "f" and not np.all(np.isfinite(arr)):
-            raise self.fail(f"dataset '/{name}' holds values that are not finite numbers (NaN or infinite)")
+            if not allow_nan:
+                raise self.fail(f"dataset '/{name}' holds values that are not finite numbers (NaN or infinite)")
+            if np.any(np.isinf(arr)):
+                raise self.fail(f"dataset '/{name}' holds infinite values")
         return arr
 
     def strings(self, name: str) -> list[str]:

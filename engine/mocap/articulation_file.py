@@ -78,32 +78,33 @@ def load_articulation_file(path: str | Path) -> Articulation:
     path = Path(path)
     with open_versioned(path, ARTICULATION_FORMAT, ARTICULATION_VERSION, ArticulationFileError,
                         "an articulation file", "mocap pca") as f:
-        def dataset(name: str) -> np.ndarray:
-            if name not in f or not isinstance(f[name], h5py.Dataset):
+        for name in ("markers", "mean", "components", "explained_variance_ratio", "stages"):
+            if not f.has(name):
                 raise ArticulationFileError(f"missing dataset '/{name}'", file=path)
-            return np.asarray(f[name][()])
-
-        markers = [text_attribute(m) or "" for m in np.atleast_1d(dataset("markers")).tolist()]
-        numbers: dict[str, np.ndarray] = {}
-        for name in ("mean", "components", "explained_variance_ratio", "stages"):
-            try:
-                numbers[name] = dataset(name).astype(float)
-            except (TypeError, ValueError):
-                raise ArticulationFileError(f"dataset '/{name}' does not hold numbers", file=path) from None
-        n_comp = numbers["components"].shape[0] if numbers["components"].ndim else 0
+        markers = f.strings("markers")
+        mean = f.array("mean", "f", tail=(3,)).astype(float)
+        components = f.array("components", "f", ndim=3).astype(float)
+        ratio = f.array("explained_variance_ratio", "f").astype(float)
+        stages = f.array("stages", "f").astype(float)      # whole numbers: checked below
+        n_comp = components.shape[0]
         try:
-            score_std = np.asarray(f.attrs.get("score_std_mm", np.full(n_comp, np.nan)), dtype=float).reshape(-1)
-            stage_markers = json.loads(text_attribute(f.attrs.get("stage_markers")) or "[]")
+            score_std = np.asarray(f.attribute("score_std_mm") if f.attribute("score_std_mm") is not None
+                                   else np.full(n_comp, np.nan), dtype=float).reshape(-1)
+            stage_markers = json.loads(text_attribute(f.attribute("stage_markers")) or "[]")
+            counts = {key: int(f.attribute(key) or 0)  # type: ignore[call-overload]
+                      for key in ("n_frames", "excluded_missing")}
+            rate = f.attribute("rate_hz")
+            rate_hz = float(rate) if rate is not None else np.nan  # type: ignore[arg-type]
         except (TypeError, ValueError):
-            raise ArticulationFileError("the attributes 'score_std_mm' or 'stage_markers' are damaged",
-                                        file=path) from None
+            raise ArticulationFileError("the attributes 'score_std_mm', 'stage_markers', 'n_frames', "
+                                        "'excluded_missing' or 'rate_hz' are damaged", file=path) from None
+        if not isinstance(stage_markers, list) or score_std.size > n_comp:
+            raise ArticulationFileError("the attributes 'score_std_mm' or 'stage_markers' are damaged", file=path)
         art = Articulation(
-            markers=markers, mean=numbers["mean"], components=numbers["components"],
-            explained_variance_ratio=numbers["explained_variance_ratio"], stages=numbers["stages"],
-            stage_markers=stage_markers, score_std=score_std,
-            n_frames=int(f.attrs.get("n_frames", 0)), excluded_missing=int(f.attrs.get("excluded_missing", 0)),
-            selection=text_attribute(f.attrs.get("selection")) or "", rate_hz=float(f.attrs.get("rate_hz", np.nan)),
-            source=text_attribute(f.attrs.get("source")) or "")
+            markers=markers, mean=mean, components=components, explained_variance_ratio=ratio, stages=stages,
+            stage_markers=stage_markers, score_std=score_std, n_frames=counts["n_frames"],
+            excluded_missing=counts["excluded_missing"], selection=text_attribute(f.attribute("selection")) or "",
+            rate_hz=rate_hz, source=text_attribute(f.attribute("source")) or "")
     _check_arrays(art, path)
     art.stages = art.stages.astype(np.int64)
     return art

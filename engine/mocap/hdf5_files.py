@@ -1,5 +1,11 @@
 """Opening the versioned HDF5 files of the motion-capture pipeline (sessions, articulation files).
 
+The file is read through :class:`engine.formats.hdf5_reading.HDF5Reader`:
+links to other files, external storage, virtual datasets, oversized shapes
+and any damage the HDF5 library reports become the caller's error class,
+naming the file. Before opening, the file's folder is cleared of what a
+killed writer left (:func:`engine.formats.atomic.finish_interrupted_writes`).
+
 >>> from engine.mocap.errors import SessionFileError
 >>> from engine.mocap.hdf5_files import open_versioned
 >>> with open_versioned("take.h5", "artificial-person-mocap-session", 1, SessionFileError,
@@ -8,48 +14,42 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 
-import h5py
-
 from engine.errors import UserError
+from engine.formats.atomic import finish_interrupted_writes
+from engine.formats.hdf5_reading import HDF5Reader
+from engine.formats.hdf5_reading import text as text_attribute
+
+__all__ = ["open_versioned", "text_attribute"]
 
 
+@contextmanager
 def open_versioned(path: str | Path, fmt: str, version: int, error: type[UserError], what: str,
-                   writer: str) -> h5py.File:
+                   writer: str) -> Iterator[HDF5Reader]:
     """Open ``path`` for reading after checking its ``format`` and ``version`` attributes.
 
     Raises ``error`` (a :class:`~engine.errors.UserError` subclass) naming the
-    file for a missing or unreadable file, another format, or another version.
-    ``what`` names the kind of file ("a motion-capture session"), ``writer``
-    the verb that writes it ("mocap import").
+    file for a missing or unreadable file, another format, another version,
+    or anything the HDF5 library reports while the block reads it. ``what``
+    names the kind of file ("a motion-capture session"), ``writer`` the verb
+    that writes it ("mocap import").
     """
     path = Path(path)
+    finish_interrupted_writes(path.parent)
     if not path.exists():
         raise error("no such file", file=path)
-    try:
-        f = h5py.File(path, "r")
-    except OSError:
-        raise error(f"not a readable HDF5 file (is it {what} written by '{writer}'?)", file=path) from None
-    try:
-        found = text_attribute(f.attrs.get("format"))
+    with HDF5Reader(path, error, f"not a readable HDF5 file (is it {what} written by '{writer}'?)") as reader:
+        found = text_attribute(reader.attribute("format"))
         if found != fmt:
             raise error(f"not {what} (format attribute is {found!r}, expected '{fmt}')", file=path)
         try:
-            found_version = int(f.attrs.get("version"))
+            found_version = int(reader.attribute("version"))  # type: ignore[call-overload]
         except (TypeError, ValueError):
             raise error("the file has no valid 'version' attribute", file=path) from None
         if found_version != version:
             raise error(f"{what} format version {found_version} is not one this program reads "
                         f"(it reads version {version})", file=path)
-    except BaseException:
-        f.close()
-        raise
-    return f
-
-
-def text_attribute(value: object) -> str | None:
-    """An HDF5 string attribute as ``str`` (h5py may give ``bytes``)."""
-    if isinstance(value, bytes):
-        return value.decode("utf-8", errors="replace")
-    return None if value is None else str(value)
+        yield reader

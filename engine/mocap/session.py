@@ -41,7 +41,6 @@ from typing import Any
 
 import h5py
 import numpy as np
-import numpy.typing as npt
 
 from engine.formats.atomic import atomic_path
 from engine.mocap.errors import MocapError, SessionFileError
@@ -162,28 +161,34 @@ def _write(s: Session, tmp: str) -> None:
 
 
 def load_session(path: str | Path) -> Session:
-    """Read a session file, checking its format, version and every array's shape."""
+    """Read a session file, checking its format, version and every array's kind, shape and size.
+
+    NaN (a missing sample) is allowed in ``positions``, ``raw`` and
+    ``alignment``; infinities nowhere. Anything else wrong, or any damage the
+    HDF5 library reports, is a :class:`SessionFileError` naming the file.
+    """
     path = Path(path)
     with open_versioned(path, SESSION_FORMAT, SESSION_VERSION, SessionFileError, "a motion-capture session",
                         "mocap import") as f:
-        reader = _Reader(f, path)
-        markers = reader.strings("markers")
-        positions = reader.array("positions", float, 3)
+        markers = f.strings("markers")
+        positions = f.array("positions", "f", ndim=3, allow_nan=True).astype(float)
         n_frames, n_markers = positions.shape[0], len(markers)
         shape = (n_frames, n_markers)
         try:
-            rate = float(f.attrs["rate_hz"])
-        except (KeyError, TypeError, ValueError):
+            rate = float(f.attribute("rate_hz"))  # type: ignore[arg-type]
+        except (TypeError, ValueError):
             raise SessionFileError("the session has no valid 'rate_hz' attribute", file=path) from None
         try:
-            report = json.loads(text_attribute(reader.scalar("report")) or "{}")
+            report = json.loads(f.text("report") or "{}")
         except json.JSONDecodeError as exc:
             raise SessionFileError(f"the '/report' dataset is not valid JSON ({exc.msg})", file=path) from None
+        if not isinstance(report, dict):
+            raise SessionFileError("the '/report' dataset is not a JSON object", file=path)
         phones = []
-        if "phones" in f:
-            starts = reader.array("phones/start_ms", float, 1)
-            ends = reader.array("phones/end_ms", float, 1)
-            labels = reader.strings("phones/label")
+        if f.has("phones"):
+            starts = f.array("phones/start_ms", "f").astype(float)
+            ends = f.array("phones/end_ms", "f").astype(float)
+            labels = f.strings("phones/label")
             if not (len(starts) == len(ends) == len(labels)):
                 raise SessionFileError("the phones/start_ms, phones/end_ms and phones/label datasets differ "
                                        "in length", file=path)
@@ -191,52 +196,15 @@ def load_session(path: str | Path) -> Session:
         try:
             return Session(
                 markers=markers, positions=positions,
-                raw=reader.array("raw", float, 3, positions.shape),
+                raw=f.array("raw", "f", shape=positions.shape, allow_nan=True),
                 rate_hz=rate,
-                missing=reader.array("missing", bool, 2, shape),
-                alignment=reader.array("alignment", float, 3, (n_frames, 4, 4)),
-                phones=phones, source=text_attribute(f.attrs.get("source")) or "", report=report,
-                filled=reader.array("filled", bool, 2, shape) if "filled" in f else None,
-                reference=reader.strings("reference") if "reference" in f else [],
+                missing=f.array("missing", "b", shape=shape).astype(bool),
+                alignment=f.array("alignment", "f", shape=(n_frames, 4, 4), allow_nan=True),
+                phones=phones, source=text_attribute(f.attribute("source")) or "", report=report,
+                filled=f.array("filled", "b", shape=shape).astype(bool) if f.has("filled") else None,
+                reference=f.strings("reference") if f.has("reference") else [],
             )
         except SessionFileError:
             raise
         except MocapError as exc:
             raise SessionFileError(f"inconsistent session: {exc.message}", file=path) from None
-
-
-class _Reader:
-    """Dataset access that turns every surprise into a :class:`SessionFileError` naming the dataset."""
-
-    def __init__(self, f: h5py.File, path: Path) -> None:
-        self.f, self.path = f, path
-
-    def _dataset(self, name: str) -> h5py.Dataset:
-        if name not in self.f:
-            raise SessionFileError(f"missing HDF5 dataset '/{name}'", file=self.path)
-        data = self.f[name]
-        if not isinstance(data, h5py.Dataset):
-            raise SessionFileError(f"'/{name}' is not a dataset", file=self.path)
-        return data
-
-    def array(self, name: str, dtype: npt.DTypeLike, ndim: int, shape: tuple[int, ...] | None = None) -> np.ndarray:
-        data = self._dataset(name)
-        try:
-            arr = np.asarray(data[()]).astype(dtype)
-        except (TypeError, ValueError):
-            raise SessionFileError(f"dataset '/{name}' does not hold numbers", file=self.path) from None
-        if arr.ndim != ndim or (shape is not None and arr.shape != tuple(shape)):
-            want = tuple(shape) if shape is not None else f"{ndim} dimensions"
-            raise SessionFileError(f"dataset '/{name}' has shape {arr.shape}, expected {want}", file=self.path)
-        return arr
-
-    def strings(self, name: str) -> list[str]:
-        data = self._dataset(name)
-        arr = np.asarray(data[()])
-        if arr.ndim != 1:
-            raise SessionFileError(f"dataset '/{name}' has shape {arr.shape}, expected a list of names",
-                                   file=self.path)
-        return [text_attribute(v) or "" for v in arr.tolist()]
-
-    def scalar(self, name: str) -> object:
-        return self._dataset(name)[()]
