@@ -104,6 +104,7 @@ def read_mesh(path: str | Path, scale: float | None = None, *, keep_units: bool 
     if len(raw.faces) == 0:
         raise MeshImportError("holds no polygons (points and lines alone are not a surface)", file=path)
     try:
+        check_cell_array(raw.faces, len(raw.vertices))
         vertices, faces, vertex_part, part_names = _compact(raw.vertices, raw.faces, raw.face_part,
                                                             raw.part_names)
     except UserError as exc:
@@ -145,6 +146,8 @@ def _read_raw(path: Path, timeout: float | None) -> RawMesh:
         raise MeshImportError("no such file", file=path)
     if path.is_dir():
         raise MeshImportError("is a folder, not a mesh file", file=path)
+    if not path.is_file():
+        raise MeshImportError("is not a regular file (a device or a pipe?), not a mesh file", file=path)
     try:
         with path.open("rb") as stream:
             head = stream.read(len(LFS_POINTER))

@@ -27,6 +27,7 @@ from engine.errors import MeshImportError
 from engine.formats.mesh_data import MeshMaterial, MeshTexture, RawMesh
 
 _DEFAULT_PART = "surface"
+_MTL_LIMIT = 10_000_000     # bytes of an MTL file read; material lists are a few kB
 #: map_Kd options and how many values follow each
 _MAP_OPTIONS = {"-blendu": 1, "-blendv": 1, "-bm": 1, "-boost": 1, "-cc": 1, "-clamp": 1, "-imfchan": 1,
                 "-mm": 2, "-o": 3, "-s": 3, "-t": 3, "-texres": 1, "-type": 1}
@@ -163,7 +164,10 @@ def _material_images(obj_path: Path, libraries: list[str]) -> dict[str, str]:
     for library in libraries:
         mtl = obj_path.parent / library
         try:
-            text = mtl.read_bytes()[:10_000_000].decode("utf-8", errors="replace")
+            if not mtl.is_file():       # missing, or a device or pipe that would never end
+                continue
+            with mtl.open("rb") as stream:
+                text = stream.read(_MTL_LIMIT).decode("utf-8", errors="replace")
         except OSError:
             continue
         current = None

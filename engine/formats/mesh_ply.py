@@ -114,6 +114,9 @@ def _header(blob: bytes, fail: _Failure) -> tuple[list[_Element], str, list[str]
             fail(f"unknown PLY header line {line.strip()[:40]!r}", number)
     if not encoding:
         fail("the PLY header has no 'format' line")
+    for element in elements:
+        if element.count and not element.properties:
+            fail(f"the element '{element.name}' has no properties", element.header_line)
     return elements, encoding, comments, body_start, len(lines) + 1
 
 
@@ -162,9 +165,10 @@ def _ascii_body(blob: bytes, start: int, header_lines: int, elements: list[_Elem
                     table.append([float(w) for w in words[:len(element.properties)]])
                 else:
                     _ascii_row(words, element, lists, columns)
-            except (ValueError, OverflowError):
-                fail(f"{element.name} {row}: expected {_describe(element)}, found "
-                     f"{b' '.join(words)[:60].decode('ascii', 'replace')!r}", line)
+            except (ValueError, OverflowError, IndexError) as exc:
+                found = b" ".join(words)[:60].decode("ascii", "replace")
+                reason = str(exc) if str(exc).startswith("the list") else f"expected {_describe(element)}"
+                fail(f"{element.name} {row}: {reason}, found {found!r}", line)
             row += 1
         if scalars:
             array = np.array(table, dtype=float).reshape(-1, len(element.properties))
@@ -184,7 +188,8 @@ def _ascii_row(words: list[bytes], element: _Element, lists: dict[str, list[np.n
             continue
         n = int(words[k])
         if n < 0 or k + 1 + n > len(words):
-            raise ValueError
+            raise ValueError(f"the list '{p.name}' says {n} values but the line holds {len(words) - k - 1} "
+                             "after it (a cut line?)")
         lists[p.name].append(np.array([float(w) for w in words[k + 1:k + 1 + n]]))
         k += 1 + n
     if k > len(words):
@@ -365,5 +370,7 @@ def _texture(path: Path, faces: np.ndarray, polygons: list[np.ndarray], corners:
     corner_uv = np.concatenate(rows) if rows else np.zeros((0, 2))
     image = next((c.split(None, 1)[1].strip() for c in comments
                   if c.lower().startswith("texturefile") and len(c.split(None, 1)) > 1), None)
-    materials = [MeshMaterial("texture", str(path.parent / image) if image else None)]
-    return MeshTexture(corner_uv, materials, np.zeros(len(polygons), dtype=np.int64))
+    if not image:
+        return MeshTexture(corner_uv, [], np.full(len(polygons), -1, dtype=np.int64))
+    return MeshTexture(corner_uv, [MeshMaterial("texture", str(path.parent / image))],
+                       np.zeros(len(polygons), dtype=np.int64))

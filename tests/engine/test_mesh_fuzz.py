@@ -1,0 +1,119 @@
+"""Fuzzing mesh import: mutated bytes of small valid files end in MeshImportError naming the file, never worse.
+
+Seeds: ASCII and binary PLY (with texture coordinates and strips), OBJ with
+an MTL, glTF (JSON with its .bin, and GLB), and legacy VTK (read by VTK in a
+child process, so a crash or hang there must still end in our error). The
+mutations overwrite, insert, delete and cut bytes, and insert numbers that
+make counts huge, negative or non-finite.
+
+CI size: ``AP_FUZZ_EXAMPLES`` inputs per format (default 200; legacy VTK,
+which starts a process per input, a tenth of that). Release check:
+``AP_FUZZ_EXAMPLES=10000 pytest tests/engine/test_mesh_fuzz.py`` (see
+docs/meshes.md for the figures of the last such run).
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from engine.errors import MeshImportError
+from engine.formats.mesh_io import read_mesh, write_mesh
+
+EXAMPLES = int(os.environ.get("AP_FUZZ_EXAMPLES", "200"))
+DATA = Path(__file__).parent / "data" / "meshes"
+
+PLY_ASCII = (b"ply\nformat ascii 1.0\ncomment TextureFile skin.png\nelement vertex 4\nproperty float x\n"
+             b"property float y\nproperty float z\nproperty float s\nproperty float t\nelement face 2\n"
+             b"property list uchar int vertex_indices\nproperty list uchar float texcoord\n"
+             b"element tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+             b"0 0 0 0 0\n1 0 0 1 0\n1 1 0 1 1\n0 1 0 0 1\n3 0 1 2 6 0 0 1 0 1 1\n3 0 2 3\n6 0 1 2 -1 2 3 0\n")
+OBJ = (b"mtllib m.mtl\no head\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvn 0 0 1\n"
+       b"g skin\nusemtl skin\nf 1/1/1 2/2/1 3/3/1\nf -4 -2 -1\ng eye\nf 1//1 3//1 4//1\n")
+VTK_LEGACY = (b"# vtk DataFile Version 3.0\nsquare\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+              b"0 0 0 1 0 0 1 1 0 0 1 0\nPOLYGONS 2 8\n3 0 1 2\n3 0 2 3\n")
+
+
+def _binary_ply() -> bytes:
+    with tempfile.TemporaryDirectory() as folder:
+        return write_mesh(Path(folder) / "m.ply", np.eye(4, 3) * 10, [3, 0, 1, 2, 4, 0, 1, 2, 3]).read_bytes()
+
+
+SEEDS = {
+    "ascii.ply": PLY_ASCII,
+    "binary.ply": _binary_ply(),
+    "texcoord.ply": (DATA / "fuze.ply").read_bytes()[:3000],           # cut: the header and some rows
+    "mesh.obj": OBJ,
+    "strip.gltf": (DATA / "Mesh_PrimitiveMode_04.gltf").read_bytes(),
+    "box.glb": (DATA / "BoxTextured.glb").read_bytes(),
+    "square.vtk": VTK_LEGACY,
+}
+NUMBERS = [b"-1", b"0", b"4294967295", b"99999999999999999999", b"1e308", b"nan", b"inf", b"-", b"\x00", b"\n"]
+
+
+@st.composite
+def mutated(draw: st.DrawFn, seed: bytes) -> bytes:
+    data = bytearray(seed)
+    for _ in range(draw(st.integers(1, 6))):
+        at = draw(st.integers(0, max(len(data) - 1, 0)))
+        kind = draw(st.sampled_from(["byte", "insert", "delete", "cut", "number"]))
+        if kind == "byte" and data:
+            data[at] = draw(st.integers(0, 255))
+        elif kind == "insert":
+            data[at:at] = draw(st.binary(min_size=1, max_size=8))
+        elif kind == "delete":
+            del data[at:at + draw(st.integers(1, 40))]
+        elif kind == "cut":
+            del data[at:]
+        else:
+            data[at:at] = draw(st.sampled_from(NUMBERS))
+    return bytes(data)
+
+
+def _check(name: str, data: bytes, tmp: Path) -> None:
+    path = tmp / name
+    path.write_bytes(data)
+    (tmp / "m.mtl").write_bytes(b"newmtl skin\nmap_Kd skin.png\n")
+    if name == "strip.gltf":
+        (tmp / "Mesh_PrimitiveMode_04.bin").write_bytes((DATA / "Mesh_PrimitiveMode_04.bin").read_bytes())
+    try:
+        mesh = read_mesh(path, timeout=30)
+    except MeshImportError as exc:
+        message = str(exc)
+    else:
+        assert np.all(np.isfinite(mesh.vertices)) and len(mesh.faces)
+        return
+    assert message.startswith(f"{path}:"), message
+
+
+@pytest.mark.parametrize("name", [n for n in SEEDS if not n.endswith(".vtk")])
+def test_own_readers_survive_mutated_files(name, tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("fuzz")
+    _check(name, SEEDS[name], tmp)             # the seed itself reads
+
+    @settings(max_examples=EXAMPLES, deadline=None, derandomize=True, database=None,
+              suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+    @given(mutated(SEEDS[name]))
+    def run(data: bytes) -> None:
+        _check(name, data, tmp)
+
+    run()
+
+
+def test_vtk_in_a_child_survives_mutated_files(tmp_path_factory):
+    tmp = tmp_path_factory.mktemp("fuzz")
+    _check("square.vtk", VTK_LEGACY, tmp)
+
+    @settings(max_examples=max(EXAMPLES // 10, 5), deadline=None, derandomize=True, database=None,
+              suppress_health_check=[HealthCheck.too_slow])
+    @given(mutated(VTK_LEGACY))
+    def run(data: bytes) -> None:
+        _check("square.vtk", data, tmp)
+
+    run()
