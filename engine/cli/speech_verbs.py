@@ -7,6 +7,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -81,6 +82,8 @@ def run_say(args: argparse.Namespace) -> int:
     table = load_articulation(args.articulation) if args.articulation else None
     speech = speak(text, model, voice=args.voice, library=library, table=table,
                    coarticulation=args.coarticulation, prosody_seed=args.seed if args.prosody else None, name=name)
+    for warning in speech.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
     progress = None
     if "mp4" in targets and not args.quiet:
         progress = progress_printer("rendering", unit="frames" if len(targets) == 1 else "steps")

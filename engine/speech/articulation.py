@@ -3,6 +3,7 @@
 One row per phone (or several phones sharing a row), one column per
 articulatory parameter::
 
+    $phoneset = finnish      # the Festival phone set whose phones the rows name (optional)
     $parameters = jaw_open mouth_widen lip_protrude upper_lip_raise lower_lip_raise
     $dominance = 1           # default magnitude α of a phone's dominance (Cohen–Massaro)
     $anticipation = 0.02     # default anticipatory rate θ− (1/ms): how early a phone shows
@@ -21,6 +22,11 @@ row of its short form unless it has a row of its own. ``#`` starts a comment
 only at the start of a line or after whitespace (``#`` and ``##`` are also
 Festival's pause phones, written as the first cell of their rows).
 
+A voice's phone that no row names gets a row derived from its Festival phone
+features (:mod:`engine.speech.phone_features`); :func:`table_for` picks the
+shipped table of the voice's phone set (``finnish.phones``, ``english.phones``)
+and fills in what it lacks, so every Festival voice speaks.
+
 >>> from engine.speech.articulation import load_articulation
 >>> table = load_articulation()
 >>> table.target("a:", "jaw_open") == table.target("a", "jaw_open")
@@ -31,7 +37,8 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
+from collections.abc import Mapping
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -39,13 +46,19 @@ import numpy as np
 
 from engine.errors import LibraryError
 from engine.paths import LIBRARY_DIR
+from engine.speech.phone_features import DERIVED_PARAMETERS, PhoneFeatures, derived_cells
 
 if TYPE_CHECKING:
     from engine.model import Model
+    from engine.speech.synthesis import Utterance
 
-DEFAULT_TABLE = LIBRARY_DIR / "articulation" / "finnish.phones"
+TABLE_DIR = LIBRARY_DIR / "articulation"
+DEFAULT_TABLE = TABLE_DIR / "finnish.phones"
+MAX_TABLE_BYTES = 4 * 1024 * 1024
 LONG_MARK = ":"
 DEFAULTS = {"dominance": 1.0, "anticipation": 0.02, "carryover": 0.025, "weak": 0.05, "exponent": 1.0}
+DERIVED_SETTINGS = {**DEFAULTS, "anticipation": 0.03, "carryover": 0.035, "weak": 0.04}
+"""Settings of a table made only of derived rows: the shipped Finnish table's."""
 
 
 @dataclass(frozen=True)
@@ -67,6 +80,12 @@ class ArticulationTable:
     file: str
     lines: dict[str, int]
     """Line of each phone's row, and of ``$parameters``."""
+    phoneset: str = ""
+    """The Festival phone set the rows are written for (``$phoneset``; "" if the table does not say)."""
+    settings: dict[str, float] = field(default_factory=lambda: dict(DEFAULTS))
+    """The table's ``$dominance``, ``$anticipation``, ``$carryover``, ``$weak`` and ``$exponent``."""
+    derived: frozenset[str] = frozenset()
+    """Phones whose rows were derived from their features, not written in the file."""
 
     def row(self, phone: str) -> list[Target]:
         """The targets of ``phone`` (a long phone falls back to its short form)."""
@@ -91,6 +110,25 @@ class ArticulationTable:
         return (attribute("value", float), attribute("dominance", float), attribute("anticipation", float),
                 attribute("carryover", float), attribute("enforced", bool))
 
+    def with_derived_rows(self, features: Mapping[str, PhoneFeatures]) -> ArticulationTable:
+        """A copy with a row derived from its features (:func:`~engine.speech.phone_features.derived_cells`)
+        for every phone in ``features`` the table has no row for (a long phone keeps its short form's row).
+
+        >>> from engine.speech.phone_features import PhoneFeatures
+        >>> table = load_articulation().with_derived_rows({"ae": PhoneFeatures.parse("+ s 3 1 - 0 0 0")})
+        >>> round(table.target("ae", "jaw_open"), 2), sorted(table.derived)
+        (0.4, ['ae'])
+        """
+        rows, lines, derived = dict(self.rows), dict(self.lines), set(self.derived)
+        for phone, phone_features in features.items():
+            if phone in rows or (phone.endswith(LONG_MARK) and phone[:-1] in rows):
+                continue
+            cells = derived_cells(phone_features, self.parameters)
+            rows[phone] = [_target(cell, self.settings, self.file, 0) for cell in cells]
+            derived.add(phone)
+        return ArticulationTable(self.parameters, rows, self.exponent, self.file, lines, self.phoneset,
+                                 dict(self.settings), frozenset(derived))
+
     def check(self, model: Model) -> None:
         """Every parameter of the table exists on ``model`` (else a LibraryError at ``$parameters``)."""
         for name in self.parameters:
@@ -103,7 +141,12 @@ def load_articulation(path: str | Path | None = None) -> ArticulationTable:
     """Read an articulation table (default: the shipped Finnish one)."""
     path = Path(path) if path is not None else DEFAULT_TABLE
     try:
-        text = path.read_text(encoding="utf-8")
+        with path.open("rb") as stream:
+            data = stream.read(MAX_TABLE_BYTES + 1)
+        if len(data) > MAX_TABLE_BYTES:
+            raise LibraryError(f"the articulation table is larger than {MAX_TABLE_BYTES // (1024 * 1024)} MiB "
+                               "(is it the right file?)", file=path)
+        text = data.decode("utf-8")
     except OSError as exc:
         raise LibraryError(f"cannot read the articulation table: {exc.strerror or exc}", file=path) from None
     except UnicodeDecodeError:
@@ -111,8 +154,38 @@ def load_articulation(path: str | Path | None = None) -> ArticulationTable:
     return parse_articulation(text, str(path))
 
 
+def shipped_tables() -> dict[str, Path]:
+    """The shipped tables (``library/articulation/*.phones``) by the phone set they declare."""
+    tables: dict[str, Path] = {}
+    for path in sorted(TABLE_DIR.glob("*.phones")):
+        for line in path.read_text(encoding="utf-8").splitlines():
+            match = _DIRECTIVE.match(line.strip())
+            if match and match.group(1) == "phoneset":
+                tables.setdefault(match.group(2).split("#")[0].strip(), path)
+                break
+    return tables
+
+
+def table_for(utterance: Utterance, table: ArticulationTable | None = None) -> ArticulationTable:
+    """The articulation table for ``utterance``'s phones: ``table`` if given, else the shipped table of the
+    voice's phone set (the Finnish one when the synthesizer does not say which), with rows derived from
+    the phones' features for every phone it lacks.
+
+    A phone neither the table nor its features describe is an error naming the phone.
+    """
+    if table is None:
+        path = shipped_tables().get(utterance.phoneset) if utterance.phoneset else DEFAULT_TABLE
+        if path is None:  # a phone set no hand-made table covers: every row comes from the features
+            table = ArticulationTable(list(DERIVED_PARAMETERS), {}, DEFAULTS["exponent"],
+                                      f"<rows derived from the {utterance.phoneset} phone set>", {},
+                                      utterance.phoneset, dict(DERIVED_SETTINGS))
+        else:
+            table = load_articulation(path)
+    return table.with_derived_rows(utterance.phone_features)
+
+
 _DIRECTIVE = re.compile(r"^\$([a-z]+)\s*=\s*(.*)$")
-_CELL = re.compile(r"^(-|[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(!?)"
+_CELL = re.compile(r"^(-|[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?)(!?)"
                    r"(?:/([^/!]+))?(?:/([^/!]+))?(?:/([^/!]+))?(!?)$")
 
 
@@ -120,6 +193,7 @@ def parse_articulation(text: str, file: str = "<articulation>") -> ArticulationT
     """Parse a table; errors name file and line."""
     settings = dict(DEFAULTS)
     parameters: list[str] | None = None
+    phoneset = ""
     rows: dict[str, list[Target]] = {}
     lines: dict[str, int] = {}
     for number, raw in enumerate(text.splitlines(), start=1):
@@ -134,10 +208,15 @@ def parse_articulation(text: str, file: str = "<articulation>") -> ArticulationT
                 lines["$parameters"] = number
                 if not parameters:
                     raise LibraryError("$parameters lists no parameter", file=file, line=number)
+            elif name == "phoneset":
+                if not re.fullmatch(r"[A-Za-z0-9_]+", value.strip()):
+                    raise LibraryError(f"$phoneset must be one Festival phone set name, not {value.strip()!r}",
+                                       file=file, line=number)
+                phoneset = value.strip()
             elif name in DEFAULTS:
                 settings[name] = _positive(value, f"${name}", file, number)
             else:
-                raise LibraryError(f"unknown directive ${name} (known: $parameters, "
+                raise LibraryError(f"unknown directive ${name} (known: $phoneset, $parameters, "
                                    + ", ".join("$" + d for d in DEFAULTS) + ")", file=file, line=number)
             continue
         if parameters is None:
@@ -160,7 +239,7 @@ def parse_articulation(text: str, file: str = "<articulation>") -> ArticulationT
         raise LibraryError("the articulation table has no $parameters line", file=file, line=1)
     if not rows:
         raise LibraryError("the articulation table has no phone rows", file=file, line=1)
-    return ArticulationTable(parameters, rows, settings["exponent"], file, lines)
+    return ArticulationTable(parameters, rows, settings["exponent"], file, lines, phoneset, settings)
 
 
 def _strip_comment(line: str) -> str:

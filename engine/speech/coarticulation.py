@@ -30,6 +30,7 @@ adds to whatever inline commands do.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Protocol
 
@@ -103,17 +104,64 @@ def articulation_tracks(phones: Sequence[Segment], table: TargetTable, times: Ar
 
 def _dominance_blend(times: np.ndarray, middles: np.ndarray, value: np.ndarray, dominance: np.ndarray,
                      anticipation: np.ndarray, carryover: np.ndarray, exponent: float) -> np.ndarray:
+    """Σ D·T / Σ D at every time, block by block over the phones within :func:`_reach_ms` of the block.
+
+    Phones farther away weigh less than 1e-18 of the nearest phone's dominance, so leaving them out
+    changes no result beyond rounding, and the cost grows with the length of the speech, not its square.
+    """
+    order = np.argsort(times, kind="stable")
+    sorted_times = times[order]
+    reach = _reach_ms(sorted_times, middles, dominance, anticipation, carryover, exponent)
+    tracks = np.empty((times.size, value.shape[1]))
+    for first in range(0, sorted_times.size, _BLOCK):
+        block = sorted_times[first:first + _BLOCK]
+        lo = int(np.searchsorted(middles, block[0] - reach, "left"))
+        hi = int(np.searchsorted(middles, block[-1] + reach, "right"))
+        lo = min(lo, max(int(np.searchsorted(middles, block[0])) - 1, 0))     # the nearest phone always counts
+        hi = max(hi, min(int(np.searchsorted(middles, block[-1])) + 1, middles.size))
+        phones = slice(lo, hi)
+        tracks[order[first:first + _BLOCK]] = _blend(block, middles[phones], value[phones], dominance[phones],
+                                                     anticipation[phones], carryover[phones], exponent)
+    return tracks
+
+
+_BLOCK = 1024
+_NEGLIGIBLE = 1e-18
+
+
+def _reach_ms(times: np.ndarray, middles: np.ndarray, dominance: np.ndarray, anticipation: np.ndarray,
+              carryover: np.ndarray, exponent: float) -> float:
+    """How far from a time a phone's middle may be and still matter (relative weight ≥ 1e-18).
+
+    The nearest phone is at most ``near`` away and weighs at least α_min·exp(−θ_max·near^c); each of the
+    N phones farther than ``reach`` weighs at most α_max·exp(−θ_min·reach^c): their sum stays below
+    1e-18 of the nearest one's weight.
+    """
+    index = np.clip(np.searchsorted(middles, times), 1, middles.size - 1) if middles.size > 1 else None
+    if index is None:
+        return float("inf")
+    near = float(np.max(np.minimum(np.abs(times - middles[index - 1]), np.abs(times - middles[index]))))
+    rates = np.concatenate([anticipation.ravel(), carryover.ravel()])
+    slowest, fastest = float(rates.min()), float(rates.max())
+    spread = math.log(float(dominance.max()) / float(dominance.min()))
+    needed = (spread + fastest * near ** exponent + math.log(middles.size / _NEGLIGIBLE)) / slowest
+    return float(needed ** (1.0 / exponent)) + near
+
+
+def _blend(times: np.ndarray, middles: np.ndarray, value: np.ndarray, dominance: np.ndarray,
+           anticipation: np.ndarray, carryover: np.ndarray, exponent: float) -> np.ndarray:
     tau = times[:, None] - middles[None, :]                       # T × N
     distance = np.abs(tau) ** exponent
     before = tau < 0
     tracks = np.empty((times.size, value.shape[1]))
+    nearest_phone = np.argmin(np.abs(tau), axis=1)
     for j in range(value.shape[1]):
         rate = np.where(before, anticipation[None, :, j], carryover[None, :, j])
         weight = dominance[None, :, j] * np.exp(-rate * distance)
         total = weight.sum(axis=1)
         blended = (weight * value[None, :, j]).sum(axis=1)
         # Far from every phone all dominances underflow: fall back to the nearest phone's target.
-        nearest = value[np.argmin(np.abs(tau), axis=1), j]
+        nearest = value[nearest_phone, j]
         tracks[:, j] = np.divide(blended, total, out=nearest.copy(), where=total > 1e-300)
     return tracks
 
@@ -130,6 +178,10 @@ def closure_window(times: np.ndarray, start: float, end: float) -> np.ndarray:
 
 def _enforce(tracks: np.ndarray, times: np.ndarray, starts: np.ndarray, ends: np.ndarray, value: np.ndarray,
              enforced: np.ndarray) -> None:
+    """Blend enforced targets in around their phones' middles; only the times inside each phone change."""
+    order = np.argsort(times, kind="stable")
+    sorted_times = times[order]
     for s, j in zip(*np.nonzero(enforced), strict=True):
-        w = closure_window(times, starts[s], ends[s])
-        tracks[:, j] = tracks[:, j] * (1 - w) + value[s, j] * w
+        inside = order[np.searchsorted(sorted_times, starts[s], "left"):np.searchsorted(sorted_times, ends[s], "right")]
+        w = closure_window(times[inside], starts[s], ends[s])
+        tracks[inside, j] = tracks[inside, j] * (1 - w) + value[s, j] * w

@@ -1,11 +1,13 @@
 """Festival backend of the synthesizer interface (§2.1): Finnish Suopuhe voices by default.
 
-Festival runs as a subprocess on a generated Scheme script that selects the
-voice, synthesizes the text as one utterance, saves the wave to a temporary
-file, and prints the Segment relation (name and end time of every phone),
-the Word relation, and for each phone the word it belongs to (through the
-SylStructure relation). Phone boundaries are Festival's own, seconds → ms,
-to the microsecond Festival prints.
+Festival runs as a subprocess on a generated Scheme script
+(:mod:`engine.speech.festival_script`) that selects the voice, cuts the text
+into utterances as Festival's tts mode does, and for each saves the wave to a
+temporary file and prints the Segment relation (name, end time and phone
+features of every phone), the Word relation, and for each phone the word it
+belongs to (through the SylStructure relation). Phone boundaries are
+Festival's own, seconds → ms, to the microsecond Festival prints; the
+utterances follow each other without a gap.
 
 Festival reads ISO-8859-1 (Latin-1). The text is NFC-normalised; typographic
 characters outside Latin-1 are transliterated (:data:`TRANSLITERATION`:
@@ -36,11 +38,25 @@ import subprocess
 import tempfile
 import time
 import unicodedata
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
-from engine.speech.synthesis import Segment, SynthesisError, Utterance, decode_wav
+from engine.speech.festival_script import (
+    VOICES_SCRIPT,
+    WAVE_FILE_PATTERN,
+    FestivalOutput,
+    parse_output,
+    parse_segments,
+    parse_voices,
+    scheme_string,
+    synthesis_script,
+)
+from engine.speech.synthesis import SynthesisError, Utterance, decode_wav
+
+__all__ = ["DEFAULT_VOICE", "FestivalSynthesizer", "parse_segments", "parse_voices", "prepare_text",
+           "scheme_string", "synthesis_script"]
 
 DEFAULT_VOICE = "suo_fi_lj_diphone"
 """Female Finnish voice (Suopuhe, Debian package ``festvox-suopuhe-lj``)."""
@@ -94,8 +110,9 @@ _STANDALONE_PUNCTUATION = [
 """Dashes and ellipses standing alone, rewritten before :data:`TRANSLITERATION` (see :func:`prepare_text`)."""
 
 _VOICE_NAME = re.compile(r"[A-Za-z0-9_]+\Z")
-_WAVE_FILE = "utterance.wav"
 _SCRIPT_FILE = "synthesize.scm"
+_POLL_SECONDS = 0.1
+_SETPRIV = shutil.which("setpriv")
 
 
 # ---------------------------------------------------------------------------
@@ -143,115 +160,6 @@ def prepare_text(text: str, source: str = "<text>") -> str:
     return prepared
 
 
-def scheme_string(text: str) -> str:
-    """``text`` as a Scheme string literal (backslashes and double quotes escaped)."""
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
-
-
-def synthesis_script(text: str, voice: str, wave_file: str = _WAVE_FILE) -> str:
-    """The Scheme program Festival runs: voice, synthesis, wave file, and the relations on stdout.
-
-    ``text`` must already be prepared (:func:`prepare_text`). Output lines the
-    parser reads all start with ``AP-``; anything else Festival or the voice
-    prints is ignored. Word names come last on their line, so they may hold
-    any character.
-    """
-    return f"""\
-(format t "\\nAP-VOICES")
-(mapcar (lambda (v) (format t "\\t%s" v)) (voice.list))
-(format t "\\n")
-(if (member_string "{voice}" (voice.list))
-  (begin
-    (voice_{voice})
-    (set! ap_utt (utt.synth (Utterance Text {scheme_string(text)})))
-    (utt.save.wave ap_utt {scheme_string(wave_file)} 'riff)
-    (format t "\\nAP-BEGIN\\n")
-    (mapcar
-      (lambda (w) (format t "AP-WORD\\t%s\\t%s\\n" (item.feat w "id") (item.name w)))
-      (utt.relation.items ap_utt 'Word))
-    (mapcar
-      (lambda (s)
-        (format t "AP-SEG\\t%f\\t%s\\t%s\\n"
-                (item.feat s "end") (item.feat s "R:SylStructure.parent.parent.id") (item.name s)))
-      (utt.relation.items ap_utt 'Segment))
-    (format t "AP-END\\n"))
-  (format t "\\nAP-NOVOICE\\n"))
-"""
-
-
-VOICES_SCRIPT = """\
-(format t "\\nAP-VOICES")
-(mapcar (lambda (v) (format t "\\t%s" v)) (voice.list))
-(format t "\\nAP-END\\n")
-"""
-
-
-# ---------------------------------------------------------------------------
-# Festival's output → segments
-# ---------------------------------------------------------------------------
-
-def parse_voices(stdout: str) -> list[str]:
-    """The voice names on the ``AP-VOICES`` line."""
-    for line in stdout.splitlines():
-        if line.startswith("AP-VOICES"):
-            return [name for name in line.split("\t")[1:] if name]
-    raise SynthesisError("Festival did not list its voices (is it a working Festival installation?)")
-
-
-def parse_segments(stdout: str) -> tuple[list[Segment], list[Segment]]:
-    """Phones and words from the ``AP-WORD`` / ``AP-SEG`` lines of :func:`synthesis_script`'s output.
-
-    Times: Festival's segment end times (seconds) × 1000, rounded to the
-    microsecond; each phone starts where the one before ends, the first at 0.
-    A phone's ``word`` is the name of its word in the SylStructure relation
-    ("" for pauses Festival inserts outside any word). Each word spans
-    exactly its phones; a word without phones is left out.
-    """
-    lines = stdout.splitlines()
-    try:
-        begin = lines.index("AP-BEGIN")
-        end = lines.index("AP-END", begin)
-    except ValueError:
-        raise SynthesisError("Festival's output has no segment list") from None
-    word_names: dict[str, str] = {}
-    word_order: list[str] = []
-    raw: list[tuple[str, float, str]] = []
-    for number, line in enumerate(lines[begin + 1:end], start=begin + 2):
-        kind, _, rest = line.partition("\t")
-        if kind == "AP-WORD":
-            word_id, _, name = rest.partition("\t")
-            word_names[word_id] = name
-            word_order.append(word_id)
-        elif kind == "AP-SEG":
-            fields = rest.split("\t", 2)
-            try:
-                end_s = float(fields[0])
-                word_id, label = fields[1], fields[2]
-            except (ValueError, IndexError):
-                raise SynthesisError(f"unreadable segment line {number} in Festival's output: {line!r}") from None
-            raw.append((label, round(end_s * 1000.0, 3), word_id))
-        elif line.strip():
-            raise SynthesisError(f"unexpected line {number} in Festival's output: {line!r}")
-    if not raw:
-        raise SynthesisError("Festival produced no phones")
-
-    phones: list[Segment] = []
-    spans: dict[str, list[float]] = {}
-    start = 0.0
-    for label, end_ms, word_id in raw:
-        if end_ms < start:
-            raise SynthesisError(
-                f"Festival's phone {label!r} ends at {end_ms} ms, before it starts ({start} ms)")
-        word = word_names.get(word_id, "")
-        phones.append(Segment(label, start, end_ms, word))
-        if word_id in word_names:
-            span = spans.setdefault(word_id, [start, end_ms])
-            span[1] = end_ms
-        start = end_ms
-    words = [Segment(word_names[w], spans[w][0], spans[w][1]) for w in word_order if w in spans]
-    return phones, words
-
-
 # ---------------------------------------------------------------------------
 # The synthesizer
 # ---------------------------------------------------------------------------
@@ -261,14 +169,20 @@ class FestivalSynthesizer:
 
     ``festival`` is the program (name on ``PATH`` or a path); ``timeout`` (s)
     bounds every Festival run — a run that takes longer is killed and
-    reported, never waited for.
+    reported, never waited for. ``cancelled``, when given, is asked every
+    0.1 s while Festival runs; once it answers ``True`` Festival is killed and
+    :class:`SynthesisCancelled` raised. Festival never outlives the process
+    that started it, whatever ends that process (``kill -9`` included): it
+    is started with the parent-death signal set (``setpriv --pdeathsig``).
     """
 
     default_voice = DEFAULT_VOICE
 
-    def __init__(self, festival: str = "festival", timeout: float = 120):
+    def __init__(self, festival: str = "festival", timeout: float = 600,
+                 cancelled: Callable[[], bool] | None = None):
         self.festival = str(festival)
         self.timeout = float(timeout)
+        self.cancelled = cancelled
         self._voices: list[str] | None = None
         self.last_run_seconds: float | None = None
         """Wall-clock time of the last Festival run (for benchmarks)."""
@@ -283,26 +197,24 @@ class FestivalSynthesizer:
         return list(self._voices)
 
     def synthesize(self, text: str, voice: str | None = None) -> Utterance:
-        """Speak ``text`` with ``voice`` (default :data:`DEFAULT_VOICE`)."""
+        """Speak ``text`` with ``voice`` (default :data:`DEFAULT_VOICE`), utterance by utterance."""
         voice = self.default_voice if voice is None else str(voice)
         if not _VOICE_NAME.match(voice):
             raise SynthesisError(f"{voice!r} is not a Festival voice name (letters, digits and _ only)")
         prepared = prepare_text(text)
-        stdout, stderr, wave_data = self._run(synthesis_script(prepared, voice), want_wave=True)
+        stdout, stderr, waves = self._run(synthesis_script(prepared, voice), want_waves=True)
         if "\nAP-NOVOICE" in stdout:
             self._voices = parse_voices(stdout)
             raise SynthesisError(missing_voice_message(voice, self._voices))
         if "AP-END" not in stdout.splitlines():
             raise SynthesisError(f"Festival failed to synthesize the text with voice {voice}"
                                  + _stderr_summary(stderr))
-        phones, words = parse_segments(stdout)
-        if not words:
+        parsed = parse_output(stdout)
+        if not parsed.words:
             raise SynthesisError(f"nothing to say: Festival found no words in {text.strip()!r}")
-        if wave_data is None:
-            raise SynthesisError("Festival wrote no wave file" + _stderr_summary(stderr))
-        samples, rate = decode_wav(wave_data, "Festival's wave")
-        samples = fit_to_duration(samples, rate, phones[-1].end_ms)
-        return Utterance(text=text, voice=voice, samples=samples, sample_rate=rate, phones=phones, words=words)
+        samples, rate = _joined_waves(parsed, waves, stderr)
+        return Utterance(text=text, voice=voice, samples=samples, sample_rate=rate, phones=parsed.phones,
+                         words=parsed.words, phoneset=parsed.phoneset, phone_features=parsed.features)
 
     # -- running Festival ------------------------------------------------------
 
@@ -323,37 +235,78 @@ class FestivalSynthesizer:
                 f"sudo apt-get install {FESTIVAL_PACKAGE} {VOICE_PACKAGES[DEFAULT_VOICE]}")
         return found
 
-    def _run(self, script: str, want_wave: bool = False) -> tuple[str, str, bytes | None]:
-        """Run Festival on ``script`` in a fresh temporary folder: (stdout, stderr, wave bytes or None)."""
+    def _run(self, script: str, want_waves: bool = False) -> tuple[str, str, dict[str, bytes]]:
+        """Run Festival on ``script`` in a fresh temporary folder: (stdout, stderr, wave files by name)."""
         program = self.executable()
         with tempfile.TemporaryDirectory(prefix="artificial-person-festival-") as folder:
             Path(folder, _SCRIPT_FILE).write_bytes(script.encode("latin-1"))
             started = time.perf_counter()
             try:
                 process = subprocess.Popen(
-                    [program, "--batch", _SCRIPT_FILE], cwd=folder, stdin=subprocess.DEVNULL,
-                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+                    [*dies_with_parent(), program, "--batch", _SCRIPT_FILE], cwd=folder,
+                    stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                    start_new_session=True)
             except OSError as exc:
                 raise SynthesisError(f"cannot run Festival ({program}): {exc.strerror or exc}; "
                                      f"install the Debian package {FESTIVAL_PACKAGE}") from None
             try:
-                out, err = process.communicate(timeout=self.timeout)
-            except subprocess.TimeoutExpired:
-                _kill_group(process)
-                raise SynthesisError(
-                    f"Festival did not finish within {self.timeout:g} s and was stopped "
-                    f"(a very long text? split it, or allow more time)") from None
+                out, err = self._wait(process)
             except BaseException:
                 _kill_group(process)
                 raise
             self.last_run_seconds = time.perf_counter() - started
-            wave_path = Path(folder, _WAVE_FILE)
-            wave_data = wave_path.read_bytes() if want_wave and wave_path.is_file() else None
+            waves = ({path.name: path.read_bytes() for path in Path(folder).glob("*.wav")}
+                     if want_waves else {})
         stdout, stderr = out.decode("latin-1"), err.decode("latin-1")
         if process.returncode != 0 and "AP-END" not in stdout.splitlines():
             raise SynthesisError(f"Festival ({program}) failed with exit status {process.returncode}"
                                  + _stderr_summary(stderr))
-        return stdout, stderr, wave_data
+        return stdout, stderr, waves
+
+    def _wait(self, process: subprocess.Popen) -> tuple[bytes, bytes]:
+        """Festival's output once it ends; killed on timeout or when :attr:`cancelled`."""
+        deadline = time.monotonic() + self.timeout
+        while True:
+            try:
+                return process.communicate(timeout=_POLL_SECONDS if self.cancelled else self.timeout)
+            except subprocess.TimeoutExpired:
+                if self.cancelled is not None and self.cancelled():
+                    _kill_group(process)
+                    raise SynthesisCancelled("speech synthesis was cancelled") from None
+                if time.monotonic() >= deadline:
+                    _kill_group(process)
+                    raise SynthesisError(
+                        f"Festival did not finish within {self.timeout:g} s and was stopped "
+                        f"(a very long text? split it, or allow more time)") from None
+
+
+class SynthesisCancelled(SynthesisError):
+    """The synthesis was cancelled by whoever asked for it; Festival was stopped."""
+
+
+def dies_with_parent() -> list[str]:
+    """The command prefix that makes a child get SIGKILL when its parent dies (``setpriv --pdeathsig KILL``;
+    nothing where util-linux's setpriv is absent, which Debian does not allow: util-linux is essential)."""
+    return [_SETPRIV, "--pdeathsig", "KILL", "--"] if _SETPRIV else []
+
+
+def _joined_waves(parsed: FestivalOutput, waves: dict[str, bytes], stderr: str) -> tuple[np.ndarray, int]:
+    """The utterances' waves one after the other, each cut (or padded) to end exactly where its phones end."""
+    pieces: list[np.ndarray] = []
+    rate = 0
+    written = 0
+    for number, end_ms in zip(parsed.utterance_numbers, parsed.utterance_ends_ms, strict=True):
+        name = WAVE_FILE_PATTERN.format(number)
+        if name not in waves:
+            raise SynthesisError(f"Festival wrote no wave file for utterance {number}" + _stderr_summary(stderr))
+        samples, this_rate = decode_wav(waves[name], f"Festival's wave {name}")
+        if rate and this_rate != rate:
+            raise SynthesisError(f"Festival's utterances have different sample rates ({rate}, {this_rate} Hz)")
+        rate = this_rate
+        wanted = round(end_ms * rate / 1000.0) - written     # the piece ends on the sample nearest its end
+        pieces.append(fit_to_length(samples, wanted))
+        written += wanted
+    return np.concatenate(pieces) if pieces else np.zeros(0, np.float32), rate
 
 
 def missing_voice_message(voice: str, installed: list[str]) -> str:
@@ -374,7 +327,12 @@ def fit_to_duration(samples: np.ndarray, rate: int, duration_ms: float) -> np.nd
     segment (a silent pause); cutting it there makes the phones cover the
     waveform exactly, so audio, phones and video all end together.
     """
-    n = round(float(duration_ms) * rate / 1000.0)
+    return fit_to_length(samples, round(float(duration_ms) * rate / 1000.0))
+
+
+def fit_to_length(samples: np.ndarray, n: int) -> np.ndarray:
+    """``samples`` cut or zero-padded to ``n`` samples."""
+    n = max(0, int(n))
     if len(samples) >= n:
         return np.ascontiguousarray(samples[:n])
     return np.concatenate([samples, np.zeros(n - len(samples), dtype=samples.dtype)])

@@ -14,8 +14,10 @@ an error points, :func:`described_error` words it for a dialog.
 
 from __future__ import annotations
 
+import copy
 import itertools
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -57,18 +59,28 @@ class SayResult:
         return self.speech.duration_ms / 1000.0
 
 
-def run_say(request: SayRequest, folder: str | Path) -> SayResult:
+def run_say(request: SayRequest, folder: str | Path, cancelled: Callable[[], bool] | None = None) -> SayResult:
     """Synthesize and articulate ``request``; the audio is written to a new WAV (``say-N.wav``) in ``folder``.
 
     Errors in the text are :class:`~engine.errors.UserError` s naming
-    :data:`TEXT_NAME`, its line and (in the message) the column.
+    :data:`TEXT_NAME`, its line and (in the message) the column. ``cancelled``
+    is polled while Festival runs (when the request brings no synthesizer of
+    its own): once it is true, Festival is stopped and
+    :class:`~engine.speech.festival.SynthesisCancelled` raised.
     """
     # Imported here: the speech pipeline loads Festival's helpers and the command library's
     # parser, which a front end should not pay for before the first Say.
+    from engine.speech.festival import FestivalSynthesizer
     from engine.speech.say import speak
     from engine.speech.synthesis import write_wav
 
-    speech = speak(request.text, request.model, synthesizer=request.synthesizer, voice=request.voice,
+    synthesizer = request.synthesizer
+    if synthesizer is None:
+        synthesizer = FestivalSynthesizer(cancelled=cancelled)
+    elif cancelled is not None and isinstance(synthesizer, FestivalSynthesizer):
+        synthesizer = copy.copy(synthesizer)
+        synthesizer.cancelled = cancelled
+    speech = speak(request.text, request.model, synthesizer=synthesizer, voice=request.voice,
                    coarticulation=request.coarticulation, prosody_seed=request.prosody_seed, name=TEXT_NAME)
     wav = Path(folder) / f"say-{next(_counter)}.wav"
     write_wav(wav, speech.utterance)

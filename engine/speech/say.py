@@ -14,7 +14,7 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -23,10 +23,11 @@ from engine.commands.command_files import Activation
 from engine.errors import CommandError
 from engine.model.model import Model
 from engine.script.inline_commands import Script, anchored_commands, parse_script
-from engine.speech.articulation import ArticulationTable, load_articulation
+from engine.speech.articulation import ArticulationTable, table_for
 from engine.speech.coarticulation import articulate
 from engine.speech.festival import prepare_text
 from engine.speech.prosody import prosody_commands
+from engine.speech.reading_checks import reading_warnings
 from engine.speech.synthesis import Synthesizer, Utterance
 from engine.timeline.timeline import Timeline
 
@@ -39,6 +40,9 @@ class Speech:
     utterance: Utterance
     activations: list[Activation]
     timeline: Timeline
+    warnings: list[str] = field(default_factory=list)
+    """Tokens Festival reads oddly (numbers, dates, abbreviations), ``NAME:LINE: column C: …`` each
+    (:func:`engine.speech.reading_checks.reading_warnings`)."""
 
     @property
     def duration_ms(self) -> float:
@@ -66,8 +70,9 @@ def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice
     """Synthesize ``text`` (with inline commands) and build the timeline that animates it.
 
     ``synthesizer`` defaults to Festival (:class:`engine.speech.festival.FestivalSynthesizer`),
-    ``library`` to the shipped command library, ``table`` to the Finnish
-    articulation table; ``name`` is what errors call the text. The files an
+    ``library`` to the shipped command library, ``table`` to the shipped
+    articulation table of the voice's phone set (Finnish, English), any phone
+    without a row getting one derived from its phone features; ``name`` is what errors call the text. The files an
     utterance becomes (video, audio, tables) are written by
     :func:`engine.outputs.speech_files.write_speech_files`.
     """
@@ -78,8 +83,8 @@ def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice
     # (the synthesizer only sees the text with the commands taken out).
     prepare_text(text, name)
     library = load_library() if library is None else library
-    table = load_articulation() if table is None else table
-    table.check(model)
+    if table is not None:
+        table.check(model)
     # Check the inline commands before spending time on synthesis.
     translate([replace(c.command, arguments={"at": 0.0, **c.command.arguments}) for c in script.commands],
               library, model)
@@ -88,10 +93,13 @@ def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice
 
         synthesizer = FestivalSynthesizer()
     utterance = synthesizer.synthesize(script.text, voice)
+    table = table_for(utterance, table)      # the voice's phone set; rows it lacks come from phone features
+    table.check(model)
     activations = articulate(utterance.phones, table, coarticulation)
     commands = anchored_commands(script, utterance.words)
     if prosody_seed is not None:
         commands += prosody_commands(utterance.words, utterance.phones, utterance.duration_ms, seed=prosody_seed)
     activations += translate(commands, library, model)
-    return Speech(script, utterance, activations, Timeline(activations, model))
+    warnings = [warning.located(name) for warning in reading_warnings(text, voice)]
+    return Speech(script, utterance, activations, Timeline(activations, model), warnings)
 

@@ -34,7 +34,7 @@ from __future__ import annotations
 import csv
 import io
 import wave
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Protocol, runtime_checkable
 
@@ -42,6 +42,7 @@ import numpy as np
 
 from engine.errors import UserError
 from engine.formats.atomic import atomic_write_bytes, atomic_write_text
+from engine.speech.phone_features import PhoneFeatures
 
 PHONES_CSV_HEADER = ("start_ms", "end_ms", "phone", "word")
 
@@ -87,6 +88,10 @@ class Utterance:
     """Contiguous, in time order, covering 0 … :attr:`duration_ms`."""
     words: list[Segment]
     """In time order; each spans its phones exactly."""
+    phoneset: str = ""
+    """The voice's phone set (Festival: ``finnish``, ``radio`` …; "" when the synthesizer does not say)."""
+    phone_features: dict[str, PhoneFeatures] = field(default_factory=dict)
+    """Each phone's features from the phone set (vowel height, rounding, place …), for articulation."""
 
     @property
     def duration_ms(self) -> float:

@@ -222,14 +222,14 @@ class ScriptPanel(QWidget):
             return
         request = self.request()
         folder = Path(self._scratch.name)
-        job = self.job = Job(lambda _job: run_say(request, folder))
+        job = self.job = Job(lambda job: run_say(request, folder, lambda: job.cancelled))
         job.ended.connect(self._on_said)
         self._show_busy(True)
         self.info.setText("Synthesizing…")
         job.start()
 
     def cancel(self) -> None:
-        """Forget the running Say (Festival finishes in the background; its result is dropped)."""
+        """Stop the running Say: Festival is killed within 0.1 s and nothing it made is kept."""
         if self.job is None:
             return
         self.job.cancel()
@@ -256,7 +256,13 @@ class ScriptPanel(QWidget):
         self.result = result
         self.export_button.setEnabled(True)
         phones = result.speech.utterance.phones
-        self.info.setText(f"{result.duration:.2f} s, {len(phones)} phones, voice {result.speech.utterance.voice}")
+        summary = f"{result.duration:.2f} s, {len(phones)} phones, voice {result.speech.utterance.voice}"
+        warnings = result.speech.warnings
+        if warnings:   # what Festival read oddly: the user should write it out
+            summary += "\n" + "\n".join(f"Warning: {w}" for w in warnings[:5])
+            if len(warnings) > 5:
+                summary += f"\n… and {len(warnings) - 5} more"
+        self.info.setText(summary)
         self.said.emit(result)
 
     def _play(self, result: SayResult) -> None:
