@@ -27,7 +27,7 @@ from engine.speech.articulation import ArticulationTable, table_for
 from engine.speech.coarticulation import articulate
 from engine.speech.festival import prepare_text
 from engine.speech.prosody import prosody_commands
-from engine.speech.reading_checks import reading_warnings
+from engine.speech.reading_checks import ReadingWarning, reading_warnings
 from engine.speech.synthesis import Synthesizer, Utterance
 from engine.timeline.timeline import Timeline
 
@@ -40,9 +40,14 @@ class Speech:
     utterance: Utterance
     activations: list[Activation]
     timeline: Timeline
-    warnings: list[str] = field(default_factory=list)
-    """Tokens Festival reads oddly (numbers, dates, abbreviations), ``NAME:LINE: column C: …`` each
-    (:func:`engine.speech.reading_checks.reading_warnings`)."""
+    reading_warnings: list[ReadingWarning] = field(default_factory=list)
+    """Tokens Festival reads oddly: numbers, dates, abbreviations
+    (:func:`~engine.speech.reading_checks.reading_warnings`)."""
+
+    @property
+    def warnings(self) -> list[str]:
+        """The reading warnings as lines ``NAME:LINE: column C: 'token': advice``."""
+        return [warning.located(self.script.name) for warning in self.reading_warnings]
 
     @property
     def duration_ms(self) -> float:
@@ -100,6 +105,5 @@ def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice
     if prosody_seed is not None:
         commands += prosody_commands(utterance.words, utterance.phones, utterance.duration_ms, seed=prosody_seed)
     activations += translate(commands, library, model)
-    warnings = [warning.located(name) for warning in reading_warnings(text, voice)]
-    return Speech(script, utterance, activations, Timeline(activations, model), warnings)
+    return Speech(script, utterance, activations, Timeline(activations, model), reading_warnings(text, voice))
 

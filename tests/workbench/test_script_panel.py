@@ -212,8 +212,8 @@ def test_reading_warnings_are_shown_after_say(head_window, qtbot):
     panel.editor.setPlainText("Ostin mm. omenoita.")
     with qtbot.waitSignal(panel.said, timeout=60000):
         panel.say()
-    assert "Warning: text:1: column 7: 'mm.'" in panel.info.text()
-    assert panel.info.isVisible()
+    assert "Festival reads 'mm.' oddly" in panel.info.text()
+    assert "Warning: text:1: column 7: 'mm.': Festival reads this abbreviation" in panel.info.toolTip()
 
 
 def test_inline_commands_are_highlighted_and_stray_brackets_marked(make_window, synthetic_model_path):

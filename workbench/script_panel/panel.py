@@ -257,11 +257,11 @@ class ScriptPanel(QWidget):
         self.export_button.setEnabled(True)
         phones = result.speech.utterance.phones
         summary = f"{result.duration:.2f} s, {len(phones)} phones, voice {result.speech.utterance.voice}"
-        warnings = result.speech.warnings
-        if warnings:   # what Festival read oddly: the user should write it out
-            summary += "\n" + "\n".join(f"Warning: {w}" for w in warnings[:5])
-            if len(warnings) > 5:
-                summary += f"\n… and {len(warnings) - 5} more"
+        tokens = [warning.token for warning in result.speech.reading_warnings]
+        if tokens:   # what Festival read oddly, in one short line; the whole advice in the tooltip
+            shown = ", ".join(f"'{t}'" for t in tokens[:4]) + (" …" if len(tokens) > 4 else "")
+            summary += f"\nFestival reads {shown} oddly: write out in words"
+        self.info.setToolTip("\n".join(f"Warning: {w}" for w in result.speech.warnings))
         self.info.setText(summary)
         self.said.emit(result)
 
