@@ -50,12 +50,8 @@ def read_c3d(path: str | Path) -> Recording:
     scale = header.scale if scale is None or scale == 0 else scale
     is_float = scale < 0
     word = 4 if is_float else 2
-    analog_words = _analog_words(header, params, rate)
-    data_block = params.number("POINT:DATA_START") or header.data_block
-    start = (int(data_block) - 1) * 512
-    if not 512 <= start <= len(data):
-        raise MarkerFileError(f"the point data are said to start in block {int(data_block)}, outside the file",
-                              file=path)
+    start = _data_start(header, params, len(data), path)
+    analog_words = _analog_words(header, params, rate, n_points, word, len(data) - start, notes)
     frame_bytes = (4 * n_points + analog_words) * word
     available = (len(data) - start) // frame_bytes
     n_frames = _frame_count(header, params, available, notes, path)
@@ -71,11 +67,15 @@ def read_c3d(path: str | Path) -> Recording:
         valid = ints[..., 3] >= 0
     valid &= np.all(np.isfinite(xyz), axis=-1)
     xyz *= scales[None, :, None]
+    xyz_read = xyz.copy() if not valid.any() else xyz
     xyz[~valid] = np.nan
     positions = zero_triplets_to_nan(xyz)
     if n_frames and not np.isfinite(positions).any():
+        hidden = int(np.count_nonzero(np.any(xyz_read != 0, axis=-1) & np.all(np.isfinite(xyz_read), axis=-1)))
         raise MarkerFileError(f"every sample of all {n_points} points in {n_frames} frames is marked missing "
-                              "(negative residual, not finite or 0 0 0): nothing to import", file=path)
+                              "(negative residual, not finite or 0 0 0): nothing to import"
+                              + (f"; {hidden} samples hold coordinates but a negative residual word, which "
+                                 "the writer uses for an invalid sample" if hidden else ""), file=path)
     first = _first_frame(header, params)
     units = sorted(set(_unit_texts(params, n_points)))
     return Recording(labels=labels, positions=positions, rate_hz=rate, source=path.name, format="c3d",
@@ -120,12 +120,39 @@ def _point_count(header: C3dHeader, params: C3dParameters, notes: list[str]) -> 
     return count
 
 
-def _analog_words(header: C3dHeader, params: C3dParameters, point_rate: float) -> int:
-    """Analog samples stored after each frame's points: ANALOG:USED × (ANALOG:RATE / POINT:RATE), else the header's."""
+def _data_start(header: C3dHeader, params: C3dParameters, size: int, path: Path) -> int:
+    """Byte offset of the frames: the header's block, else ``POINT:DATA_START`` (some writers put 1 there)."""
+    for block in (header.data_block, params.number("POINT:DATA_START")):
+        if block is not None and np.isfinite(block) and header.parameter_block < block and (block - 1) * 512 < size:
+            return (int(block) - 1) * 512
+    raise MarkerFileError(f"the point data are said to start in block {header.data_block}, outside the file",
+                          file=path)
+
+
+def _analog_words(header: C3dHeader, params: C3dParameters, point_rate: float, n_points: int, word: int,
+                  data_bytes: int, notes: list[str]) -> int:
+    """Analog samples stored after each frame's points.
+
+    ANALOG:USED × (ANALOG:RATE / POINT:RATE) and the header's count usually
+    agree; where they do not, the one whose frames fill the data to the
+    declared frame count wins (the header's when both or neither do).
+    """
     used, rate = params.number("ANALOG:USED"), params.number("ANALOG:RATE")
-    if used is None or rate is None or not np.isfinite(rate) or rate <= 0:
+    if used is None or rate is None or not np.isfinite(rate) or rate <= 0 or used < 0:
         return header.analog_per_frame
-    return int(used) * round(rate / point_rate)
+    from_parameters = int(used) * round(rate / point_rate)
+    if from_parameters == header.analog_per_frame:
+        return from_parameters
+    declared = params.number("POINT:FRAMES") or (header.last_frame - header.first_frame + 1)
+
+    def fills(analog: int) -> bool:
+        return data_bytes // ((4 * n_points + analog) * word) == declared
+
+    chosen = from_parameters if fills(from_parameters) and not fills(header.analog_per_frame) \
+        else header.analog_per_frame
+    notes.append(f"analog samples per frame: the header says {header.analog_per_frame}, ANALOG:USED × rate ratio "
+                 f"{from_parameters}; {chosen} used, as the data fill")
+    return chosen
 
 
 def _frame_count(header: C3dHeader, params: C3dParameters, available: int, notes: list[str], path: Path) -> int:

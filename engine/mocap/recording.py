@@ -52,9 +52,17 @@ class Recording:
         return int(self.positions.shape[0])
 
 
+UNIT_WORDS = {"millimeters": 1.0, "millimetres": 1.0, "centimeters": 10.0, "centimetres": 10.0,
+              "meters": 1000.0, "metres": 1000.0}
+"""Units written out; a writer may cut them to a fixed width (``'mete'`` in some C3D files)."""
+
+
 def unit_scale(unit: str, path: Path, line: int | None = None) -> float:
-    """Millimetres per file unit for ``mm``, ``cm`` or ``m`` (any case)."""
-    scale = UNIT_SCALE.get(unit.replace("\0", " ").strip().lower())
+    """Millimetres per file unit for ``mm``, ``cm`` or ``m`` (any case; NUL padding and spelled-out units too)."""
+    text = unit.replace("\0", " ").strip().lower()
+    scale = UNIT_SCALE.get(text)
+    if scale is None and len(text) >= 3:
+        scale = next((v for word, v in UNIT_WORDS.items() if word.startswith(text)), None)
     if scale is None:
         raise MarkerFileError(f"unknown length unit '{unit.strip()}' (use mm, cm or m)", file=path, line=line)
     return scale
