@@ -34,13 +34,15 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Iterator
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from engine.commands.command_definition import AMPLITUDE, IMPLICIT_ARGUMENTS, START, CommandDefinition, Curve
 from engine.commands.interpolation import INTERPOLATIONS
+from engine.commands.limits import LimitProblem, check_time
 from engine.commands.procedures import check_definition
 from engine.errors import LibraryError
+from engine.formats.text_files import read_bounded_bytes
 
 # The command types live in engine.commands.command_definition (the procedures need them too);
 # what a library file reads is importable from here as well.
@@ -69,10 +71,7 @@ _IDENTIFIER = re.compile(rf"^{_NAME}$")
 def load_library_file(path: str | Path) -> list[CommandDefinition]:
     """Every command defined in one library file."""
     path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise LibraryError(f"cannot read library file: {exc.strerror or exc}", file=path) from None
+    raw = read_bounded_bytes(path, error=LibraryError, what="library file")
     try:
         text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
@@ -104,6 +103,9 @@ class _Statement:
     value: str
     line: int
     char_lines: list[int]          # line number of every character of value
+    continuations: list[str] = field(default_factory=list)
+    """Text of the lines that continue the value, joined onto it once the statement is complete
+    (joining as each line comes would copy the value again for every line: quadratic time)."""
 
     def line_of(self, offset: int) -> int:
         if not self.char_lines:
@@ -123,7 +125,7 @@ def _statements(text: str, file: str) -> list[_Statement]:
         match = _STATEMENT.match(content)
         if previous is not None and _continues(previous, content, match):
             addition = " " + content.strip()
-            previous.value += addition
+            previous.continuations.append(addition)
             previous.char_lines += [number] * len(addition)
             continue
         if match is None:
@@ -134,6 +136,9 @@ def _statements(text: str, file: str) -> list[_Statement]:
             raise LibraryError(f"a directive cannot be scaled: '${name} * {scale}'", file=file, line=number)
         stripped = value.strip()
         statements.append(_Statement(bool(dollar), name, scale, stripped, number, [number] * len(stripped)))
+    for statement in statements:
+        statement.value += "".join(statement.continuations)
+        statement.continuations.clear()
     return statements
 
 
@@ -144,7 +149,8 @@ def _continues(previous: _Statement, content: str, match: re.Match[str] | None) 
         return False
     if re.match(r"[-+.\d]", text):
         return True                                  # curve data: '833,-0.025; 1000,0'
-    open_list = previous.value.rstrip().endswith((",", ";"))
+    last = previous.continuations[-1] if previous.continuations else previous.value
+    open_list = last.rstrip().endswith((",", ";"))
     if previous.directive and previous.name in ("optional", "mandatory") and open_list:
         return True                                  # 'period=500,' after '$optional = …,'
     return open_list and match is None
@@ -263,6 +269,10 @@ def _curve(st: _Statement, file: str) -> Curve:
         if len(parts) != 2:
             raise LibraryError(f"'{item}' in line '{st.name}' is not one 'time,value' pair", file=file, line=line)
         t = _number(parts[0], f"a time in line '{st.name}'", file, line)
+        try:
+            check_time(t, f"a time in line '{st.name}'")
+        except LimitProblem as exc:
+            raise LibraryError(str(exc), file=file, line=line) from None
         v = _number(parts[1], f"a value in line '{st.name}'", file, line)
         if times and t <= times[-1]:
             raise LibraryError(f"times in line '{st.name}' must increase: {_fmt(t)} comes after "

@@ -60,12 +60,14 @@ def parse_script(source: str, name: str = "<text>") -> Script:
     words: list[str] = []
     commands: list[InlineCommand] = []
     position = 0
+    lines = _LineCounter(source)
     for match in _TAG.finditer(source):
         before = source[position:match.start()]
         _check_no_stray_brackets(source, position, match.start(), name)
         pieces.append(before + " ")
         words += _WORD.findall(before)
-        commands.append(InlineCommand(_command(match.group(0), source, match.start(), name), len(words)))
+        line, column = lines.at(match.start())
+        commands.append(InlineCommand(_command(match.group(0), line, column, name), len(words)))
         position = match.end()
     _check_no_stray_brackets(source, position, len(source), name)
     pieces.append(source[position:])
@@ -118,8 +120,7 @@ def _letters(word: str) -> str:
     return "".join(c for c in unicodedata.normalize("NFC", word.lower()) if c.isalnum())
 
 
-def _command(tag: str, source: str, offset: int, name: str) -> HighLevelCommand:
-    line, column = _line_column(source, offset)
+def _command(tag: str, line: int, column: int, name: str) -> HighLevelCommand:
     if not _WELL_FORMED.match(tag):
         raise CommandError(f"column {column}: '{_short(tag)}' is not an inline command; write "
                            "<Name argument=\"value\" …/> (self-closing)", file=name, line=line)
@@ -138,6 +139,24 @@ def _check_no_stray_brackets(source: str, start: int, end: int, name: str) -> No
             line, column = _line_column(source, i)
             raise CommandError(f"column {column}: a '{source[i]}' that does not belong to an inline command "
                                "<Name …/>", file=name, line=line)
+
+
+class _LineCounter:
+    """Line and column of rising offsets in one text, counting each stretch of it once (linear time)."""
+
+    def __init__(self, source: str):
+        self.source = source
+        self.offset = 0
+        self.line = 1
+        self.line_start = 0
+
+    def at(self, offset: int) -> tuple[int, int]:
+        newlines = self.source.count("\n", self.offset, offset)
+        if newlines:
+            self.line += newlines
+            self.line_start = self.source.rfind("\n", self.offset, offset) + 1
+        self.offset = offset
+        return self.line, offset - self.line_start + 1
 
 
 def _line_column(source: str, offset: int) -> tuple[int, int]:

@@ -92,7 +92,7 @@ class Timeline:
         At most :data:`engine.commands.limits.MAX_FRAMES` frames, ``fps`` at most
         :data:`~engine.commands.limits.MAX_FPS`, times within ±24 hours; beyond them a :class:`UserError`.
         """
-        end = self.end if end is None else end
+        end = max(self.end, start) if end is None else end     # keys all before start: the start frame alone
         try:
             count = frame_count(start, end, fps)
         except LimitProblem as exc:

@@ -39,6 +39,7 @@ from numpy.typing import ArrayLike
 
 from engine.commands.command_files import format_number
 from engine.errors import UserError
+from engine.formats.text_files import read_bounded_text
 from engine.model.model import Model
 
 TIME_COLUMN = "time_ms"
@@ -111,11 +112,7 @@ class TracksTable:
 
 def read_tracks_csv(path: str | Path, model: Model) -> TracksTable:
     """Read a tracks CSV for ``model``; bad files raise :class:`UserError` with file and line."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise UserError(f"cannot read the tracks file: {getattr(exc, 'strerror', None) or exc}", file=path) from None
+    text = read_bounded_text(path, what="tracks file")
     return parse_tracks_csv(text, model, str(path))
 
 
@@ -130,7 +127,11 @@ def parse_tracks_csv(text: str, model: Model, name: str = "<tracks>") -> TracksT
     Traceback (most recent call last):
     engine.errors.UserError: t.csv:2: not a number: 'zero'
     """
-    rows = list(csv.reader(io.StringIO(text)))
+    reader = csv.reader(io.StringIO(text, newline=""))
+    try:
+        rows = list(reader)
+    except csv.Error as exc:                   # e.g. a NUL byte, a quote left open
+        raise UserError(f"malformed CSV: {exc}", file=name, line=reader.line_num) from None
     if not rows or not rows[0]:
         raise UserError("empty tracks file: expected a header 'time_ms,<parameter>,…'", file=name, line=1)
     header = [cell.strip() for cell in rows[0]]
