@@ -4,9 +4,11 @@ VTK's readers (STL, legacy VTK, VTP/VTU, OFF, …) segfault or loop forever on
 some damaged files. :func:`read_in_child` runs the reader in a fresh Python
 process and waits at most ``timeout`` seconds: a crash, a hang or an
 exception there becomes a :class:`~engine.errors.MeshImportError` naming the
-file here, and the workbench keeps its unsaved work. The child dies with its
-parent: it watches its stdin, a pipe only the parent holds open, and exits
-when that closes, whatever ended the parent (even ``kill -9``).
+file here, and the workbench keeps its unsaved work. The child's address
+space is capped (2 GiB plus 50 bytes per byte of the file), so a damaged count
+cannot make it take the machine's memory. The child dies with its parent: it
+watches its stdin, a pipe only the parent holds open, and exits when that
+closes, whatever ended the parent (even ``kill -9``).
 
 Run as ``python -m engine.formats.mesh_child MESH OUT.npz`` (the parent does
 this); the arrays come back in an ``.npz`` (no pickles).
@@ -43,6 +45,8 @@ _DEFAULT_PART = "surface"
 _USER_ERROR_STATUS = 3
 #: Seconds allowed for starting Python and VTK, plus one second for every 20 MB of file.
 _BASE_TIMEOUT_S, _BYTES_PER_SECOND = 60.0, 20e6
+#: Address space the child may use: 2 GiB (Python, VTK and a small mesh take 0.4) plus 50 bytes per file byte.
+_BASE_MEMORY, _MEMORY_PER_FILE_BYTE = 2 << 30, 50
 
 
 def default_timeout(path: Path) -> float:
@@ -83,8 +87,9 @@ def read_in_child(path: Path, timeout: float | None = None) -> RawMesh:
             raise MeshImportError(lines[-1] if lines else "cannot read as a mesh", file=path)
         if status < 0:
             name = signal.Signals(-status).name if -status in signal.Signals._value2member_map_ else str(-status)
-            raise MeshImportError(f"VTK's reader crashed on this file ({name}): it is damaged or not in the "
-                                  "format its extension says", file=path)
+            raise MeshImportError(f"VTK's reader crashed on this file ({name}): it is damaged, not in the "
+                                  "format its extension says, or asks for more memory than its size can "
+                                  "explain", file=path)
         if status != 0 or not out.exists():
             raise MeshImportError(f"VTK's reader failed on this file (exit status {status}): it is damaged or "
                                   "not in the format its extension says", file=path)
@@ -113,9 +118,25 @@ def _exit_when_parent_goes() -> None:
     os._exit(70)
 
 
+def _limit_memory(path: Path) -> None:
+    """Cap the child's address space: a damaged count makes VTK allocate tens of GB, which on a
+    shared machine would push everything else out of memory before any timeout fires."""
+    try:
+        import resource
+    except ImportError:         # not on Windows: the timeout alone guards there
+        return
+    size = path.stat().st_size if path.is_file() else 0
+    limit = _BASE_MEMORY + _MEMORY_PER_FILE_BYTE * size
+    _soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+    if hard != resource.RLIM_INFINITY:
+        limit = min(limit, hard)
+    resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+
+
 def _child_main(argv: list[str]) -> int:
     threading.Thread(target=_exit_when_parent_goes, daemon=True).start()
     path, out = Path(argv[0]), Path(argv[1])
+    _limit_memory(path)
     try:
         vertices, faces, part_names, face_part = read_with_pyvista(path)
     except UserError as exc:

@@ -15,7 +15,7 @@ from engine.errors import MeshImportError
 from engine.formats.mesh_child import read_in_child
 from engine.formats.mesh_io import import_mesh
 
-pytest.importorskip("pyvista")
+pv = pytest.importorskip("pyvista")
 
 #: An unstructured grid whose tetrahedron names point 900000 of 4: VTK's surface filter segfaults on it.
 SEGFAULTING_VTK = ("# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n"
@@ -39,13 +39,48 @@ def test_the_cli_says_one_line_where_vtk_crashes(tmp_path):
     assert result.stderr.startswith(f"error: {path}: VTK's reader crashed") and result.stderr.count("\n") == 1
 
 
+def _new_children(of: int, known: set[int]) -> list[int]:
+    return [c for c in _children(of) if c not in known]
+
+
+def _freeze_the_reader_when_it_starts(of: int, known: set[int], frozen: list[int]) -> None:
+    """Stop (SIGSTOP) the first new child of ``of``: from outside, a reader that never returns."""
+    for _ in range(6000):                           # up to ten minutes on a loaded machine
+        found = _new_children(of, known)
+        if found:
+            os.kill(found[0], signal.SIGSTOP)
+            frozen.append(found[0])
+            return
+        time.sleep(0.1)
+
+
+@pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="reads the process tree from /proc")
 def test_a_reader_that_never_returns_is_stopped(tmp_path):
-    """A named pipe nobody writes to: VTK's STL reader blocks on it for ever."""
-    fifo = tmp_path / "never.stl"
-    os.mkfifo(fifo)
-    with pytest.raises(MeshImportError, match="did not finish within 3 s") as info:
-        read_in_child(fifo, timeout=3)
-    assert str(info.value).startswith(str(fifo))
+    import threading
+
+    path = tmp_path / "sphere.stl"
+    pv.Sphere().save(path)
+    frozen: list[int] = []
+    watcher = threading.Thread(target=_freeze_the_reader_when_it_starts,
+                               args=(os.getpid(), set(_children(os.getpid())), frozen))
+    watcher.start()
+    try:
+        with pytest.raises(MeshImportError, match="did not finish within 20 s") as info:
+            read_in_child(path, timeout=20)
+    finally:
+        watcher.join()
+    assert str(info.value).startswith(str(path))
+    assert frozen and not _alive(frozen[0]), "the frozen reader was killed, not left behind"
+
+
+def test_a_count_asking_for_gigabytes_is_refused_without_taking_them(tmp_path):
+    """A FIELD array of 2e9 × 3 floats: VTK would allocate 24 GB; the child's memory cap stops it."""
+    path = tmp_path / "greedy.vtk"
+    path.write_text("# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\n"
+                    "POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\nFIELD f 1\na 2000000000 3 float\n")
+    with pytest.raises(MeshImportError) as info:
+        import_mesh(path)
+    assert str(info.value).startswith(str(path))
 
 
 def test_devices_and_pipes_are_refused_before_any_reader_opens_them(tmp_path):
@@ -73,27 +108,30 @@ def _alive(pid: int) -> bool:
 
 @pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="reads the process tree from /proc")
 def test_the_child_dies_when_its_parent_is_killed(tmp_path):
-    fifo = tmp_path / "never.stl"
-    os.mkfifo(fifo)
+    """The parent reads a good file; its reader is frozen as it starts, the parent is killed -9, the
+    reader let go: it must leave at once, not finish reading (which would write mesh.npz)."""
+    path = tmp_path / "sphere.stl"
+    pv.Sphere().save(path)
+    scratch = tmp_path / "scratch"
+    scratch.mkdir()
     script = ("import sys; from pathlib import Path; from engine.formats.mesh_child import read_in_child; "
-              f"print('started', flush=True); read_in_child(Path({str(fifo)!r}), timeout=600)")
-    parent = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True)
+              f"print('started', flush=True); read_in_child(Path({str(path)!r}), timeout=600)")
+    parent = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True,
+                              env={**os.environ, "TMPDIR": str(scratch)})
     try:
         assert parent.stdout is not None and parent.stdout.readline() == "started\n"
-        children: list[int] = []
-        for _ in range(600):                        # wait (up to a minute) for the reader to start
-            children = _children(parent.pid)
-            if children:
-                break
-            time.sleep(0.1)
-        assert children, "the reader was started in a child process"
+        frozen: list[int] = []
+        _freeze_the_reader_when_it_starts(parent.pid, set(), frozen)
+        assert frozen, "the reader was started in a child process"
         os.kill(parent.pid, signal.SIGKILL)
         parent.wait()
-        for _ in range(600):                        # it notices the closed pipe at once; allow a minute
-            if not any(_alive(c) for c in children):
+        os.kill(frozen[0], signal.SIGCONT)
+        for _ in range(6000):
+            if not _alive(frozen[0]):
                 break
             time.sleep(0.1)
-        assert not any(_alive(c) for c in children), "the reader outlived its parent"
+        assert not _alive(frozen[0]), "the reader outlived its parent"
+        assert not list(scratch.rglob("mesh.npz")), "the reader left because its parent went, not because it finished"
     finally:
         if parent.poll() is None:
             parent.kill()
