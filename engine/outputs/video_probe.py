@@ -31,6 +31,7 @@ import numpy as np
 from engine.errors import UserError
 from engine.outputs.raster import draw_text
 from engine.outputs.video_tools import FFmpegMissing, VideoError, find_tool, stderr_tail
+from engine.processes import with_parent_death_signal
 
 __all__ = ["FFmpegMissing", "Probe", "VideoError", "contact_sheet", "probe", "read_audio", "read_frames"]
 
@@ -58,8 +59,8 @@ def probe(path: str | Path) -> Probe:
     path = Path(path)
     if not path.is_file():
         raise UserError("no such video file", file=path)
-    result = subprocess.run([find_tool("ffprobe"), "-v", "error", "-print_format", "json",
-                             "-show_streams", "-show_format", str(path)],
+    result = subprocess.run(with_parent_death_signal([find_tool("ffprobe"), "-v", "error", "-print_format", "json",
+                                                      "-show_streams", "-show_format", str(path)]),
                             capture_output=True, timeout=60, check=False)
     if result.returncode != 0:
         raise VideoError(f"ffprobe cannot read it: {stderr_tail(result.stderr)}", file=path)
@@ -109,7 +110,7 @@ def read_frames(path: str | Path, indices: Sequence[int] | None = None,
     if filters:
         command += ["-vf", ",".join(filters)]
     command += ["-fps_mode", "passthrough", "-f", "rawvideo", "-pix_fmt", "rgb24", "pipe:1"]
-    result = subprocess.run(command, capture_output=True, timeout=600, check=False)
+    result = subprocess.run(with_parent_death_signal(command), capture_output=True, timeout=600, check=False)
     if result.returncode != 0:
         raise VideoError(f"ffmpeg cannot decode it: {stderr_tail(result.stderr)}", file=path)
     frame_bytes = width * height * 3
@@ -129,9 +130,9 @@ def read_audio(path: str | Path, sample_rate: int | None = None) -> tuple[np.nda
     if info.sample_rate is None:
         raise VideoError("no audio stream", file=path)
     rate = int(sample_rate or info.sample_rate)
-    result = subprocess.run([find_tool("ffmpeg"), "-v", "error", "-nostdin", "-i", str(path), "-map", "0:a:0",
-                             "-ac", "1", "-ar", str(rate), "-f", "f32le", "pipe:1"], capture_output=True, timeout=600,
-                            check=False)
+    result = subprocess.run(with_parent_death_signal([find_tool("ffmpeg"), "-v", "error", "-nostdin", "-i", str(path),
+                                                      "-map", "0:a:0", "-ac", "1", "-ar", str(rate), "-f", "f32le",
+                                                      "pipe:1"]), capture_output=True, timeout=600, check=False)
     if result.returncode != 0:
         raise VideoError(f"ffmpeg cannot decode its audio: {stderr_tail(result.stderr)}", file=path)
     samples = np.frombuffer(result.stdout, dtype="<f4")

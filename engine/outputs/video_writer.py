@@ -55,6 +55,7 @@ from engine.errors import UserError
 from engine.formats.atomic import atomic_files
 from engine.model.model import Model
 from engine.outputs.video_tools import FFmpegMissing, VideoError, find_tool, stderr_tail
+from engine.processes import with_parent_death_signal
 
 __all__ = ["FFmpegMissing", "VideoError", "VideoRequest", "VideoStats", "check_video", "encode_video",
            "progress_printer", "write_video"]
@@ -238,8 +239,9 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
             with FrameRenderer(request.model, size=(width, height), view=request.view,
                                antialias=antialias) as renderer:
                 cpu_before = _children_cpu()
-                process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                           stderr=log, start_new_session=True)   # Ctrl-C reaches us, not it
+                process = subprocess.Popen(with_parent_death_signal(command), stdin=subprocess.PIPE,
+                                           stdout=subprocess.DEVNULL, stderr=log,
+                                           start_new_session=True)   # Ctrl-C reaches us, not it
                 assert process.stdin is not None              # stdin=PIPE
                 writer = _FrameWriter(process.stdin)
                 if progress is not None:

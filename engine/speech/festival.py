@@ -43,6 +43,7 @@ from pathlib import Path
 
 import numpy as np
 
+from engine.processes import with_parent_death_signal
 from engine.speech.festival_script import (
     VOICES_SCRIPT,
     WAVE_FILE_PATTERN,
@@ -112,7 +113,6 @@ _STANDALONE_PUNCTUATION = [
 _VOICE_NAME = re.compile(r"[A-Za-z0-9_]+\Z")
 _SCRIPT_FILE = "synthesize.scm"
 _POLL_SECONDS = 0.1
-_SETPRIV = shutil.which("setpriv")
 
 
 # ---------------------------------------------------------------------------
@@ -243,7 +243,7 @@ class FestivalSynthesizer:
             started = time.perf_counter()
             try:
                 process = subprocess.Popen(
-                    [*dies_with_parent(), program, "--batch", _SCRIPT_FILE], cwd=folder,
+                    with_parent_death_signal([program, "--batch", _SCRIPT_FILE]), cwd=folder,
                     stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                     start_new_session=True)
             except OSError as exc:
@@ -282,12 +282,6 @@ class FestivalSynthesizer:
 
 class SynthesisCancelled(SynthesisError):
     """The synthesis was cancelled by whoever asked for it; Festival was stopped."""
-
-
-def dies_with_parent() -> list[str]:
-    """The command prefix that makes a child get SIGKILL when its parent dies (``setpriv --pdeathsig KILL``;
-    nothing where util-linux's setpriv is absent, which Debian does not allow: util-linux is essential)."""
-    return [_SETPRIV, "--pdeathsig", "KILL", "--"] if _SETPRIV else []
 
 
 def _joined_waves(parsed: FestivalOutput, waves: dict[str, bytes], stderr: str) -> tuple[np.ndarray, int]:

@@ -114,6 +114,11 @@ def test_a_long_text_is_spoken_utterance_by_utterance_without_gaps():
 
 def festival_children(parent: int) -> list[int]:
     """Processes whose parent is ``parent`` and whose program is Festival."""
+    return children_named(parent, "festival")
+
+
+def children_named(parent: int, program: str) -> list[int]:
+    """Live processes whose parent is ``parent`` and whose program is ``program``."""
     found = []
     for entry in Path("/proc").iterdir():
         if not entry.name.isdigit():
@@ -123,7 +128,7 @@ def festival_children(parent: int) -> list[int]:
         except OSError:
             continue
         name, rest = stat[stat.index("(") + 1:stat.rindex(")")], stat[stat.rindex(")") + 2:].split()
-        if name == "festival" and int(rest[1]) == parent and rest[0] != "Z":
+        if name == program and int(rest[1]) == parent and rest[0] != "Z":
             found.append(int(entry.name))
     return found
 
@@ -146,7 +151,9 @@ def wait_for(condition, seconds=30.0):
     return condition()
 
 
-LONG_TEXT = " ".join([SENTENCE] * 400)       # a minute or more of Festival: long enough to be caught running
+LONG_TEXT = " ".join([SENTENCE[:-1] + ","] * 400) + " loppu."
+"""One endless sentence: Festival works on it for minutes without printing a line, so nothing but the
+parent-death signal can stop it when its parent dies (a closed pipe would kill it only at its first write)."""
 
 
 @needs_festival
@@ -194,3 +201,4 @@ def test_cancelling_a_synthesis_stops_festival():
     assert not worker.is_alive()
     assert isinstance(outcome[0], SynthesisCancelled)
     assert wait_for(lambda: not any(alive(pid) for pid in children), 10)
+
