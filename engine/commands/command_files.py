@@ -41,7 +41,7 @@ from typing import cast
 import numpy as np
 from lxml import etree
 
-from engine.commands.limits import LimitProblem, check_time
+from engine.commands.limits import LimitProblem, check_time, check_value
 from engine.errors import CommandError
 from engine.formats.atomic import atomic_write_text
 from engine.formats.xml_io import parse_xml, parse_xml_text, source_line, validate
@@ -175,11 +175,12 @@ def _activation(element: etree._Element, name: str) -> Activation:
         if not isinstance(key.tag, str):
             continue
         t = _number(key.get("at"), "key time 'at'", name, source_line(key))
+        v = _number(key.get("value"), "key 'value'", name, source_line(key))
         try:
             check_time(t, "key time 'at'")
+            check_value(v, "key 'value'")
         except LimitProblem as exc:
             raise CommandError(str(exc), file=name, line=source_line(key)) from None
-        v = _number(key.get("value"), "key 'value'", name, source_line(key))
         if times and t < times[-1]:
             raise CommandError(f"key times must not decrease: at={t:g} comes after at={times[-1]:g}",
                                file=name, line=source_line(key))

@@ -23,6 +23,9 @@ MAX_FPS = 1000.0
 """Frames per second when sampling (a camera at 1000 fps is already a high-speed one)."""
 MAX_FRAMES = 5_000_000
 """Frames sampled at once: 23 hours at 60 fps, 83 minutes at 1000 fps."""
+MAX_VALUE = 1e6
+"""Every key value lies within ±10⁶ parameter units (parameter ranges are a few units or degrees); larger
+ones overflow when interpolated and summed."""
 MAX_KEYS = 1_000_000
 """Keys one command may expand to (a periodic command of a million repetitions is a mistake)."""
 
@@ -35,6 +38,13 @@ def check_time(value: float, what: str) -> float:
     """``value`` (ms) if it is finite and within :data:`MAX_TIME_MS` of 0."""
     if not (math.isfinite(value) and abs(value) <= MAX_TIME_MS):
         raise LimitProblem(f"{what} = {value:g} ms is beyond the longest timeline, ±{MAX_TIME_MS:.0f} ms (24 hours)")
+    return value
+
+
+def check_value(value: float, what: str) -> float:
+    """``value`` (parameter units) if it is finite and within :data:`MAX_VALUE` of 0."""
+    if not (math.isfinite(value) and abs(value) <= MAX_VALUE):
+        raise LimitProblem(f"{what} = {value:g} is beyond ±{MAX_VALUE:g} parameter units")
     return value
 
 

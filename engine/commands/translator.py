@@ -28,7 +28,7 @@ import numpy as np
 from engine.commands.command_files import Activation, HighLevelCommand
 from engine.commands.library import Library, parameter_of_line
 from engine.commands.library_format import AMPLITUDE, START, CommandDefinition
-from engine.commands.limits import LimitProblem, check_time
+from engine.commands.limits import MAX_VALUE, LimitProblem, check_time
 from engine.commands.procedures import ArgumentProblem, Arguments, expand
 from engine.errors import CommandError
 
@@ -89,9 +89,9 @@ def _check_laid_out(command: HighLevelCommand, line: str, times: np.ndarray, val
             check_time(float(t), f"line '{line}' reaches a key time; it")
         except LimitProblem as exc:
             raise command.error(f"<{command.name}>: {exc} (check at, count, period, duration)") from None
-    if not np.all(np.isfinite(values)):
-        raise command.error(f"<{command.name}>: line '{line}' has values too large to represent "
-                            "(check amplitude and the arguments that scale it)")
+    if not np.all(np.abs(values) <= MAX_VALUE):          # NaN fails too
+        raise command.error(f"<{command.name}>: line '{line}' reaches values beyond ±{MAX_VALUE:g} parameter "
+                            "units (check amplitude and the arguments that scale it)")
 
 
 def command_arguments(command: HighLevelCommand, definition: CommandDefinition) -> Arguments:

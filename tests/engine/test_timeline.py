@@ -201,3 +201,23 @@ def test_hostile_xml_is_neither_expanded_nor_fetched(tmp_path):
 def test_comments_are_ignored_and_commands_keep_document_order():
     commands = parse_commands_text("<commands><!-- hi --><Blink at='5'/><?pi x?><HeadNod at='1'/></commands>")
     assert [c.name for c in commands] == ["Blink", "HeadNod"]
+
+
+# -- bounds on sampling: one UserError, no overflow, no array of petabytes ---------------------------
+
+@pytest.mark.parametrize(("fps", "end", "words"), [
+    (1e308, None, "at most 1000"),
+    (float("nan"), None, "positive"),
+    (60.0, float("nan"), "beyond the longest timeline"),
+    (60.0, 1e308, "beyond the longest timeline"),
+    (1000.0, 86_400_000.0, "more than 5000000"),
+], ids=["fps-1e308", "fps-nan", "end-nan", "end-1e308", "too-many-frames"])
+def test_sampling_beyond_the_bounds_is_one_user_error(head, fps, end, words):
+    timeline = Timeline([act("brow_raise", [(0, 0), (1000, 0.5)])], head)
+    with pytest.raises(UserError, match=words):
+        timeline.frame_times(fps, end=end)
+
+
+def test_a_timeline_whose_keys_are_all_before_the_start_samples_the_start_frame(head):
+    timeline = Timeline([act("brow_raise", [(-500, 0), (-100, 0.5)])], head)
+    assert timeline.frame_times(60).tolist() == [0.0]

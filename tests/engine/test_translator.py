@@ -291,3 +291,44 @@ def test_user_library_overrides_shipped_and_duplicates_in_one_folder_are_errors(
 def test_arguments_mapping_reports_what_was_given():
     args = Arguments({"count": 2.0, "period": 500.0}, {"count"})
     assert args.is_given("count") and not args.is_given("period") and dict(args) == {"count": 2, "period": 500}
+
+
+# -- bounds: a command can ask for anything a float holds; it gets one error, fast ------------------------
+
+@pytest.mark.parametrize(("xml", "words"), [
+    ('<HeadNod at="0" count="1e9"/>', "more than 1000000"),
+    ('<HeadNod at="0" count="1e300"/>', "more than 1000000"),
+    ('<HeadNod at="0" period="1e-300" end="1000"/>', "more than 1000000"),
+    ('<HeadNod at="0" frequency="1e300" end="1000"/>', "more than 1000000"),
+    ('<HeadNod at="1e308"/>', "beyond the longest timeline"),
+    ('<HeadNod at="-1e308"/>', "beyond the longest timeline"),
+    ('<HeadNod at="0" period="1e300"/>', "beyond the longest timeline"),
+    ('<Blink at="0" duration="1e308"/>', "beyond the longest timeline"),
+    ('<Happy at="0" onset="1e308"/>', "beyond the longest timeline"),
+    ('<HeadNod at="0" amplitude="1e308"/>', "beyond ±1e[+]06 parameter units"),
+], ids=["count-1e9", "count-1e300", "tiny-period", "huge-frequency", "at-1e308", "at-minus-1e308",
+        "period-1e300", "duration-1e308", "onset-1e308", "amplitude-1e308"])
+def test_commands_beyond_the_documented_bounds_are_one_error_naming_the_command(head, library, xml, words):
+    with pytest.raises(CommandError, match=words) as caught:
+        run(xml, library, head)
+    assert str(caught.value).startswith("script.xml:1:")
+
+
+def test_a_command_at_the_bounds_still_translates(head, library):
+    [nod] = run('<HeadNod at="86398000" count="2"/>', library, head)
+    assert nod.end == 86_399_000
+    [many] = run('<HeadNod at="0" count="100000"/>', library, head)
+    assert len(many.times) < 1_000_000
+
+
+def test_library_times_beyond_a_day_are_refused():
+    with pytest.raises(LibraryError, match=r"x.lib:3: .*beyond the longest timeline"):
+        parse_library_text("$command = Far\n$proc = once\njaw_open = 0,0; 1e300,1\n", "x.lib")
+
+
+def test_low_level_key_times_beyond_a_day_are_refused():
+    xml = ('<low-level-commands format="artificial-person-low-level-commands" version="1">\n'
+           '<activate parameter="jaw_open"><key at="0" value="0"/>\n<key at="1e308" value="0.2"/></activate>'
+           '</low-level-commands>')
+    with pytest.raises(CommandError, match=r"low.xml:3: .*beyond the longest timeline"):
+        parse_commands_text(xml, "low.xml")
