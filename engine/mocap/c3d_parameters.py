@@ -146,11 +146,18 @@ def read_parameters(data: bytes, path: Path) -> tuple[C3dHeader, C3dParameters]:
                               "(84 Intel, 85 DEC, 86 MIPS)", file=path)
     order = int_order(processor)
     header = C3dHeader.from_bytes(data[:512], order, processor)
-    n_blocks = data[start + 2]
-    end = min(len(data), start + 512 * n_blocks) if n_blocks else len(data)
+    end = _section_end(data, start, header)
     params = C3dParameters(processor)
     _parse_records(data, start + 4, end, order, params)
     return header, params
+
+
+def _section_end(data: bytes, start: int, header: C3dHeader) -> int:
+    """Where the parameter section ends: at the data (some writers count its blocks short), else by its count."""
+    data_start = (header.data_block - 1) * 512
+    if start < data_start <= len(data):
+        return data_start
+    return min(len(data), start + 512 * data[start + 2]) if data[start + 2] else len(data)
 
 
 def _parse_records(data: bytes, pos: int, end: int, order: str, params: C3dParameters) -> None:
@@ -184,12 +191,17 @@ def _parse_records(data: bytes, pos: int, end: int, order: str, params: C3dParam
             params.notes.append(f"the record after {name} is linked backwards; stopped there")
             break
         pos = link + offset
+    repeated = []
     for group_id, name, param in pending:
         key = f"{groups.get(group_id, f'GROUP{group_id}')}:{name}"
         if key in params.values:
-            params.notes.append(f"parameter {key} defined twice; the first kept")
+            repeated.append(key)
             continue
         params.values[key] = param
+    if repeated:
+        names = list(dict.fromkeys(repeated))
+        params.notes.append(f"{len(names)} parameter(s) defined more than once ({', '.join(names[:3])}"
+                            f"{', …' if len(names) > 3 else ''}); the first definition kept")
 
 
 def _parameter(data: bytes, pos: int, end: int, processor: str) -> C3dParameter | None:

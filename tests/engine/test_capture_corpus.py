@@ -202,7 +202,7 @@ def test_a_group_defined_twice_reads(tmp_path):
     path.write_bytes(bytes(data))
     rec = read_marker_file(path)
     np.testing.assert_array_equal(rec.positions, read_marker_file(DATA / "FP_Type3.c3d").positions)
-    assert any("defined twice" in note for note in rec.notes)
+    assert any("defined twice (POINT, SEG)" in note for note in rec.notes)
 
 
 def test_header_and_parameters_that_disagree(tmp_path):
