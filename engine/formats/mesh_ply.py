@@ -22,6 +22,7 @@ properties are skipped.
 
 from __future__ import annotations
 
+import io
 from dataclasses import dataclass
 from pathlib import Path
 from typing import NoReturn
@@ -30,6 +31,7 @@ import numpy as np
 
 from engine.errors import MeshImportError
 from engine.formats.mesh_data import MeshMaterial, MeshTexture, RawMesh
+from engine.model.cells import cell_starts
 
 _TYPES = {"char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
           "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
@@ -132,8 +134,25 @@ def _property(words: list[str], number: int, fail: _Failure) -> _Property:
 
 # -- bodies -------------------------------------------------------------------------
 
-#: Per element: name → one array per scalar property, or a list of arrays (one per row) for a list property.
-_Values = dict[str, dict[str, "np.ndarray | list[np.ndarray]"]]
+@dataclass
+class _ListColumn:
+    """A list property of every row: the lengths, and all the values one after the other."""
+
+    sizes: np.ndarray
+    flat: np.ndarray
+
+    @classmethod
+    def of_rows(cls, rows: list[np.ndarray]) -> _ListColumn:
+        sizes = np.array([len(r) for r in rows], dtype=np.int64)
+        return cls(sizes, np.concatenate(rows).astype(float) if rows else np.zeros(0))
+
+    def row(self, i: int) -> np.ndarray:
+        start = int(self.sizes[:i].sum())
+        return self.flat[start:start + int(self.sizes[i])]
+
+
+#: Per element: name → one array per scalar property, or a :class:`_ListColumn` for a list property.
+_Values = dict[str, dict[str, "np.ndarray | _ListColumn"]]
 
 
 def _ascii_body(blob: bytes, start: int, header_lines: int, elements: list[_Element], fail: _Failure) -> _Values:
@@ -145,37 +164,67 @@ def _ascii_body(blob: bytes, start: int, header_lines: int, elements: list[_Elem
         if element.count > len(lines) - at:
             fail(f"the header promises {element.count} '{element.name}' rows but the file has at most "
                  f"{max(len(lines) - at, 0)} lines left (truncated?)", element.header_line)
-        scalars = all(p.count_dtype is None for p in element.properties)
-        table: list[list[float]] = []
-        lists: dict[str, list[np.ndarray]] = {p.name: [] for p in element.properties if p.count_dtype}
-        columns: dict[str, list[float]] = {p.name: [] for p in element.properties if not p.count_dtype}
-        row = 0
-        while row < element.count:
-            if at >= len(lines):
-                fail(f"the file ends after {row} of {element.count} '{element.name}' rows (truncated)")
-            words = lines[at].split()
-            at += 1
-            if not words:
-                continue
-            line = header_lines + at
-            try:
-                if scalars:
-                    if len(words) < len(element.properties):
-                        raise ValueError
-                    table.append([float(w) for w in words[:len(element.properties)]])
-                else:
-                    _ascii_row(words, element, lists, columns)
-            except (ValueError, OverflowError, IndexError) as exc:
-                found = b" ".join(words)[:60].decode("ascii", "replace")
-                reason = str(exc) if str(exc).startswith("the list") else f"expected {_describe(element)}"
-                fail(f"{element.name} {row}: {reason}, found {found!r}", line)
-            row += 1
-        if scalars:
-            array = np.array(table, dtype=float).reshape(-1, len(element.properties))
-            out[element.name] = {p.name: array[:, k] for k, p in enumerate(element.properties)}
-        else:
-            out[element.name] = {**{k: np.array(v, dtype=float) for k, v in columns.items()}, **lists}
+        fast = _ascii_block(lines[at:at + element.count], element)
+        if fast is not None:
+            out[element.name] = fast
+            at += element.count
+            continue
+        values, at = _ascii_rows(lines, at, header_lines, element, fail)
+        out[element.name] = values
     return out
+
+
+def _ascii_block(block: list[bytes], element: _Element) -> dict[str, np.ndarray | _ListColumn] | None:
+    """The rows parsed at once (numpy's C parser) when they are all alike: no blank lines, one width,
+    every list as long as in the first row. ``None`` otherwise (the row-by-row reader says why)."""
+    if not block or not all(line.strip() for line in block):
+        return None if block else {p.name: (_ListColumn(np.zeros(0, np.int64), np.zeros(0)) if p.count_dtype
+                                             else np.zeros(0)) for p in element.properties}
+    try:
+        table = np.loadtxt(io.BytesIO(b"\n".join(block)), dtype=float, ndmin=2, comments=None)
+    except (ValueError, OverflowError):
+        return None
+    out: dict[str, np.ndarray | _ListColumn] = {}
+    k = 0
+    for p in element.properties:
+        if k >= table.shape[1]:
+            return None
+        if p.count_dtype is None:
+            out[p.name] = table[:, k]
+            k += 1
+            continue
+        n = table[0, k]
+        if n < 0 or n != int(n) or not np.all(table[:, k] == n) or k + 1 + int(n) > table.shape[1]:
+            return None
+        n = int(n)
+        out[p.name] = _ListColumn(np.full(len(table), n, dtype=np.int64), table[:, k + 1:k + 1 + n].reshape(-1))
+        k += 1 + n
+    return out if k <= table.shape[1] else None
+
+
+def _ascii_rows(lines: list[bytes], at: int, header_lines: int, element: _Element,
+                fail: _Failure) -> tuple[dict[str, np.ndarray | _ListColumn], int]:
+    """Row by row, naming the line of the first row that does not fit the header."""
+    lists: dict[str, list[np.ndarray]] = {p.name: [] for p in element.properties if p.count_dtype}
+    columns: dict[str, list[float]] = {p.name: [] for p in element.properties if not p.count_dtype}
+    row = 0
+    while row < element.count:
+        if at >= len(lines):
+            fail(f"the file ends after {row} of {element.count} '{element.name}' rows (truncated)")
+        words = lines[at].split()
+        at += 1
+        if not words:
+            continue
+        try:
+            _ascii_row(words, element, lists, columns)
+        except (ValueError, OverflowError, IndexError) as exc:
+            found = b" ".join(words)[:60].decode("ascii", "replace")
+            reason = str(exc) if str(exc).startswith("the list") else f"expected {_describe(element)}"
+            fail(f"{element.name} {row}: {reason}, found {found!r}", header_lines + at)
+        row += 1
+    values: dict[str, np.ndarray | _ListColumn] = {k: np.array(v, dtype=float) for k, v in columns.items()}
+    values.update({k: _ListColumn.of_rows(v) for k, v in lists.items()})
+    return values, at
 
 
 def _ascii_row(words: list[bytes], element: _Element, lists: dict[str, list[np.ndarray]],
@@ -192,8 +241,6 @@ def _ascii_row(words: list[bytes], element: _Element, lists: dict[str, list[np.n
                              "after it (a cut line?)")
         lists[p.name].append(np.array([float(w) for w in words[k + 1:k + 1 + n]]))
         k += 1 + n
-    if k > len(words):
-        raise ValueError
 
 
 def _describe(element: _Element) -> str:
@@ -221,7 +268,7 @@ def _binary_body(blob: bytes, start: int, elements: list[_Element], order: str, 
 
 
 def _binary_rows(blob: bytes, at: int, element: _Element, order: str,
-                 fail: _Failure) -> tuple[dict[str, np.ndarray | list[np.ndarray]], int]:
+                 fail: _Failure) -> tuple[dict[str, np.ndarray | _ListColumn], int]:
     """Rows holding lists: fast when every list has the length of the first row's, else row by row."""
     fixed = _fixed_rows(blob, at, element, order)
     if fixed is not None:
@@ -244,13 +291,16 @@ def _binary_rows(blob: bytes, at: int, element: _Element, order: str,
                 fail(f"{element.name} {row}: a list of {n} values runs past the end of the file (truncated?)")
             lists[p.name].append(np.frombuffer(blob, order + p.dtype, n, at).astype(float))
             at += n * item
-    return {**{k: np.array(v, dtype=float) for k, v in columns.items()}, **lists}, at
+    values: dict[str, np.ndarray | _ListColumn] = {k: np.array(v, dtype=float) for k, v in columns.items()}
+    values.update({k: _ListColumn.of_rows(v) for k, v in lists.items()})
+    return values, at
 
 
 def _fixed_rows(blob: bytes, at: int, element: _Element,
-                order: str) -> tuple[dict[str, np.ndarray | list[np.ndarray]], int] | None:
+                order: str) -> tuple[dict[str, np.ndarray | _ListColumn], int] | None:
     if element.count == 0:
-        return {p.name: ([] if p.count_dtype else np.zeros(0)) for p in element.properties}, at
+        return {p.name: (_ListColumn(np.zeros(0, np.int64), np.zeros(0)) if p.count_dtype else np.zeros(0))
+                for p in element.properties}, at
     fields: list[tuple[str, str, tuple[int, ...]]] = []
     offset = at
     for k, p in enumerate(element.properties):
@@ -270,15 +320,16 @@ def _fixed_rows(blob: bytes, at: int, element: _Element,
     if at + dtype.itemsize * element.count > len(blob):
         return None
     table = np.frombuffer(blob, dtype=dtype, count=element.count, offset=at)
-    out: dict[str, np.ndarray | list[np.ndarray]] = {}
+    out: dict[str, np.ndarray | _ListColumn] = {}
     for k, p in enumerate(element.properties):
         if p.count_dtype is None:
             out[p.name] = table[f"p{k}"].astype(float)
             continue
-        n = dtype[f"p{k}"].shape[0] if dtype[f"p{k}"].shape else 1
+        n = dtype[f"p{k}"].shape[0] if dtype[f"p{k}"].shape else 0
         if not np.all(table[f"n{k}"] == n):
             return None
-        out[p.name] = list(table[f"p{k}"].astype(float).reshape(element.count, n))
+        out[p.name] = _ListColumn(np.full(element.count, n, dtype=np.int64),
+                                  table[f"p{k}"].astype(float).reshape(-1))
     return out, at + dtype.itemsize * element.count
 
 
@@ -292,85 +343,100 @@ def _assemble(path: Path, values: _Values, elements: list[_Element], comments: l
     xyz = np.column_stack([np.asarray(vertex[c], dtype=float) for c in "xyz"]).reshape(-1, 3)
     n = len(xyz)
     vertex_uv = None
-    for u, v in _UV_NAMES:
-        if isinstance(vertex.get(u), np.ndarray) and isinstance(vertex.get(v), np.ndarray):
-            vertex_uv = np.column_stack([vertex[u], vertex[v]]).astype(float)
+    for u_name, v_name in _UV_NAMES:
+        u, v = vertex.get(u_name), vertex.get(v_name)
+        if isinstance(u, np.ndarray) and isinstance(v, np.ndarray):
+            vertex_uv = np.column_stack([u, v]).astype(float)
             break
-    polygons: list[np.ndarray] = []
-    corners: list[np.ndarray | None] = []
+    sizes, flat = np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64)
+    corner_uv: np.ndarray | None = None
     notes: list[str] = []
-    dropped = 0
     face = values.get("face")
     if face is not None:
-        indices = next((face[k] for k in _INDEX_NAMES if isinstance(face.get(k), list)), None)
-        if indices is None:
+        indices = next((face[k] for k in _INDEX_NAMES if isinstance(face.get(k), _ListColumn)), None)
+        if not isinstance(indices, _ListColumn):
             fail("the 'face' element has no 'vertex_indices' list")
+        _check_indices(indices, n, "face", fail)
+        keep = indices.sizes >= 3
+        if not keep.all():
+            notes.append(f"dropped {int((~keep).sum())} face(s) with fewer than 3 corners")
+        sizes = indices.sizes[keep]
+        flat = indices.flat[np.repeat(keep, indices.sizes)].astype(np.int64)
         texcoord = face.get("texcoord")
-        for row, corner in enumerate(indices):
-            if len(corner) < 3:
-                dropped += 1
-                continue
-            polygons.append(_checked(corner, n, f"face {row}", fail))
-            uv = texcoord[row] if isinstance(texcoord, list) and row < len(texcoord) else None
-            corners.append(uv.reshape(-1, 2) if uv is not None and len(uv) == 2 * len(corner) else None)
+        if isinstance(texcoord, _ListColumn) and len(texcoord.sizes) == len(keep):
+            corner_uv = _corner_texcoords(texcoord, indices.sizes, keep)
     strips = values.get("tristrips")
     if strips is not None:
-        lists = next((strips[k] for k in _INDEX_NAMES if isinstance(strips.get(k), list)), None)
-        if lists is None:
+        lists = next((strips[k] for k in _INDEX_NAMES if isinstance(strips.get(k), _ListColumn)), None)
+        if not isinstance(lists, _ListColumn):
             fail("the 'tristrips' element has no 'vertex_indices' list")
-        for row, strip in enumerate(lists):
-            for triangle in _strip_triangles(_checked(strip, n, f"tristrips {row}", fail, restart=True)):
-                polygons.append(triangle)
-                corners.append(None)
-    if dropped:
-        notes.append(f"dropped {dropped} face(s) with fewer than 3 corners")
-    if polygons:
-        faces = np.concatenate([np.concatenate([[len(p)], p]) for p in polygons]).astype(np.int64)
-    else:
-        faces = np.zeros(0, dtype=np.int64)
-    texture = _texture(path, faces, polygons, corners, vertex_uv, comments)
-    return RawMesh(xyz, faces, ["surface"], np.zeros(len(polygons), dtype=np.int64), texture, notes)
+        _check_indices(lists, n, "tristrips", fail, restart=True)
+        triangles = _strip_triangles(lists.flat.astype(np.int64), lists.sizes)
+        if len(triangles):
+            if corner_uv is not None:
+                corner_uv = np.concatenate([corner_uv, np.full((triangles.size, 2), np.nan)])
+            sizes = np.concatenate([sizes, np.full(len(triangles), 3, dtype=np.int64)])
+            flat = np.concatenate([flat, triangles.reshape(-1)])
+    faces = np.zeros(int(sizes.sum()) + len(sizes), dtype=np.int64)
+    starts = cell_starts(sizes)
+    mask = np.ones(len(faces), dtype=bool)
+    mask[starts] = False
+    faces[starts], faces[mask] = sizes, flat
+    if corner_uv is None and vertex_uv is not None:
+        corner_uv = vertex_uv[flat]
+    elif corner_uv is not None and vertex_uv is not None:
+        missing = np.isnan(corner_uv[:, 0])
+        corner_uv[missing] = vertex_uv[flat[missing]]
+    texture = None if corner_uv is None else _texture(path, corner_uv, len(sizes), comments)
+    return RawMesh(xyz, faces, ["surface"], np.zeros(len(sizes), dtype=np.int64), texture, notes)
 
 
-def _checked(indices: np.ndarray, n: int, where: str, fail: _Failure, restart: bool = False) -> np.ndarray:
-    values = np.asarray(indices, dtype=float)
-    ok = (values >= -1 if restart else values >= 0) & (values < n) & (values == np.round(values))
+def _check_indices(column: _ListColumn, n: int, what: str, fail: _Failure, restart: bool = False) -> None:
+    values = column.flat
+    ok = (values >= (-1 if restart else 0)) & (values < n) & (values == np.round(values))
     if not np.all(ok):
-        bad = values[~ok][0]
-        fail(f"{where}: vertex index {bad:g} is not one of the {n} vertices")
-    return values.astype(np.int64)
+        at = int(np.flatnonzero(~ok)[0])
+        row = int(np.searchsorted(np.cumsum(column.sizes), at, side="right"))
+        fail(f"{what} {row}: vertex index {values[at]:g} is not one of the {n} vertices")
 
 
-def _strip_triangles(strip: np.ndarray) -> list[np.ndarray]:
-    """Triangles of the strips in one list (−1 starts a new strip); every second one flipped so all
-    keep the strip's orientation; triangles with a repeated vertex (joins) dropped."""
-    out: list[np.ndarray] = []
-    for piece in np.split(strip, np.flatnonzero(strip < 0)):
-        run = piece[piece >= 0]
-        for j in range(len(run) - 2):
-            a, b, c = run[j], run[j + 1], run[j + 2]
-            if a in (b, c) or b == c:
-                continue
-            out.append(np.array([a, b, c] if j % 2 == 0 else [b, a, c], dtype=np.int64))
-    return out
-
-
-def _texture(path: Path, faces: np.ndarray, polygons: list[np.ndarray], corners: list[np.ndarray | None],
-             vertex_uv: np.ndarray | None, comments: list[str]) -> MeshTexture | None:
-    if vertex_uv is None and all(c is None for c in corners):
-        return None
-    rows = []
-    for polygon, corner in zip(polygons, corners, strict=True):
-        if corner is not None:
-            rows.append(corner)
-        elif vertex_uv is not None:
-            rows.append(vertex_uv[polygon])
+def _corner_texcoords(texcoord: _ListColumn, sizes: np.ndarray, keep: np.ndarray) -> np.ndarray:
+    """Per-corner (u, v) of the kept faces from a ``texcoord`` list; NaN for a face whose list
+    does not hold two numbers per corner."""
+    fits = texcoord.sizes == 2 * sizes
+    if fits.all():
+        return texcoord.flat.reshape(-1, 2)[np.repeat(keep, sizes)]
+    out = []
+    starts = np.concatenate([[0], np.cumsum(texcoord.sizes)])
+    for i in np.flatnonzero(keep):
+        if fits[i]:
+            out.append(texcoord.flat[starts[i]:starts[i + 1]].reshape(-1, 2))
         else:
-            rows.append(np.full((len(polygon), 2), np.nan))
-    corner_uv = np.concatenate(rows) if rows else np.zeros((0, 2))
+            out.append(np.full((int(sizes[i]), 2), np.nan))
+    return np.concatenate(out) if out else np.zeros((0, 2))
+
+
+def _strip_triangles(flat: np.ndarray, sizes: np.ndarray) -> np.ndarray:
+    """Triangles (T, 3) of the strips in every row (−1 also starts a new strip); every second one
+    turned so all keep the strip's orientation; triangles with a repeated vertex (joins) dropped."""
+    out: list[np.ndarray] = []
+    for row in np.split(flat, np.cumsum(sizes)[:-1]) if len(sizes) else []:
+        for piece in np.split(row, np.flatnonzero(row < 0)):
+            run = piece[piece >= 0]
+            if len(run) < 3:
+                continue
+            j = np.arange(len(run) - 2)
+            even = j % 2 == 0
+            tri = np.column_stack([np.where(even, run[j], run[j + 1]), np.where(even, run[j + 1], run[j]),
+                                   run[j + 2]])
+            out.append(tri[(tri[:, 0] != tri[:, 1]) & (tri[:, 1] != tri[:, 2]) & (tri[:, 0] != tri[:, 2])])
+    return np.concatenate(out).astype(np.int64) if out else np.zeros((0, 3), dtype=np.int64)
+
+
+def _texture(path: Path, corner_uv: np.ndarray, n_faces: int, comments: list[str]) -> MeshTexture:
     image = next((c.split(None, 1)[1].strip() for c in comments
                   if c.lower().startswith("texturefile") and len(c.split(None, 1)) > 1), None)
     if not image:
-        return MeshTexture(corner_uv, [], np.full(len(polygons), -1, dtype=np.int64))
+        return MeshTexture(corner_uv, [], np.full(n_faces, -1, dtype=np.int64))
     return MeshTexture(corner_uv, [MeshMaterial("texture", str(path.parent / image))],
-                       np.zeros(len(polygons), dtype=np.int64))
+                       np.zeros(n_faces, dtype=np.int64))
