@@ -159,8 +159,8 @@ def finish_interrupted_writes(folder: str | Path) -> list[Path]:
     """Complete the renames of sets whose writer was killed, and remove its temporary files; the paths touched.
 
     Looks only at the hidden files :func:`atomic_files` names
-    (``.<name>.<host>-<pid>-<random>.tmp`` / ``.journal``) whose process, on
-    this host, is gone. A complete journal's renames are done (each temporary
+    (``.<name>.<host>-<pid>-<random>.tmp`` / ``.journal``) that this user
+    owns and whose process, on this host, is gone. A complete journal's renames are done (each temporary
     file still there is renamed over its target, unless the target was
     written after the journal, by a program that does not keep journals); a
     journal that was being written when the process died (nothing was renamed
@@ -197,9 +197,18 @@ def _dead_owners_files(folder: Path) -> list[Path]:
     found = []
     for name in sorted(names):
         match = _OWNED_NAME.match(name)
-        if match and match["host"] == HOST_TAG and not _process_runs(int(match["pid"])):
+        if match and match["host"] == HOST_TAG and _ours(folder / name) and not _process_runs(int(match["pid"])):
             found.append(folder / name)
     return found
+
+
+def _ours(path: Path) -> bool:
+    """True if this user owns ``path``: another user's files in a shared folder are never renamed or removed."""
+    getuid = getattr(os, "getuid", None)
+    try:
+        return getuid is None or path.lstat().st_uid == getuid()
+    except OSError:
+        return False
 
 
 def _process_runs(pid: int) -> bool:
@@ -242,7 +251,7 @@ def _replay_journal(journal: Path) -> list[Path]:
         return []
     done = []
     for temporary, target in renames:
-        if not _OWNED_NAME.match(temporary.name) or not temporary.exists():
+        if not _OWNED_NAME.match(temporary.name) or not _ours(temporary):
             continue                    # renamed before the kill (or not ours: never follow a foreign name)
         with contextlib.suppress(OSError):
             if target.exists() and target.stat().st_mtime_ns > written_ns:

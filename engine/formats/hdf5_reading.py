@@ -9,7 +9,10 @@ dataset*), a shape of 10¹² elements that the library would fill in from a
 fill value, a damaged heap or object header. :class:`HDF5Reader` refuses all
 of these, checks a dataset's kind, rank and size **before** reading it, and
 turns any error of the HDF5 library into the caller's error class, naming
-the file.
+the file. Before any of that, the whole file is read once in a child process
+with a time limit (:mod:`engine.formats.hdf5_probe`), so a file on which the
+library itself hangs or crashes is refused instead (files shipped with the
+program are trusted and skip this).
 
 Size bound: a dataset may not declare more bytes than its file could hold
 after decompression. Deflate cannot shrink data more than about 1032 : 1,
@@ -37,6 +40,8 @@ import h5py
 import numpy as np
 
 from engine.errors import UserError
+from engine.formats.hdf5_probe import ProbeFailed, probe_in_child
+from engine.paths import DATA_DIR
 
 #: Bytes a dataset may declare per byte of its file (deflate's ceiling is about 1032).
 MAX_EXPANSION = 1100
@@ -70,6 +75,17 @@ class HDF5Reader:
         except OSError as exc:
             raise self.error(f"cannot read: {exc.strerror or exc}", file=self.path) from None
         self.budget = SLACK_BYTES + MAX_EXPANSION * size
+        try:
+            is_hdf5 = h5py.is_hdf5(self.path)
+        except Exception:            # a file that cannot be read at all
+            is_hdf5 = False
+        if not is_hdf5:
+            raise self.error(self._not_hdf5, file=self.path)
+        if not _shipped(self.path):
+            try:
+                probe_in_child(self.path, self.budget, frozenset(ALLOWED_FILTERS))
+            except ProbeFailed as exc:
+                raise self.error(f"damaged HDF5 file: {exc.reason}", file=self.path) from None
         try:
             self._file = h5py.File(self.path, "r")
         except Exception:            # h5py reports a damaged superblock in many ways
@@ -228,6 +244,14 @@ class HDF5Reader:
         if declared > self.budget:
             raise self.fail(f"dataset '/{name}' declares {declared:,} bytes ({shape}), more than a file of "
                             f"{self.path.stat().st_size:,} bytes can hold; refused")
+
+
+def _shipped(path: Path) -> bool:
+    """True for the files shipped with the program (the default head), which need no probe."""
+    try:
+        return path.resolve().is_relative_to(DATA_DIR.resolve())
+    except OSError:
+        return False
 
 
 def text(value: object) -> str | None:

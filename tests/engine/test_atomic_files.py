@@ -7,16 +7,26 @@ new file the permissions a plain ``open`` would (0666 less the umask).
 
 from __future__ import annotations
 
+import json
 import os
 import re
+import signal
 import stat
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
 import engine.formats.atomic as atomic
 from engine.errors import ModelFileError, UserError
-from engine.formats.atomic import atomic_files, atomic_path, atomic_write_bytes, atomic_write_text
+from engine.formats.atomic import (
+    atomic_files,
+    atomic_path,
+    atomic_write_bytes,
+    atomic_write_text,
+    finish_interrupted_writes,
+)
 
 
 class DiskFullError(Exception):
@@ -153,3 +163,104 @@ def test_the_engine_has_one_place_that_renames_files_into_place():
                       if p.name != "atomic.py" and any(word in p.read_text(encoding="utf-8")
                                                        for word in ("os.replace(", "os.rename(", "mkstemp(")))
     assert renaming == []
+
+
+# ---------------------------------------------------------------------------
+# kill -9: a set of files is finished by the next writer; dead writers' temporaries are removed
+# ---------------------------------------------------------------------------
+
+WRITER = """
+import os, signal, sys
+from pathlib import Path
+import engine.formats.atomic as atomic
+folder, mode = Path(sys.argv[1]), sys.argv[2]
+real_replace, renames = os.replace, []
+def replace(src, dst):
+    renames.append(dst)
+    if mode == "kill-at-rename-2" and len(renames) == 2:
+        os.kill(os.getpid(), signal.SIGKILL)
+    real_replace(src, dst)
+atomic.os.replace = replace
+with atomic.atomic_files([folder / "a.txt", folder / "b.csv", folder / "c.bin"]) as temporary:
+    for target, path in temporary.items():
+        path.write_bytes(b"new " + target.name.encode())
+    if mode == "wait":
+        print("ready", flush=True)
+        sys.stdin.read()
+"""
+
+
+def run_writer(folder: Path, mode: str, **kw) -> subprocess.Popen:
+    root = Path(__file__).resolve().parents[2]
+    env = dict(os.environ, PYTHONPATH=str(root))
+    return subprocess.Popen([sys.executable, "-c", WRITER, str(folder), mode], cwd=root, env=env, text=True, **kw)
+
+
+NEW = {"a.txt": b"new a.txt", "b.csv": b"new b.csv", "c.bin": b"new c.bin"}
+
+
+def test_a_set_killed_between_two_renames_is_finished_by_the_next_write(tmp_path, old_files):
+    writer = run_writer(tmp_path, "kill-at-rename-2")
+    assert writer.wait() == -signal.SIGKILL
+    left = contents(tmp_path)
+    assert left["a.txt"] == b"new a.txt" and left["b.csv"] == b"old b"        # the mix the kill left...
+    assert any(name.endswith(".journal") for name in left)
+    atomic_write_text(tmp_path / "other.txt", "x")                              # ...finished by any write here
+    assert contents(tmp_path) == {**NEW, "other.txt": b"x"}
+
+
+def test_a_live_writers_temporaries_are_left_alone_and_a_dead_ones_removed(tmp_path, old_files):
+    writer = run_writer(tmp_path, "wait", stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+    assert writer.stdout is not None and writer.stdout.readline().strip() == "ready"
+    temporaries = set(contents(tmp_path)) - set(old_files)
+    assert len(temporaries) == 3
+    assert finish_interrupted_writes(tmp_path) == []
+    assert set(contents(tmp_path)) == set(old_files) | temporaries
+    writer.kill()
+    writer.wait()
+    assert sorted(p.name for p in finish_interrupted_writes(tmp_path)) == sorted(temporaries)
+    assert contents(tmp_path) == old_files
+
+
+def test_files_of_another_host_or_another_naming_are_never_touched(tmp_path):
+    other_host = "000000" if atomic.HOST_TAG != "000000" else "111111"
+    names = [f".a.txt.{other_host}-999999999-0123abcd.tmp", ".a.txt.0123abcd.tmp", ".hidden.tmp",
+             f".a.txt.{other_host}-999999999-0123abcd.journal"]
+    for name in names:
+        (tmp_path / name).write_bytes(b"x")
+    assert finish_interrupted_writes(tmp_path) == []
+    assert sorted(contents(tmp_path)) == sorted(names)
+
+
+def dead_name(target: str, kind: str) -> str:
+    return f".{target}.{atomic.HOST_TAG}-999999999-{os.urandom(4).hex()}.{kind}"
+
+
+def test_a_journal_never_overwrites_a_file_written_after_it(tmp_path):
+    stale = tmp_path / dead_name("a.txt", "tmp")
+    stale.write_bytes(b"stale")
+    journal = tmp_path / dead_name("a.txt", "journal")
+    journal.write_text(json.dumps({"format": atomic.JOURNAL_FORMAT, "version": atomic.JOURNAL_VERSION,
+                                   "renames": [[stale.name, "a.txt"]]}))
+    later = journal.stat().st_mtime_ns + 10**9
+    (tmp_path / "a.txt").write_bytes(b"written later by another program")
+    os.utime(tmp_path / "a.txt", ns=(later, later))
+    finish_interrupted_writes(tmp_path)
+    assert contents(tmp_path) == {"a.txt": b"written later by another program"}
+
+
+def test_a_journal_cut_short_renames_nothing(tmp_path, old_files):
+    temporary = tmp_path / dead_name("a.txt", "tmp")
+    temporary.write_bytes(b"new")
+    (tmp_path / dead_name("a.txt", "journal")).write_text('{"format": "artificial-person-rename-jo')
+    finish_interrupted_writes(tmp_path)
+    assert contents(tmp_path) == old_files
+
+
+def test_a_journal_names_only_files_beside_it_of_our_naming(tmp_path, old_files):
+    """A journal planted to rename some other file over a target is not followed."""
+    (tmp_path / "evil.txt").write_bytes(b"planted")
+    (tmp_path / dead_name("a.txt", "journal")).write_text(json.dumps(
+        {"format": atomic.JOURNAL_FORMAT, "version": atomic.JOURNAL_VERSION, "renames": [["evil.txt", "a.txt"]]}))
+    finish_interrupted_writes(tmp_path)
+    assert contents(tmp_path) == {**old_files, "evil.txt": b"planted"}
