@@ -113,6 +113,9 @@ def read_mesh(path: str | Path, scale: float | None = None, *, keep_units: bool 
         raise MeshImportError("has vertex coordinates that are not finite numbers", file=path)
     if scale is None:
         factor = 1000.0 if raw.units == "m" and not keep_units else 1.0
+    if raw.texture is not None:
+        raw.notes += [f"image '{image}' is missing" for image in raw.texture.images()
+                      if not image.startswith("embedded:") and not Path(image).is_file()]
     return ImportedMesh(vertices @ rotation.T * factor, faces, part_names, vertex_part, raw.texture, factor,
                         up.upper() if up[0] in "+-" else "+" + up.upper(), raw.notes)
 

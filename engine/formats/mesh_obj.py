@@ -140,6 +140,8 @@ class _ObjReader:
     def result(self) -> RawMesh:
         texture = None
         corner_uv = np.array(self.corner_uv, dtype=float).reshape(-1, 2)
+        notes = [f"material library '{name}' not found beside the file: its materials have no images"
+                 for name in self.libraries if not (self.path.parent / name).is_file()]
         if self.materials:
             images = _material_images(self.path, self.libraries)
             for material in self.materials:
@@ -147,7 +149,7 @@ class _ObjReader:
         if (len(corner_uv) and not np.all(np.isnan(corner_uv))) or self.materials:
             texture = MeshTexture(corner_uv, self.materials, np.array(self.face_material, dtype=np.int64))
         return RawMesh(np.array(self.vertices, dtype=float).reshape(-1, 3), np.array(self.cells, dtype=np.int64),
-                       self.part_names, np.array(self.face_part, dtype=np.int64), texture)
+                       self.part_names, np.array(self.face_part, dtype=np.int64), texture, notes)
 
 
 def _slot(name: str, materials: list[MeshMaterial], index: dict[str, int]) -> int:

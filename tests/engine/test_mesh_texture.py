@@ -35,6 +35,8 @@ def test_obj_keeps_corner_uvs_and_the_mtl_image(tmp_path):
     assert texture.images() == [str(tmp_path / "photo front.png"), str(tmp_path / "eyes.jpg")]
     np.testing.assert_array_equal(texture.face_material, [0, 1])
     assert texture.vertex_uv(mesh.faces, 5) is None       # vertex 2 has (1, 0) and (0.5, 0.5): a seam
+    assert mesh.notes == [f"image '{tmp_path / 'photo front.png'}' is missing",
+                          f"image '{tmp_path / 'eyes.jpg'}' is missing"]
 
 
 def test_obj_without_mtl_file_still_reads(tmp_path):
@@ -42,6 +44,7 @@ def test_obj_without_mtl_file_still_reads(tmp_path):
     mesh = read_mesh(tmp_path / "a.obj")
     assert mesh.texture.materials[0].image is None
     assert not mesh.texture.has_coordinates
+    assert mesh.notes == ["material library 'gone.mtl' not found beside the file: its materials have no images"]
 
 
 @pytest.mark.parametrize("u, v", [("u", "v"), ("s", "t"), ("texture_u", "texture_v"), ("texture_s", "texture_t")])
