@@ -110,11 +110,19 @@ def _rate(header: C3dHeader, params: C3dParameters, path: Path) -> float:
     return float(rate)
 
 
+def _whole(values: np.ndarray) -> int | None:
+    """The first value as a count: None when there is none, or it is not a finite whole number from 0 to 2³¹."""
+    if not values.size:
+        return None
+    value = float(values[0])
+    return int(value) if np.isfinite(value) and 0 <= value < 2**31 and value == int(value) else None
+
+
 def _point_count(header: C3dHeader, params: C3dParameters, notes: list[str]) -> int:
     used = params.get("POINT:USED")
-    if used is None or used.kind not in (1, 2, 4):
+    count = _whole(used.unsigned_words()) if used is not None and used.kind in (1, 2, 4) else None
+    if count is None:
         return header.point_count
-    count = int(used.unsigned_words()[0]) if used.numbers().size else header.point_count
     if count != header.point_count:
         notes.append(f"POINT:USED says {count} points, the header {header.point_count}; POINT:USED used")
     return count
@@ -137,13 +145,16 @@ def _analog_words(header: C3dHeader, params: C3dParameters, point_rate: float, n
     agree; where they do not, the one whose frames fill the data to the
     declared frame count wins (the header's when both or neither do).
     """
-    used, rate = params.number("ANALOG:USED"), params.number("ANALOG:RATE")
-    if used is None or rate is None or not np.isfinite(rate) or rate <= 0 or used < 0:
+    used_param, rate = params.get("ANALOG:USED"), params.number("ANALOG:RATE")
+    used = _whole(used_param.unsigned_words()) if used_param is not None else None
+    if used is None or rate is None or not (np.isfinite(rate) and 0 < rate / point_rate < 2**31):
         return header.analog_per_frame
-    from_parameters = int(used) * round(rate / point_rate)
+    from_parameters = used * round(rate / point_rate)
     if from_parameters == header.analog_per_frame:
         return from_parameters
-    declared = params.number("POINT:FRAMES") or (header.last_frame - header.first_frame + 1)
+    frames = params.get("POINT:FRAMES")
+    declared = (_whole(frames.unsigned_words()) if frames is not None else None) or (
+        header.last_frame - header.first_frame + 1)
 
     def fills(analog: int) -> bool:
         return data_bytes // ((4 * n_points + analog) * word) == declared
@@ -166,8 +177,9 @@ def _frame_count(header: C3dHeader, params: C3dParameters, available: int, notes
     if header.last_frame >= header.first_frame:
         declared.append(header.last_frame - header.first_frame + 1)
     frames = params.get("POINT:FRAMES")
-    if frames is not None and frames.numbers().size:
-        declared.append(int(frames.unsigned_words()[0]))
+    from_parameter = _whole(frames.unsigned_words()) if frames is not None else None
+    if from_parameter is not None:
+        declared.append(from_parameter)
     declared = [n for n in declared if n > 0]
     if not declared:
         raise MarkerFileError("the file declares no frames (the header's last frame is before its first)",

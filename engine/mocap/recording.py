@@ -75,6 +75,12 @@ def zero_triplets_to_nan(positions: np.ndarray) -> np.ndarray:
     return positions
 
 
+def scaled_to_mm(values: np.ndarray, scale: float) -> np.ndarray:
+    """``values · scale`` where a value too large for millimetres (1e308 m) becomes inf, not a numpy warning."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        return values * scale
+
+
 def nan_partial_samples(positions: np.ndarray) -> np.ndarray:
     """A sample with any coordinate missing is missing altogether (in place)."""
     bad = np.any(~np.isfinite(positions), axis=-1)

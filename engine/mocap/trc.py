@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.recording import Recording, nan_partial_samples, unit_scale
+from engine.mocap.recording import Recording, nan_partial_samples, scaled_to_mm, unit_scale
 from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines
 
 REQUIRED_KEYS = ("DataRate", "NumFrames", "NumMarkers", "Units")
@@ -86,7 +86,7 @@ def read_trc(path: str | Path) -> Recording:
             raise MarkerFileError(f"the file ends after {len(table)} frames but NumFrames is {n_frames} "
                                   "(truncated?)", file=path, line=last)
         raise MarkerFileError(f"{len(table)} frames of data but NumFrames is {n_frames}", file=path, line=last)
-    positions = nan_partial_samples(table[:, 2:].reshape(n_frames, n_markers, 3) * scale)
+    positions = nan_partial_samples(scaled_to_mm(table[:, 2:].reshape(n_frames, n_markers, 3), scale))
     start_ms = 1000.0 * float(table[0, 1]) if n_frames and np.isfinite(table[0, 1]) else 0.0
     return Recording(labels=names, positions=positions, rate_hz=rate, source=path.name, format="trc",
                      units=header["Units"].strip(), start_ms=start_ms, notes=notes)

@@ -1,0 +1,100 @@
+"""Fuzzing the marker-file readers with damaged real files (hypothesis).
+
+Each example takes a real file from tests/engine/data/capture, changes some bytes (or cuts it), and
+reads it: the only way out other than a Recording is a MarkerFileError whose message names the file.
+CI runs ``AP_FUZZ_EXAMPLES`` examples per test (default 200); the release check runs 10000:
+
+    AP_FUZZ_EXAMPLES=10000 .venv/bin/python -m pytest tests/engine/test_capture_fuzz.py -q
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from engine.mocap.errors import MarkerFileError
+from engine.mocap.readers import read_marker_file
+
+DATA = Path(__file__).parent / "data" / "capture"
+EXAMPLES = int(os.environ.get("AP_FUZZ_EXAMPLES", "200"))
+C3D_FILES = ["FP_Type3.c3d", "read_NOTworking2.c3d", "Optotrak.c3d", "Kistler-parameters.c3d"]
+TRC_FILES = ["opensim-exampleFormat.trc", "opensim-dataWithNaNsOfDifferentCases.trc"]
+FUZZ = settings(max_examples=EXAMPLES, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+
+
+def _read_or_refuse(path: Path) -> None:
+    try:
+        rec = read_marker_file(path)
+    except MarkerFileError as exc:
+        message = str(exc)
+        assert path.name in message
+        return
+    assert rec.positions.ndim == 3 and rec.positions.shape[1:] == (len(rec.labels), 3)
+    assert np.isfinite(rec.rate_hz) and rec.rate_hz > 0
+
+
+def _mutations(size: int, near: int):
+    """(offset, new bytes) changes, weighted to the header and parameter section where the structure lives."""
+    offset = st.one_of(st.integers(0, min(size, near) - 1), st.integers(0, size - 1))
+    return st.lists(st.tuples(offset, st.binary(min_size=1, max_size=4)), min_size=1, max_size=8)
+
+
+@pytest.mark.parametrize("name", C3D_FILES)
+def test_damaged_c3d_files_read_or_are_refused_naming_the_file(name, tmp_path):
+    original = (DATA / name).read_bytes()
+    path = tmp_path / name
+
+    @FUZZ
+    @given(changes=_mutations(len(original), 3072), cut=st.one_of(st.none(), st.integers(0, len(original))))
+    def run(changes, cut):
+        data = bytearray(original)
+        for at, new in changes:
+            data[at:at + len(new)] = new
+        path.write_bytes(bytes(data[:cut] if cut is not None else data))
+        _read_or_refuse(path)
+
+    run()
+
+
+@pytest.mark.parametrize("name", TRC_FILES)
+def test_damaged_trc_files_read_or_are_refused_naming_the_file(name, tmp_path):
+    original = (DATA / name).read_bytes()
+    path = tmp_path / name
+    tokens = st.sampled_from([b"\t", b"\n", b",", b" ", b"nan", b"inf", b"-1", b"1e308", b"0", b"", b"\r\n",
+                              b"PathFileType", b"NumFrames", b"\x00", b"\xff"])
+
+    @FUZZ
+    @given(changes=st.lists(st.tuples(st.integers(0, len(original) - 1), tokens), min_size=1, max_size=8),
+           cut=st.one_of(st.none(), st.integers(0, len(original))))
+    def run(changes, cut):
+        data = bytearray(original)
+        for at, new in changes:
+            data[at:at + 1] = new
+        path.write_bytes(bytes(data[:cut] if cut is not None else data))
+        _read_or_refuse(path)
+
+    run()
+
+
+@pytest.mark.parametrize("value", [float("nan"), float("inf"), -1.0, 1e30, 2.5])
+def test_counts_given_as_floats_that_are_no_counts(value):
+    """POINT:USED, POINT:FRAMES or ANALOG:USED written as a float (type 4) holding NaN, inf, −1 …: the header's."""
+    import struct
+
+    from engine.mocap import c3d_file
+    from engine.mocap.c3d_parameters import C3dHeader, C3dParameter, C3dParameters
+
+    header = C3dHeader(parameter_block=2, point_count=3, analog_per_frame=0, first_frame=1, last_frame=10,
+                       scale=-1.0, data_block=3, rate=60.0)
+    weird = C3dParameter(4, (), struct.pack("<f", value), "INTEL")
+    params = C3dParameters("INTEL", {"POINT:USED": weird, "POINT:FRAMES": weird, "ANALOG:USED": weird,
+                                     "ANALOG:RATE": C3dParameter(4, (), struct.pack("<f", 600.0), "INTEL")})
+    notes: list[str] = []
+    assert c3d_file._point_count(header, params, notes) == 3
+    assert c3d_file._analog_words(header, params, 60.0, 3, 4, 10 * 48, notes) == 0
+    assert c3d_file._frame_count(header, params, 10, notes, Path("x.c3d")) == 10
