@@ -33,6 +33,7 @@ HighLevelCommand(name='HeadNod', arguments={'at': 1000.0, 'count': 2.0}, file='<
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -51,6 +52,7 @@ LOW_LEVEL_ROOT = "low-level-commands"
 LOW_LEVEL_FORMAT = "artificial-person-low-level-commands"
 LOW_LEVEL_VERSION = 1
 HIGH_LEVEL_ROOT = "commands"
+_WHOLE_NUMBER = re.compile(r"[0-9]{1,18}")     # ASCII digits, few enough for int() to take
 ACTIVATE = "activate"
 
 
@@ -113,7 +115,7 @@ class Activation:
             return {"file": self.file, "line": self.line_number}
         if self.source:
             file, _, line = self.source.rpartition(":")
-            if line.isdigit():
+            if _WHOLE_NUMBER.fullmatch(line):       # not str.isdigit: '²' is a digit that int() refuses
                 return {"file": file, "line": int(line)}
             return {"file": self.source, "line": None}
         return {"file": None, "line": None}
@@ -139,8 +141,9 @@ def _commands(doc: etree._ElementTree, name: str) -> list[HighLevelCommand | Act
         raise CommandError(f"not a command file: the root element is <{root.tag}>, expected <{HIGH_LEVEL_ROOT}> "
                            f"or <{LOW_LEVEL_ROOT}>", file=name, line=source_line(root))
     version = root.get("version")
-    if version is not None and version.isdigit() and int(version) > LOW_LEVEL_VERSION:
-        raise CommandError(f"command file format version {version} is newer than this program reads "
+    if version is not None and _newer_version(version):
+        shown = version if len(version) <= 20 else version[:20] + "…"
+        raise CommandError(f"command file format version {shown} is newer than this program reads "
                            f"({LOW_LEVEL_VERSION})", file=name, line=source_line(root))
     validate(doc, SCHEMA_NAME, name, CommandError)
     out: list[HighLevelCommand | Activation] = []
@@ -152,6 +155,12 @@ def _commands(doc: etree._ElementTree, name: str) -> list[HighLevelCommand | Act
         else:
             out.append(_high_level(element, name))
     return out
+
+
+def _newer_version(version: str) -> bool:
+    """Whether a format version (ASCII digits, any number of them) is newer than the one this program reads."""
+    digits = version.strip().lstrip("0")
+    return digits.isascii() and digits.isdigit() and (len(digits) > 18 or int(digits) > LOW_LEVEL_VERSION)
 
 
 def _high_level(element: etree._Element, name: str) -> HighLevelCommand:

@@ -56,12 +56,14 @@ _high = st.sampled_from(COMMANDS).flatmap(_high_command)
 _key = st.tuples(NUMBER_TEXT, NUMBER_TEXT).map(lambda k: f'<key at="{k[0]}" value="{k[1]}"/>')
 _activate = st.tuples(st.sampled_from(["jaw_open", "head_nod", "nope", ""]),
                       st.sampled_from(["linear", "step", "cubic", "cosine", "wavy"]),
+                      st.sampled_from(["", ' source="in.xml:3"', ' source="in.xml:\u00b2"', ' command="X" line="y"']),
                       st.lists(_key, max_size=6)).map(
-    lambda a: f'<activate parameter="{a[0]}" interp="{a[1]}">{"".join(a[2])}</activate>')
+    lambda a: f'<activate parameter="{a[0]}" interp="{a[1]}"{a[2]}>{"".join(a[3])}</activate>')
 _high_file = st.lists(_high, max_size=5).map(lambda cs: "<commands>" + "".join(cs) + "</commands>")
-_low_file = st.lists(_activate, max_size=4).map(
-    lambda acts: '<low-level-commands format="artificial-person-low-level-commands" version="1">'
-                 + "".join(acts) + "</low-level-commands>")
+_version = st.one_of(st.just("1"), st.text(max_size=3), st.sampled_from(["2", "01", "\u00b2", "\u0663", "9" * 5000]))
+_low_file = st.tuples(_version, st.lists(_activate, max_size=4)).map(
+    lambda v: f'<low-level-commands format="artificial-person-low-level-commands" version="{v[0]}">'
+              + "".join(v[1]) + "</low-level-commands>")
 _mixed_file = st.lists(st.one_of(_high, _activate), max_size=5).map(
     lambda cs: "<commands>" + "".join(cs) + "</commands>")
 COMMAND_TEXT = st.one_of(_high_file, _low_file, _mixed_file, st.sampled_from(HOSTILE),

@@ -332,3 +332,18 @@ def test_low_level_key_times_beyond_a_day_are_refused():
            '</low-level-commands>')
     with pytest.raises(CommandError, match=r"low.xml:3: .*beyond the longest timeline"):
         parse_commands_text(xml, "low.xml")
+
+
+@pytest.mark.parametrize(("version", "words"), [("9" * 5000, "newer than this program reads"),
+                                                ("\u00b2", "not a valid value")])
+def test_a_format_version_int_cannot_read_is_one_error(version, words):
+    xml = f'<low-level-commands format="artificial-person-low-level-commands" version="{version}"/>'
+    with pytest.raises(CommandError, match=words):
+        parse_commands_text(xml, "low.xml")
+
+
+def test_an_activation_whose_source_line_is_not_ascii_digits_names_the_source_alone():
+    from engine.commands import Activation
+
+    where = Activation("jaw_open", [0.0], [0.0], source="in.xml:\u00b2").where()
+    assert where == {"file": "in.xml:\u00b2", "line": None}
