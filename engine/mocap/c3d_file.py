@@ -25,7 +25,7 @@ import numpy as np
 
 from engine.mocap.c3d_parameters import C3dHeader, C3dParameters, decode_floats, int_order, read_parameters
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.recording import Recording, unit_scale, zero_triplets_to_nan
+from engine.mocap.recording import Recording, check_rate, unit_scale, zero_triplets_to_nan
 
 MAX_FILE_BYTES = 4 << 30
 """Larger files are refused rather than read into memory whole (4 GiB: about 10 hours of 100 markers at 100 Hz)."""
@@ -105,9 +105,7 @@ def _rate(header: C3dHeader, params: C3dParameters, path: Path) -> float:
     rate = params.number("POINT:RATE")
     if rate is None or not (np.isfinite(rate) and rate > 0):
         rate = header.rate
-    if not (np.isfinite(rate) and 0 < rate < 1e7):
-        raise MarkerFileError(f"POINT:RATE is {rate:g}: not a frame rate", file=path)
-    return float(rate)
+    return check_rate(rate, "POINT:RATE", path)
 
 
 def _whole(values: np.ndarray) -> int | None:

@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.recording import Recording, nan_partial_samples, scaled_to_mm, unit_scale
+from engine.mocap.recording import Recording, check_rate, nan_partial_samples, scaled_to_mm, unit_scale
 from engine.mocap.text_tables import parse_rows, read_text_lines
 
 DEFAULT_PATTERNS = ("{marker}_{axis}", "{marker}.{axis}", "{marker} {axis}", "{marker}:{axis}")
@@ -87,6 +87,7 @@ def read_csv(path: str | Path, layout: CsvLayout | None = None) -> Recording:
         rate, start_ms = _rate_from_times(times, path, header_line + 1)
     labels = list(markers)
     index = np.array([markers[m] for m in labels], dtype=int).reshape(len(labels), 3)
+    rate = check_rate(rate, "the frame rate", path)
     positions = nan_partial_samples(scaled_to_mm(table[:, index], scale))
     return Recording(labels=labels, positions=positions, rate_hz=rate, source=path.name, format="csv",
                      units=layout.units, start_ms=start_ms, events=[])

@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.recording import Recording, zero_triplets_to_nan
+from engine.mocap.recording import Recording, check_rate, zero_triplets_to_nan
 from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines
 
 REQUIRED_KEYS = ("NO_OF_FRAMES", "NO_OF_MARKERS", "FREQUENCY", "MARKER_NAMES")
@@ -135,10 +135,7 @@ def _rate(header: dict[str, tuple[list[str], int]], path: Path) -> float:
     if text.upper() == "EXT":
         raise MarkerFileError("FREQUENCY is EXT (external timebase): export with a known frame rate", file=path,
                               line=line)
-    rate = parse_number(text, "FREQUENCY", path, line)
-    if not (np.isfinite(rate) and rate > 0):
-        raise MarkerFileError(f"FREQUENCY must be a positive frame rate, not {text}", file=path, line=line)
-    return rate
+    return check_rate(parse_number(text, "FREQUENCY", path, line), "FREQUENCY", path, line)
 
 
 def _columns(lines: list[str], i: int, names: list[str], path: Path,

@@ -57,6 +57,19 @@ UNIT_WORDS = {"millimeters": 1.0, "millimetres": 1.0, "centimeters": 10.0, "cent
 """Units written out; a writer may cut them to a fixed width (``'mete'`` in some C3D files)."""
 
 
+MIN_RATE_HZ = 1e-3
+MAX_RATE_HZ = 1e6
+"""Frame rates a marker file may state: a frame every 1000 s up to a million a second (cameras reach ~10 kHz)."""
+
+
+def check_rate(rate: float, what: str, path: Path, line: int | None = None) -> float:
+    """``rate`` (frames per second) if it is one; else :class:`MarkerFileError` naming ``what``, file and line."""
+    if not (np.isfinite(rate) and MIN_RATE_HZ <= rate <= MAX_RATE_HZ):
+        raise MarkerFileError(f"{what} must be a frame rate from {MIN_RATE_HZ:g} to {MAX_RATE_HZ:g} frames per "
+                              f"second, not {rate:g}", file=path, line=line)
+    return float(rate)
+
+
 def unit_scale(unit: str, path: Path, line: int | None = None) -> float:
     """Millimetres per file unit for ``mm``, ``cm`` or ``m`` (any case; NUL padding and spelled-out units too)."""
     text = unit.replace("\0", " ").strip().lower()

@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.recording import Recording, nan_partial_samples, scaled_to_mm, unit_scale
+from engine.mocap.recording import Recording, check_rate, nan_partial_samples, scaled_to_mm, unit_scale
 from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines
 
 REQUIRED_KEYS = ("DataRate", "NumFrames", "NumMarkers", "Units")
@@ -51,9 +51,7 @@ def read_trc(path: str | Path) -> Recording:
     missing = [k for k in REQUIRED_KEYS if k not in header]
     if missing:
         raise MarkerFileError(f"the TRC header lacks {', '.join(missing)}", file=path, line=2)
-    rate = parse_number(header["DataRate"], "DataRate", path, 3)
-    if not (np.isfinite(rate) and rate > 0):
-        raise MarkerFileError(f"DataRate must be a positive frame rate, not {header['DataRate']}", file=path, line=3)
+    rate = check_rate(parse_number(header["DataRate"], "DataRate", path, 3), "DataRate", path, 3)
     n_frames = _whole(header["NumFrames"], "NumFrames", path)
     n_markers = _whole(header["NumMarkers"], "NumMarkers", path)
     scale = unit_scale(header["Units"], path, line=3)
@@ -112,7 +110,7 @@ def _split(line: str) -> list[str]:
 def _whole(text: str, key: str, path: Path) -> int:
     try:
         n = int(float(text))
-    except ValueError:
+    except (ValueError, OverflowError):
         raise MarkerFileError(f"{key} '{text}' is not a whole number", file=path, line=3) from None
     if n < 0 or n != float(text):
         raise MarkerFileError(f"{key} '{text}' is not a whole number", file=path, line=3)

@@ -98,3 +98,30 @@ def test_counts_given_as_floats_that_are_no_counts(value):
     assert c3d_file._point_count(header, params, notes) == 3
     assert c3d_file._analog_words(header, params, 60.0, 3, 4, 10 * 48, notes) == 0
     assert c3d_file._frame_count(header, params, 10, notes, Path("x.c3d")) == 10
+
+
+@pytest.mark.parametrize(("fmt", "key", "value", "message"), [
+    ("trc", "NumFrames", "inf", r"x\.trc:3: NumFrames 'inf' is not a whole number"),
+    ("trc", "DataRate", "1e300", r"x\.trc:3: DataRate must be a frame rate from 0\.001 to 1e\+06"),
+    ("trc", "DataRate", "1e-300", r"x\.trc:3: DataRate must be a frame rate"),
+    ("tsv", "FREQUENCY", "1e300", r"x\.tsv:\d+: FREQUENCY must be a frame rate from 0\.001 to 1e\+06"),
+    ("tsv", "FREQUENCY", "1e-300", r"x\.tsv:\d+: FREQUENCY must be a frame rate"),
+])
+def test_header_numbers_out_of_any_range(tmp_path, fmt, key, value, message):
+    import re
+
+    from engine.mocap.sample_files import write_qtm_tsv, write_trc
+
+    positions = np.arange(18.0).reshape(2, 3, 3)
+    if fmt == "trc":
+        path = write_trc(tmp_path / "x.trc", ["a", "b", "c"], positions, rate_hz=60)
+        lines = Path(path).read_text().splitlines()
+        cells = lines[2].split("\t")
+        cells[lines[1].split("\t").index(key)] = value
+        lines[2] = "\t".join(cells)
+        Path(path).write_text("\n".join(lines) + "\n")
+    else:
+        path = write_qtm_tsv(tmp_path / "x.tsv", ["a", "b", "c"], positions, rate_hz=60)
+        Path(path).write_text(re.sub(rf"{key}\t\S+", f"{key}\t{value}", Path(path).read_text()))
+    with pytest.raises(MarkerFileError, match=message):
+        read_marker_file(path)
