@@ -443,3 +443,29 @@ def test_a_file_whose_samples_all_carry_a_negative_residual_says_the_coordinates
     with pytest.raises(MarkerFileError, match=r"68 samples hold coordinates but a negative residual word"):
         read_marker_file(path)
 
+
+
+def test_pca_names_the_components_of_a_z_up_recording_as_of_the_y_up_one(head):
+    """The same synthetic take written Z-up (as C3D labs write) gets the same component words after import."""
+    from engine.mocap.frame_selection import select_frames
+    from engine.mocap.pca import describe_component, multistage_pca
+    from engine.mocap.synthetic import synthesize_recording
+    from tests.engine.mocap_samples import TRAINING_PHONES, parse_phones
+
+    take = synthesize_recording(phones=parse_phones(TRAINING_PHONES), model=head, seed=3, noise_mm=0,
+                                head_motion=False, gaps=False)
+
+    def words(positions, up="auto"):
+        recording = Recording(list(take.markers), positions, take.rate_hz, "take", "synthetic")
+        session = build_session(recording, phones=take.phones, up=up)
+        art = multistage_pca(session, frames=select_frames(session.phones, session.n_frames, session.rate_hz,
+                                                           ["V", "C"]))
+        return [describe_component(art, k) for k in range(art.n_components)], session.report["axes"]
+
+    z_up_positions = take.positions[..., [0, 2, 1]] * [1, -1, 1]
+    y_up, axes_y = words(take.positions)
+    z_up, axes_z = words(z_up_positions)
+    assert (axes_y["up"], axes_z["up"], axes_z["facing"]) == ("+Y", "+Z", "-Y")
+    assert z_up == y_up
+    as_if_y_up, _ = words(z_up_positions, up="Y")                 # what the import did before: no turn
+    assert as_if_y_up != y_up
