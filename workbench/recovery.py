@@ -9,7 +9,12 @@ folder (``<AppLocalDataLocation>/recovery``, on Linux
   (atomically) every ``autosave/interval_seconds`` while it is modified;
 * ``<id>.json``: what the copy is (format ``artificial-person-recovery``,
   version 1): the file it belongs to and when it was written. Written last,
-  so a session with a ``.json`` always has a complete model.
+  so a session with a ``.json`` always has a complete model. An autosave
+  killed half-way (``kill -9``, a power cut) leaves the previous copy or the
+  new one, whole: the model pair's renames are journalled and finished when
+  the orphans are listed (:func:`engine.formats.atomic.finish_interrupted_writes`),
+  which also removes the dead process's temporary files; a model killed
+  before its first ``.json`` is removed, as it was never offered.
 * ``<id>.library.json``: the library editor's unsaved text (format
   ``artificial-person-library-recovery``, version 1): the text itself, the
   library file it belongs to (``null`` for a new file) and when it was
@@ -37,7 +42,7 @@ from pathlib import Path
 from PySide6.QtCore import QLockFile, QObject, QStandardPaths, QTimer, Signal
 
 import engine
-from engine.formats.atomic import atomic_write_text
+from engine.formats.atomic import atomic_write_text, finish_interrupted_writes
 
 from .document import ModelDocument
 
@@ -112,6 +117,9 @@ def orphaned_entries(folder: str | Path | None = None) -> list[RecoveryEntry]:
     Sessions still locked by a live process are left alone; unreadable
     session descriptions are skipped (and removed with their files).
     """
+    folder = Path(folder) if folder is not None else recovery_dir()
+    if folder.is_dir():
+        finish_interrupted_writes(folder)   # an autosave killed half-way: its renames done, its temporaries gone
     entries = []
     for folder_, session in _orphaned_sessions(folder, ".json"):
         entry = _read_entry(folder_ / f"{session}.json")
@@ -119,6 +127,9 @@ def orphaned_entries(folder: str | Path | None = None) -> list[RecoveryEntry]:
             _remove_session_files(folder_, session)
         else:
             entries.append(entry)
+    for folder_, session in _orphaned_sessions(folder, ".xml"):
+        if not (folder_ / f"{session}.json").exists():
+            _remove_session_files(folder_, session)     # killed before its description was written: never offered
     return sorted(entries, key=lambda e: e.saved_at, reverse=True)
 
 
