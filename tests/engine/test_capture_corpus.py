@@ -469,3 +469,13 @@ def test_pca_names_the_components_of_a_z_up_recording_as_of_the_y_up_one(head):
     assert z_up == y_up
     as_if_y_up, _ = words(z_up_positions, up="Y")                 # what the import did before: no turn
     assert as_if_y_up != y_up
+
+
+def test_the_import_report_shows_what_the_reader_settled(tmp_path, capsys):
+    data = (DATA / "read_NOTworking2.c3d").read_bytes()
+    path = tmp_path / "short.c3d"
+    path.write_bytes(data[:-23 * 4 * 2])
+    assert main(["mocap", "import", str(path), "--reference", "none", "-o", str(tmp_path / "s.h5")]) == 0
+    out = capsys.readouterr().out
+    assert "note: the data end one frame early (669 of 670 frames); 669 read" in out
+    assert "axes: the file's +Z is up and -Y faces forward (up as the file's POINT:Y_SCREEN names it" in out
