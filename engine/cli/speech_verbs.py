@@ -29,9 +29,20 @@ TABLE_KINDS = ("tracks", "phones", "landmarks")
 
 def add_verbs(verbs: Any) -> None:
     p = verbs.add_parser("say", help="speak text with inline commands: video, audio and tables (§2.1)")
-    source = p.add_mutually_exclusive_group(required=True)
+    source = p.add_mutually_exclusive_group()
     source.add_argument("text", nargs="?", metavar="TEXT", help="the text, e.g. 'Hyvää päivää <Blink/> mitä kuuluu?'")
     source.add_argument("--file", metavar="F", help="read the text from a UTF-8 file instead")
+    recorded = p.add_argument_group("a recorded voice instead of Festival (the text, if any, holds inline commands)")
+    recorded.add_argument("--audio", metavar="TAKE.wav", help="the speaker's recording (PCM WAV), used unchanged")
+    recorded.add_argument("--labels", metavar="LABELS",
+                          help="its phone labels: a Praat TextGrid, a label file or a phones CSV")
+    recorded.add_argument("--tier", default=None, metavar="NAME", help="TextGrid phone tier (default: as mocap import)")
+    recorded.add_argument("--word-tier", default=None, metavar="NAME",
+                          help="TextGrid word tier for inline commands (default: words, word, orthography, …)")
+    recorded.add_argument("--phone-set", default="auto", metavar="NAME",
+                          help="the labels' phone set: auto (default), arpabet, ipa, x-sampa, sampa, finnish, radio")
+    recorded.add_argument("--phone-map", default=None, metavar="FILE",
+                          help="your own labels → phones of the set: 'LABEL PHONE' per line")
     p.add_argument("--voice", default=None, metavar="V",
                    help="Festival voice (default suo_fi_lj_diphone; hy_fi_mv_diphone is the male Finnish voice)")
     add_model_option(p)
@@ -80,8 +91,17 @@ def run_say(args: argparse.Namespace) -> int:
     model = load_model_argument(args.model)
     library = load_library(args.library)
     table = load_articulation(args.articulation) if args.articulation else None
-    speech = speak(text, model, voice=args.voice, library=library, table=table,
-                   coarticulation=args.coarticulation, prosody_seed=args.seed if args.prosody else None, name=name)
+    prosody_seed = args.seed if args.prosody else None
+    if args.audio is not None:
+        from engine.speech.recorded import speak_recording
+
+        speech = speak_recording(args.audio, args.labels, model, text=text, phone_set=args.phone_set, tier=args.tier,
+                                 word_tier=args.word_tier, phone_map=args.phone_map, library=library, table=table,
+                                 coarticulation=args.coarticulation, prosody_seed=prosody_seed, name=name)
+    else:
+        assert text is not None                                # _text refuses no text without --audio
+        speech = speak(text, model, voice=args.voice, library=library, table=table,
+                       coarticulation=args.coarticulation, prosody_seed=prosody_seed, name=name)
     for warning in speech.warnings:
         print(f"warning: {warning}", file=sys.stderr)
     progress = None
@@ -101,7 +121,19 @@ def _checked_output(path: str | None) -> Path | None:
     return out
 
 
-def _text(args: argparse.Namespace) -> tuple[str, str]:
+def _text(args: argparse.Namespace) -> tuple[str | None, str]:
+    recorded_options = ("labels", "tier", "word_tier", "phone_map")
+    if args.audio is None:
+        given = [option for option in recorded_options if getattr(args, option) is not None]
+        if given or args.phone_set != "auto":
+            raise UserError(f"--{(given or ['phone_set'])[0].replace('_', '-')} needs --audio TAKE.wav")
+        if args.text is None and args.file is None:
+            raise UserError("nothing to say: give TEXT, --file F, or --audio TAKE.wav --labels LABELS")
+    else:
+        if args.labels is None:
+            raise UserError("--audio needs --labels (a TextGrid, label file or phones CSV with its phones)")
+        if args.voice is not None:
+            raise UserError("--voice applies to Festival; a recording speaks with its own voice")
     if args.file is None:
         return args.text, "<text>"
     try:

@@ -39,7 +39,7 @@ from engine.formats.atomic import atomic_files
 from engine.model.landmarks import landmark_sort_key
 from engine.model.model import Model
 from engine.outputs.video_writer import Progress, VideoRequest, check_video, encode_video
-from engine.speech.synthesis import phones_csv, wav_bytes
+from engine.speech.synthesis import phones_csv, write_wav
 from engine.timeline.tracks import tracks_csv_text
 
 if TYPE_CHECKING:
@@ -115,7 +115,7 @@ def write_speech_files(speech: Speech, model: Model, targets: Mapping[str, str |
                 encode_video(video, destination, steps.frame, antialias)
                 continue
             if kind == "wav":
-                destination.write_bytes(wav_bytes(speech.utterance.samples, speech.utterance.sample_rate))
+                write_wav(destination, speech.utterance)
             elif kind == "xml":
                 destination.write_text(low_level_xml(speech.activations), encoding="utf-8")
             elif kind == "phones":

@@ -22,6 +22,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from engine.errors import UserError
 from engine.model.model import Model
 
 if TYPE_CHECKING:
@@ -43,6 +44,8 @@ class SayRequest:
     coarticulation: str = "cohen-massaro"
     prosody_seed: int | None = None        # None: no visual prosody; a seed: blinks, brows, nods
     synthesizer: Synthesizer | None = None  # None: a FestivalSynthesizer
+    audio: Path | None = None               # a recorded voice (WAV) instead of synthesis …
+    labels: Path | None = None              # … with its phone labels; the text then holds inline commands
 
 
 @dataclass
@@ -80,9 +83,18 @@ def run_say(request: SayRequest, folder: str | Path, cancelled: Callable[[], boo
     elif cancelled is not None and isinstance(synthesizer, FestivalSynthesizer):
         synthesizer = copy.copy(synthesizer)
         synthesizer.cancelled = cancelled
-    speech = speak(request.text, request.model, synthesizer=synthesizer, voice=request.voice,
-                   coarticulation=request.coarticulation, prosody_seed=request.prosody_seed, name=TEXT_NAME)
-    wav = Path(folder) / f"say-{next(_counter)}.wav"
+    if request.audio is not None:
+        from engine.speech.recorded import speak_recording
+
+        if request.labels is None:
+            raise UserError("a recorded voice needs its phone labels", file=request.audio)
+        speech = speak_recording(request.audio, request.labels, request.model, text=request.text.strip() or None,
+                                 coarticulation=request.coarticulation, prosody_seed=request.prosody_seed,
+                                 name=TEXT_NAME)
+    else:
+        speech = speak(request.text, request.model, synthesizer=synthesizer, voice=request.voice,
+                       coarticulation=request.coarticulation, prosody_seed=request.prosody_seed, name=TEXT_NAME)
+    wav = Path(folder) / f"say-{next(_counter)}.wav"           # a copy: the front end may delete it later
     write_wav(wav, speech.utterance)
     return SayResult(request, speech, wav)
 

