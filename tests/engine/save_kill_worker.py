@@ -4,9 +4,10 @@ It imports the engine once, then forks a saver on request, so each kill -9
 trial costs a fork rather than a Python start-up. Commands, one per line on
 stdin; one reply line each on stdout:
 
-``loop PATH``
-    fork a child that saves model B, A, B, A, … to ``PATH`` until killed;
-    reply ``pid <PID>``.
+``loop PATH [KIND]``
+    fork a child that saves B, A, B, A, … to ``PATH`` until killed; reply
+    ``pid <PID>``. ``KIND``: ``model`` (the default), ``session`` or
+    ``articulation`` (the pairs of :func:`sessions` and :func:`articulations`).
 ``stop PATH POINT``
     fork a child that saves model B over ``PATH`` and kills itself (SIGKILL)
     at ``POINT`` of the save: ``journal`` (half-way through writing the
@@ -31,8 +32,13 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
+
 import engine.formats.atomic as atomic
 from engine import save_model
+from engine.mocap.articulation_file import save_articulation_file
+from engine.mocap.pca import Articulation, Stage, multistage_pca
+from engine.mocap.session import Session, save_session
 from engine.model.model import Model
 from tests.engine.synthetic import random_model
 
@@ -47,6 +53,27 @@ def models() -> tuple[Model, Model]:
     for region in b.regions.values():
         region.weights = region.weights * 0.5
     return a, b
+
+
+def sessions() -> tuple[Session, Session]:
+    """Two motion-capture sessions of one layout, different contents."""
+    rng = np.random.default_rng(5)
+    positions = rng.normal(size=(400, 12, 3)) * 10
+
+    def session(shift: float) -> Session:
+        return Session(markers=[f"m{i}" for i in range(12)], positions=positions + shift, raw=positions,
+                       rate_hz=60, missing=np.zeros((400, 12), bool), alignment=np.tile(np.eye(4), (400, 1, 1)),
+                       source=f"shift {shift}")
+
+    return session(0.0), session(2.5)
+
+
+def articulations() -> tuple[Articulation, Articulation]:
+    """Two articulation files of one layout, different contents."""
+    rng = np.random.default_rng(6)
+    markers = [f"m{i}" for i in range(12)]
+    return tuple(multistage_pca(markers, rng.normal(size=(200, 12, 3)) * scale, stages=[Stage(("m*",), 3)])
+                 for scale in (1.0, 2.0))                    # type: ignore[return-value]
 
 
 def die() -> None:
@@ -86,6 +113,10 @@ def arm(point: str) -> None:
         raise ValueError(point)
 
 
+SAVERS = {"model": (models, save_model), "session": (sessions, save_session),
+          "articulation": (articulations, save_articulation_file)}
+
+
 def main() -> None:
     a, b = models()
     for line in sys.stdin:
@@ -94,9 +125,11 @@ def main() -> None:
             pid = os.fork()
             if pid == 0:
                 path = Path(args[0])
+                make, save = SAVERS[args[1] if len(args) > 1 else "model"]
+                first, second = make()
                 while True:
-                    save_model(b, path)
-                    save_model(a, path)
+                    save(second, path)
+                    save(first, path)
             reply = f"pid {pid}"
         elif command == "stop":
             pid = os.fork()

@@ -29,8 +29,10 @@ import pytest
 
 import engine.formats.model_files as model_files
 from engine import ModelFileError, load_model, save_model
+from engine.mocap.articulation_file import load_articulation_file, save_articulation_file
+from engine.mocap.session import load_session, save_session
 from engine.model.model import Model
-from tests.engine.save_kill_worker import models
+from tests.engine.save_kill_worker import articulations, models, sessions
 
 ROOT = Path(__file__).resolve().parents[2]
 KILL_TRIALS = int(os.environ.get("AP_KILL_TRIALS", "100"))
@@ -161,6 +163,39 @@ def test_a_save_cleans_what_a_killed_save_left(tmp_path, worker):
     assert killed_by_sigkill(worker.reap(worker.fork(f"stop {path} rename-2")))
     save_model(b, path)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["m.h5", "m.xml"]
+
+
+KIND_TRIALS = max(1, KILL_TRIALS // 4)
+
+
+@pytest.mark.parametrize("kind", ["session", "articulation"])
+def test_kill_9_while_saving_a_session_or_articulation_file(tmp_path, worker, kind):
+    """One file, one rename: old or new after any kill, and the next save leaves no temporary behind."""
+    make, save, load, same = {
+        "session": (sessions, save_session, load_session, lambda x, y: np.array_equal(x.positions, y.positions)),
+        "articulation": (articulations, save_articulation_file, load_articulation_file,
+                         lambda x, y: np.array_equal(x.components, y.components)),
+    }[kind]
+    first, second = make()
+    path = tmp_path / f"{kind}.h5"
+    started = time.perf_counter()
+    save(first, path)
+    one_save = time.perf_counter() - started
+    rng = random.Random(KILL_SEED)
+    outcomes: Counter[str] = Counter()
+    for trial in range(KIND_TRIALS):
+        pid = worker.fork(f"loop {path} {kind}")
+        time.sleep(rng.uniform(0.0, 3.0 * one_save))           # where the kill lands, not a timing assertion
+        os.kill(pid, signal.SIGKILL)
+        assert killed_by_sigkill(worker.reap(pid))
+        loaded = load(path)
+        which = "old" if same(loaded, first) else "new" if same(loaded, second) else None
+        assert which is not None, f"trial {trial}: neither the old nor the new file"
+        outcomes[which] += 1
+        save(first, path)
+        assert sorted(p.name for p in tmp_path.iterdir()) == [path.name], f"trial {trial}"
+    print(f"\n{kind}: {KIND_TRIALS} kill -9 trials, loadable {sum(outcomes.values())}, "
+          f"A={outcomes['old']} B={outcomes['new']}, leftover after the next save 0")
 
 
 def test_a_mixed_pair_is_refused_naming_both_saves(tmp_path):
