@@ -4,8 +4,12 @@
 parameter tree, parts and landmarks; the HDF5 file it names in ``arrays``
 holds the rest mesh, faces, per-vertex parts, sparse weights and displacement
 fields. Both carry a format version; readers refuse versions they do not know.
-Saves are atomic: each file is written to a temporary name and renamed. See
-``docs/model-format.md``.
+Saves are atomic for the pair, even under ``kill -9``: both files are written
+under temporary names and renamed under a journal that the next save or load
+finishes (:mod:`engine.formats.atomic`), and both carry the same
+``generation`` token, so a description beside another save's arrays is
+refused. The arrays file is read as untrusted input
+(:mod:`engine.formats.hdf5_reading`). See ``docs/model-format.md``.
 
 >>> import tempfile
 >>> from engine import load_model, save_model
@@ -54,12 +58,12 @@ def load_model(path: str | Path | None = None) -> Model:
     from engine.paths import default_model_path
 
     path = Path(path) if path is not None else default_model_path()
+    finish_interrupted_writes(path if path.is_dir() else path.parent)   # a save killed half-way is finished first
     if path.is_dir():
         candidates = sorted(path.glob("*.xml"))
         if len(candidates) != 1:
             raise ModelFileError("a model folder must hold exactly one .xml description", file=path)
         path = candidates[0]
-    finish_interrupted_writes(path.parent)      # a save killed half-way is completed first (atomic.py)
     if not path.exists():
         raise ModelFileError("no such file", file=path)
     doc = parse_xml(path, ModelFileError)
