@@ -479,3 +479,13 @@ def test_the_import_report_shows_what_the_reader_settled(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "note: the data end one frame early (669 of 670 frames); 669 read" in out
     assert "axes: the file's +Z is up and -Y faces forward (up as the file's POINT:Y_SCREEN names it" in out
+
+
+def test_a_text_file_whose_every_sample_is_missing_is_refused(tmp_path, capsys):
+    from engine.mocap.sample_files import write_trc
+
+    path = write_trc(tmp_path / "empty.trc", ["8.3", "8.4", "2.1"], np.full((5, 3, 3), np.nan), rate_hz=60)
+    assert main(["mocap", "import", str(path), "--reference", "none", "-o", str(tmp_path / "s.h5")]) == 2
+    err = capsys.readouterr().err
+    assert "empty.trc: every sample of the 3 markers imported is missing in all 5 frames" in err
+    assert not (tmp_path / "s.h5").exists()
