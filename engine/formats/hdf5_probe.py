@@ -17,6 +17,7 @@ The time limit is ``AP_HDF5_PROBE_SECONDS`` if set, else 10 s plus 1 s per
 from __future__ import annotations
 
 import contextlib
+import faulthandler
 import gc
 import math
 import os
@@ -115,6 +116,9 @@ def _probe_forked(path: Path, budget: int, allowed_filters: frozenset[int], seco
     if pid == 0:                        # the child: read, report, and leave without running any cleanup
         status = 0
         gc.disable()                    # collecting would copy the parent's pages, for nothing
+        faulthandler.disable()          # a crash is reported by the parent in one line, not as a stack dump
+        with contextlib.suppress(OSError):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), 2)
         try:
             os.close(read_end)
             read_everything(path, budget, allowed_filters)

@@ -292,3 +292,30 @@ def test_a_file_the_hdf5_library_hangs_on_is_refused(tmp_path, monkeypatch):
     arrays.write_bytes(bytes(data))
     monkeypatch.setenv("AP_HDF5_PROBE_SECONDS", "2")
     refuse(KINDS[0], written, "did not finish", "hangs")
+
+
+def test_a_crash_of_the_library_while_reading_is_the_formats_error(tmp_path, monkeypatch):
+    """The child that reads the file first dies of a real SIGSEGV here (as the library would on a file
+    it crashes on): the load is refused, the program goes on."""
+    import signal
+
+    from engine.formats import hdf5_probe
+
+    written = save_model(small_model(), tmp_path / "m.xml")
+    monkeypatch.setattr(hdf5_probe, "_one_thread", lambda: True)
+    monkeypatch.setattr(hdf5_probe, "read_everything", lambda *_: os.kill(os.getpid(), signal.SIGSEGV))
+    refuse(KINDS[0], written, "crashed", f"signal {int(signal.SIGSEGV)}")
+
+
+def test_the_probe_in_a_fresh_interpreter_reads_good_files_and_stops_hanging_ones(tmp_path, monkeypatch):
+    """Where forking is not safe (threads, a Qt application) the file is read by a new interpreter."""
+    from engine.formats import hdf5_probe
+
+    monkeypatch.setattr(hdf5_probe, "_one_thread", lambda: False)
+    written = save_model(small_model(), tmp_path / "m.xml")
+    assert load_model(written).n_vertices == 6
+    data = bytearray(written.with_suffix(".h5").read_bytes())
+    data[data.find(b"\x02\x00\x00\x00\x00\x00\x00\x00mm\x00")] = 0xC1
+    written.with_suffix(".h5").write_bytes(bytes(data))
+    monkeypatch.setenv("AP_HDF5_PROBE_SECONDS", "2")
+    refuse(KINDS[0], written, "did not finish")
