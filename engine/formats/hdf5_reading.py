@@ -86,6 +86,9 @@ class HDF5Reader:
                 probe_in_child(self.path, self.budget, frozenset(ALLOWED_FILTERS))
             except ProbeFailed as exc:
                 raise self.error(f"damaged HDF5 file: {exc.reason}", file=self.path) from None
+            except OSError as exc:       # no process could be started to read it (out of memory, limits)
+                raise self.error(f"cannot check the file: no process to read it in ({exc.strerror or exc})",
+                                 file=self.path) from None
         try:
             self._file = h5py.File(self.path, "r")
         except Exception:            # h5py reports a damaged superblock in many ways
