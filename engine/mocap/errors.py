@@ -7,6 +7,9 @@ them as one line, ``error: <file>:<line>: <what>``, and exits with status 2.
 from __future__ import annotations
 
 from engine.errors import UserError
+from engine.speech.labels import LabelFileError
+
+__all__ = ["LabelFileError", "MarkerFileError", "MocapError", "SessionFileError"]
 
 
 class MocapError(UserError):
@@ -19,7 +22,3 @@ class MarkerFileError(MocapError):
 
 class SessionFileError(MocapError):
     """A session file is not one this program wrote, or is damaged or of an unknown version."""
-
-
-class LabelFileError(MocapError):
-    """A phone label file (Praat TextGrid or start/end/label lines) or a marker mapping file is malformed."""

@@ -3,7 +3,7 @@
 The steps, each its own engine function: read the file (:mod:`.readers`),
 name the markers (:mod:`.naming`), turn them to the toolkit's axes
 (:mod:`.capture_axes`: +Y up, +Z facing), fill short gaps (:mod:`.gaps`), remove
-head motion (:mod:`.head_motion`), attach phone labels (:mod:`.labels`).
+head motion (:mod:`.head_motion`), attach phone labels (:mod:`engine.speech.labels`).
 :func:`build_session` does all but the reading, for arrays that come from
 elsewhere (a generator, another tool).
 
@@ -60,11 +60,11 @@ def import_marker_file(path: str | Path, *, format: str = "auto", mapping: str |
     if labels is not None and text is not None:
         raise MocapError("give phone labels either from a file or from the spoken text, not both")
     if labels is not None:
-        from engine.mocap.labels import read_labels
+        from engine.speech.labels import read_labels
 
         phones, phone_source = read_labels(labels, tier=tier), Path(labels).name
     elif text is not None:
-        from engine.mocap.labels import festival_phones
+        from engine.speech.labels import festival_phones
 
         duration = recording.n_frames * 1000.0 / recording.rate_hz if stretch_text else None
         phones = festival_phones(text, voice=voice, duration_ms=duration, synthesizer=synthesizer)

@@ -26,8 +26,8 @@ from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from engine.errors import UserError
 from engine.formats.text_files import read_bounded_bytes, read_bounded_text
+from engine.speech.labels import LabelFileError, read_labels
 from engine.speech.phone_features import PhoneFeatures
 from engine.speech.phone_sets import PAUSE_LABELS, PHONE_SETS, PhoneSet, closest_phone_set, guess_phone_set
 from engine.speech.synthesis import Segment, SynthesisError, Utterance, read_wav
@@ -42,16 +42,10 @@ WORD_TIER_NAMES = ("words", "word", "orthography", "ort", "text")
 """TextGrid tiers read as the words, in this order (any case), when ``word_tier`` is not given."""
 
 
-class LabelError(UserError):
-    """A label file that cannot drive the face: a missing tier, unknown phones, labels past the audio."""
-
-
 def recorded_utterance(audio: str | Path, labels: str | Path, phone_set: str = "auto", tier: str | None = None,
                        word_tier: str | None = None, phone_map: str | Path | None = None) -> Utterance:
     """The recording as an :class:`~engine.speech.synthesis.Utterance`: its samples, its labelled phones
     (named as ``phone_set`` names them, with their features) and its words (from the word tier, if any)."""
-    from engine.mocap.labels import read_labels
-
     audio, labels = Path(audio), Path(labels)
     samples, rate = read_wav(audio)
     duration_ms = 1000.0 * len(samples) / rate
@@ -91,7 +85,7 @@ def speak_recording(audio: str | Path, labels: str | Path, model: Model, text: s
     if script is None:
         script = Script(utterance.text, [w.label for w in utterance.words], [], name)
     elif script.commands and not utterance.words:
-        raise LabelError("the text has inline commands, but the labels have no word tier to anchor them to "
+        raise LabelFileError("the text has inline commands, but the labels have no word tier to anchor them to "
                          f"(tiers named {', '.join(WORD_TIER_NAMES)}, or --word-tier NAME)", file=labels)
     return animate(script, utterance, model, library, table, coarticulation, prosody_seed)
 
@@ -101,18 +95,18 @@ def read_phone_map(path: str | Path) -> dict[str, str]:
     the labels of a file to phones of the chosen phone set."""
     path = Path(path)
     try:
-        text = read_bounded_text(path, error=LabelError, what="phone map")
+        text = read_bounded_text(path, error=LabelFileError, what="phone map")
     except OSError as exc:
-        raise LabelError(f"cannot read the phone map: {exc.strerror or exc}", file=path) from None
+        raise LabelFileError(f"cannot read the phone map: {exc.strerror or exc}", file=path) from None
     except UnicodeDecodeError:
-        raise LabelError("the phone map is not UTF-8 text", file=path) from None
+        raise LabelFileError("the phone map is not UTF-8 text", file=path) from None
     mapping: dict[str, str] = {}
     for number, line in enumerate(text.splitlines(), start=1):
         content = re.split(r"(?:^|\s)#", line, maxsplit=1)[0].split()
         if not content:
             continue
         if len(content) != 2:
-            raise LabelError(f"expected 'LABEL PHONE', got {line.strip()!r}", file=path, line=number)
+            raise LabelFileError(f"expected 'LABEL PHONE', got {line.strip()!r}", file=path, line=number)
         mapping[content[0]] = content[1]
     return mapping
 
@@ -120,16 +114,16 @@ def read_phone_map(path: str | Path) -> dict[str, str]:
 def _sorted_checked(raw: Sequence[tuple[float, float, str]], path: Path, duration_ms: float,
                     rate: int) -> list[tuple[float, float, str]]:
     if not raw:
-        raise LabelError("the label file has no phone labels", file=path)
+        raise LabelFileError("the label file has no phone labels", file=path)
     ordered = sorted(raw)
     slack = 1000.0 / rate                                       # a label may end up to a sample late
     for (_, end, label), (next_start, _, next_label) in itertools.pairwise(ordered):
         if next_start < end - 1e-6:
-            raise LabelError(f"phone '{next_label}' at {next_start:g} ms starts before '{label}' ends "
+            raise LabelFileError(f"phone '{next_label}' at {next_start:g} ms starts before '{label}' ends "
                              f"({end:g} ms): labels overlap", file=path, line=_line_of(path, next_label))
     _, last_end, last = ordered[-1]
     if last_end > duration_ms + slack:
-        raise LabelError(f"phone '{last}' ends at {last_end:g} ms, past the end of the audio ({duration_ms:g} ms): "
+        raise LabelFileError(f"phone '{last}' ends at {last_end:g} ms, past the end of the audio ({duration_ms:g} ms): "
                          "are these the labels of this recording?", file=path, line=_line_of(path, last))
     return ordered
 
@@ -138,7 +132,7 @@ def _phone_set(name: str, labels: list[str], path: Path) -> PhoneSet:
     if name == "auto":   # no set knows them all: the closest names what it does not know, with lines
         return guess_phone_set(labels) if _every_label_known(labels) else closest_phone_set(labels)
     if name not in PHONE_SETS:
-        raise LabelError(f"unknown phone set '{name}' (known: auto, {', '.join(sorted(PHONE_SETS))})")
+        raise LabelFileError(f"unknown phone set '{name}' (known: auto, {', '.join(sorted(PHONE_SETS))})")
     return PHONE_SETS[name]
 
 
@@ -172,7 +166,7 @@ def _phones(raw: list[tuple[float, float, str]], chosen: PhoneSet, mapping: dict
         first_line = next((line for line in unknown.values() if line is not None), None)
         listed = ", ".join(f"'{label}'" + (f" (line {line})" if line and len(unknown) > 1 else "")
                            for label, line in list(unknown.items())[:8]) + (" …" if len(unknown) > 8 else "")
-        raise LabelError(f"the {chosen.name} phone set does not know {listed}; map them with --phone-map "
+        raise LabelFileError(f"the {chosen.name} phone set does not know {listed}; map them with --phone-map "
                          f"(LABEL PHONE per line) or choose another --phone-set ({', '.join(sorted(PHONE_SETS))})",
                          file=path, line=first_line)
     if duration_ms > at:
@@ -184,12 +178,9 @@ def _phones(raw: list[tuple[float, float, str]], chosen: PhoneSet, mapping: dict
 
 
 def _words(path: Path, word_tier: str | None, duration_ms: float, rate: int) -> list[Segment]:
-    from engine.mocap.errors import LabelFileError
-    from engine.mocap.labels import read_labels
-
     if not _is_textgrid(path):
         if word_tier is not None:
-            raise LabelError("--word-tier applies to Praat TextGrids only", file=path)
+            raise LabelFileError("--word-tier applies to Praat TextGrids only", file=path)
         return []
     names = [word_tier] if word_tier is not None else list(WORD_TIER_NAMES)
     for name in names:
@@ -230,8 +221,8 @@ def _is_textgrid(path: Path) -> bool:
 def _line_of(path: Path, label: str) -> int | None:
     """The first line of the label file that holds ``label`` as a label (for an error message)."""
     try:
-        data = read_bounded_bytes(path, error=LabelError, what="labels")
-    except (OSError, LabelError):
+        data = read_bounded_bytes(path, error=LabelFileError, what="labels")
+    except (OSError, LabelFileError):
         return None
     text = data.decode("utf-16" if data[:2] in (b"\xff\xfe", b"\xfe\xff") else "utf-8", errors="replace")
     quoted = f'"{label}"'

@@ -2,7 +2,7 @@
 
 The fuzz test feeds mutated TextGrids (long and short format), label lines
 and phones tables, in UTF-8 and UTF-16, plus arbitrary bytes, through
-:func:`engine.mocap.labels.read_labels`. The cases after it are the ones
+:func:`engine.speech.labels.read_labels`. The cases after it are the ones
 found by fuzzing, each refused with one clear error. Size: ``AP_FUZZ_EXAMPLES``.
 """
 
@@ -15,7 +15,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 from engine.mocap.errors import LabelFileError
-from engine.mocap.labels import parse_textgrid, read_labels
+from engine.speech.labels import parse_textgrid, read_labels
 from tests.engine.fuzz_support import FUZZ, NUMBER_TEXT, expect_clean, mutated, no_hang
 
 LONG_TEXTGRID = '''File type = "ooTextFile"

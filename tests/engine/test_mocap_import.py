@@ -27,11 +27,11 @@ from engine.mocap.csv_table import CsvLayout
 from engine.mocap.gaps import fill_gaps, find_gaps, max_gap_frames
 from engine.mocap.head_motion import apply_alignment, kabsch, remove_head_motion
 from engine.mocap.importer import build_session, format_report, import_marker_file
-from engine.mocap.labels import festival_phones, read_labels
 from engine.mocap.naming import default_reference, marker_names, read_mapping
 from engine.mocap.readers import detect_format, read_marker_file
 from engine.mocap.recording import Recording
 from engine.mocap.session import SESSION_FORMAT, load_session, save_session
+from engine.speech.labels import festival_phones, read_labels
 from tests.engine.cli_runner import assert_user_error, run
 
 DATA = Path(__file__).parent / "data" / "mocap"
@@ -786,7 +786,7 @@ def test_cli_subprocess_exit_codes(tmp_path, motion):
 # ---------------------------------------------------------------------------
 
 @pytest.mark.parametrize("name", ["engine.mocap.session", "engine.mocap.naming", "engine.mocap.gaps",
-                                  "engine.mocap.head_motion", "engine.mocap.labels", "engine.mocap.csv_table"])
+                                  "engine.mocap.head_motion", "engine.speech.labels", "engine.mocap.csv_table"])
 def test_docstring_examples(name):
     result = doctest.testmod(importlib.import_module(name), optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
     assert result.failed == 0 and result.attempted > 0

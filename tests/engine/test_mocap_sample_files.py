@@ -9,7 +9,6 @@ import pytest
 
 from engine.mocap.errors import LabelFileError, MarkerFileError
 from engine.mocap.gaps import fill_gaps, marker_gap_stats, marker_gaps
-from engine.mocap.labels import read_labels
 from engine.mocap.naming import marker_names, read_mapping, write_mapping
 from engine.mocap.readers import read_marker_file
 from engine.mocap.sample_files import (
@@ -20,6 +19,7 @@ from engine.mocap.sample_files import (
     write_sample_recording,
     write_trc,
 )
+from engine.speech.labels import read_labels
 
 REPORT_KEYS = ("gaps", "filled_gaps", "filled_frames", "missing_gaps", "missing_frames")
 

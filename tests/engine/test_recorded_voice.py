@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from engine.speech.phone_sets import PHONE_SETS, guess_phone_set
-from engine.speech.recorded import LabelError, recorded_utterance, speak_recording
+from engine.speech.recorded import LabelFileError, recorded_utterance, speak_recording
 from engine.speech.synthesis import read_wav, write_wav
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.test_festival import needs_festival
@@ -183,7 +183,7 @@ def test_unknown_phones_are_named_with_their_lines_and_a_map_fixes_them(tmp_path
 def test_inline_commands_without_a_word_tier_are_refused(tmp_path, head):
     labels = tmp_path / "take.lab"
     labels.write_text("0 0.11 m\n0.11 0.2 ɑ\n", encoding="utf-8")
-    with pytest.raises(LabelError, match="no word tier"):
+    with pytest.raises(LabelFileError, match="no word tier"):
         speak_recording(MICHAEL_WAV, labels, head, text="Montreal <Blink/> forced")
 
 

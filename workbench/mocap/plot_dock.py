@@ -7,7 +7,7 @@ the middle of every phone matching the selectors — the engine's
 :func:`~engine.mocap.frame_selection.select_frames` (``V C``: every vowel and consonant;
 ``a/p_p``: *a* between two *p*'s). Phone labels are imported from a
 TextGrid or label file, or aligned from Festival's timing of the spoken
-text (:mod:`engine.mocap.labels`), and drawn along the time axis.
+text (:mod:`engine.speech.labels`), and drawn along the time axis.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from PySide6.QtWidgets import (
 
 from engine.mocap.errors import MocapError
 from engine.mocap.frame_selection import select_frames
-from engine.mocap.labels import festival_phones, read_labels
+from engine.speech.labels import festival_phones, read_labels
 
 from ..dock_scroller import DockScroller
 from ..flow_layout import FlowLayout

@@ -29,11 +29,16 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from engine.commands.limits import MAX_TIME_MS
+from engine.errors import UserError
 from engine.formats.text_files import read_bounded_bytes
-from engine.mocap.errors import LabelFileError
 
 if TYPE_CHECKING:
     from engine.speech.synthesis import Synthesizer
+
+class LabelFileError(UserError):
+    """A phone label file (Praat TextGrid, label lines, phones CSV) or a marker mapping file is malformed,
+    or its labels cannot drive the face (a missing tier, unknown phones, labels past the audio)."""
+
 
 PHONE_TIER_NAMES = ("phones", "phone", "phonemes", "segments", "segment")
 _UNITS = re.compile(r"#\s*units?\s*[:=]?\s*(ms|s)\s*$", re.IGNORECASE)
