@@ -46,8 +46,7 @@ def read_c3d(path: str | Path) -> Recording:
                               + (f"; it holds {int(analog)} analog channels only, which are not marker data"
                                  if analog else ""), file=path)
     scales = _unit_scales(params, n_points, path)
-    scale = params.number("POINT:SCALE")
-    scale = header.scale if scale is None or scale == 0 else scale
+    scale = _scale(header, params, notes)
     is_float = scale < 0
     word = 4 if is_float else 2
     start = _data_start(header, params, len(data), path)
@@ -114,6 +113,24 @@ def _whole(values: np.ndarray) -> int | None:
         return None
     value = float(values[0])
     return int(value) if np.isfinite(value) and 0 <= value < 2**31 and value == int(value) else None
+
+
+def _scale(header: C3dHeader, params: C3dParameters, notes: list[str]) -> float:
+    """The point scale (negative: float data): the header's, ``POINT:SCALE`` where the header has none.
+
+    They differ in one file of the corpus (c3d.org sample 6, ``MACsample.c3d``),
+    where the header's makes a body of human size (foot 19 cm, upper arm
+    36 cm) and ``POINT:SCALE`` one of 40 % of it.
+    """
+    param = params.number("POINT:SCALE")
+    header_ok = np.isfinite(header.scale) and header.scale != 0
+    if param is None or not np.isfinite(param) or param == 0:
+        return header.scale
+    if not header_ok:
+        return param
+    if abs(param - header.scale) > 1e-6 * abs(header.scale):
+        notes.append(f"POINT:SCALE says {param:g}, the header {header.scale:g}; the header's used")
+    return header.scale
 
 
 def _point_count(header: C3dHeader, params: C3dParameters, notes: list[str]) -> int:

@@ -489,3 +489,15 @@ def test_a_text_file_whose_every_sample_is_missing_is_refused(tmp_path, capsys):
     err = capsys.readouterr().err
     assert "empty.trc: every sample of the 3 markers imported is missing in all 5 frames" in err
     assert not (tmp_path / "s.h5").exists()
+
+
+def test_a_point_scale_that_disagrees_with_the_header_yields_to_it(tmp_path):
+    """c3d.org sample 6 (MACsample.c3d): the header's scale gives a body of human size, POINT:SCALE 40 % of it."""
+    data = bytearray((DATA / "read_NOTworking2.c3d").read_bytes())     # DEC, integer data, scale 0.1449
+    ieee = struct.pack("<f", 4 * 0.05)
+    _patch_parameter(data, "POINT", "SCALE", ieee[2:] + ieee[:2])      # a VAX float
+    path = tmp_path / "scale.c3d"
+    path.write_bytes(bytes(data))
+    rec = read_marker_file(path)
+    np.testing.assert_array_equal(rec.positions, read_marker_file(DATA / "read_NOTworking2.c3d").positions)
+    assert any("POINT:SCALE says 0.05, the header 0.1449" in note for note in rec.notes)
