@@ -115,13 +115,14 @@ def test_kill_9_at_random_moments_leaves_the_old_or_the_new_model(tmp_path, work
     save_model(a, path)
     rng = random.Random(KILL_SEED)
     outcomes: Counter[str] = Counter()
-    leftovers_after_kill = 0
+    leftovers_after_kill = during_renames = 0
     for trial in range(KILL_TRIALS):
         pid = worker.fork(f"loop {path}")
         time.sleep(rng.uniform(0.0, 3.0 * one_save))       # where the kill lands, not a timing assertion
         os.kill(pid, signal.SIGKILL)
         assert killed_by_sigkill(worker.reap(pid))
         leftovers_after_kill += bool(hidden_files(tmp_path))
+        during_renames += any(name.endswith(".journal") for name in hidden_files(tmp_path))
         try:
             loaded = load_model(path)
         except ModelFileError as exc:
@@ -132,8 +133,8 @@ def test_kill_9_at_random_moments_leaves_the_old_or_the_new_model(tmp_path, work
         save_model(a, path)
         assert sorted(p.name for p in tmp_path.iterdir()) == ["m.h5", "m.xml"], f"trial {trial}"
     print(f"\nkill -9 trials: {KILL_TRIALS}, loadable {sum(outcomes.values())}, old/new A={outcomes['A']} "
-          f"B={outcomes['B']}, kills that left temporaries {leftovers_after_kill}, leftover after the next "
-          f"save 0 (one save {one_save * 1000:.1f} ms)")
+          f"B={outcomes['B']}, kills that left temporaries {leftovers_after_kill} (a journal: {during_renames}), "
+          f"leftover after the next save 0 (one save {one_save * 1000:.1f} ms)")
 
 
 @pytest.mark.parametrize("point,result", [
