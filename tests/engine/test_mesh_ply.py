@@ -82,3 +82,15 @@ def test_degenerate_faces_are_dropped_with_a_note(tmp_path):
     mesh = read_mesh(path)
     assert mesh.faces.tolist() == [4, 0, 1, 2, 3]
     assert mesh.notes == ["dropped 1 face(s) with fewer than 3 corners"]
+
+
+def test_cli_prints_one_line_naming_file_and_line_for_a_cut_ascii_ply(tmp_path):
+    import subprocess
+    import sys
+
+    path = _ascii_square(tmp_path, "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1")      # cut inside the face
+    result = subprocess.run([sys.executable, "-m", "engine", "import-mesh", str(path), "-o", str(tmp_path / "m.xml")],
+                            capture_output=True, text=True, check=False)
+    assert result.returncode == 2
+    assert result.stderr == (f"error: {path}:14: face 0: the list 'vertex_indices' says 4 values but the line "
+                             "holds 2 after it (a cut line?), found '4 0 1'\n")
