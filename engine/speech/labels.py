@@ -11,7 +11,8 @@ clock (0 ms = the first frame).
   spaces or tabs (Audacity's label export reads as is). Times are seconds
   unless the file has a line ``# units: ms``. ``#`` starts a comment; lines
   starting with ``\\`` (Audacity's frequency lines) are skipped.
-* **Phones CSV**, the table ``say --phones`` writes (``start_ms,end_ms,phone,word``).
+* **Phones CSV**, the table ``say --phones`` writes (``start_ms,end_ms,phone,word``); a row with
+  no phone is silence and left out.
 * **Festival**: synthesise the text that was spoken and take the phone
   timings, either as they are or stretched to a given duration.
 
@@ -122,7 +123,8 @@ def _phones_csv(text: str, path: Path) -> list[tuple[float, float, str]]:
         if not end >= start >= 0:
             raise LabelFileError("segment ends before it starts, or starts before 0", file=path, line=number)
         _check_segment_end(end, path, number)
-        out.append((start, end, cells[2]))
+        if cells[2]:                              # an empty phone is silence, as an empty TextGrid interval
+            out.append((start, end, cells[2]))
     return out
 
 
