@@ -145,3 +145,9 @@ def test_tokenizing_a_textgrid_takes_linear_time_on_unclosed_brackets_and_quotes
 def test_devices_are_not_read_as_label_files():
     with pytest.raises(LabelFileError, match="not a regular file"):
         read_labels("/dev/zero")
+
+
+def test_a_phones_table_row_with_no_phone_is_silence(tmp_path):
+    path = tmp_path / "take.csv"
+    path.write_text("start_ms,end_ms,phone,word\n0,120,h,hei\n120,200,,hei\n")
+    assert read_labels(path) == [(0.0, 120.0, "h")]
