@@ -230,10 +230,14 @@ def _write_journal(first_target: Path, temporaries: dict[Path, Path]) -> Path:
                for target, temporary in temporaries.items()]
     text = json.dumps({"format": JOURNAL_FORMAT, "version": JOURNAL_VERSION, "renames": renames}) + "\n"
     journal = _new_temporary(first_target, ".journal")
-    with open(journal, "wb") as handle:
-        handle.write(text.encode("utf-8"))
-        handle.flush()
-        os.fsync(handle.fileno())
+    try:
+        with open(journal, "wb") as handle:
+            handle.write(text.encode("utf-8"))
+            handle.flush()
+            os.fsync(handle.fileno())
+    except BaseException:
+        _remove([journal])              # a full disk: no rename will follow, so no journal either
+        raise
     _fsync_folder(folder)
     return journal
 

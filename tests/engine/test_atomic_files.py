@@ -264,3 +264,19 @@ def test_a_journal_names_only_files_beside_it_of_our_naming(tmp_path, old_files)
         {"format": atomic.JOURNAL_FORMAT, "version": atomic.JOURNAL_VERSION, "renames": [["evil.txt", "a.txt"]]}))
     finish_interrupted_writes(tmp_path)
     assert contents(tmp_path) == {**old_files, "evil.txt": b"planted"}
+
+
+def test_a_journal_that_cannot_be_written_leaves_the_old_files_and_nothing_else(tmp_path, old_files, monkeypatch):
+    real_fsync, calls = os.fsync, []
+
+    def third_fails(fd):                  # the two files sync; the journal's sync finds the disk full
+        calls.append(fd)
+        if len(calls) == 3:
+            raise OSError(28, "No space left on device")
+        real_fsync(fd)
+
+    monkeypatch.setattr(atomic.os, "fsync", third_fails)
+    with pytest.raises(UserError, match="No space left on device"):
+        write_all([tmp_path / "a.txt", tmp_path / "b.csv"])
+    monkeypatch.undo()
+    assert contents(tmp_path) == old_files
