@@ -125,3 +125,28 @@ def test_header_numbers_out_of_any_range(tmp_path, fmt, key, value, message):
         Path(path).write_text(re.sub(rf"{key}\t\S+", f"{key}\t{value}", Path(path).read_text()))
     with pytest.raises(MarkerFileError, match=message):
         read_marker_file(path)
+
+
+def test_damaged_qtm_tsv_files_read_or_are_refused_naming_the_file(tmp_path):
+    """No public QTM export was found: the file is the sample recording's own TSV (engine.mocap.sample_files)."""
+    from engine.mocap.sample_files import write_qtm_tsv
+
+    positions = np.random.default_rng(0).normal(0, 50, (6, 4, 3))
+    positions[2, 1] = 0.0
+    source = write_qtm_tsv(tmp_path / "source.tsv", ["8.3", "8.4", "2.1", "9.3"], positions, rate_hz=60)
+    original = Path(source).read_bytes()
+    path = tmp_path / "take.tsv"
+    tokens = st.sampled_from([b"\t", b"\n", b",", b" ", b"nan", b"inf", b"-1", b"1e300", b"1e-300", b"0", b"",
+                              b"EXT", b"NO_OF_FRAMES", b"MARKER_NAMES", b"EVENT\tx\t1e308\t1", b"\x00", b"\xff"])
+
+    @FUZZ
+    @given(changes=st.lists(st.tuples(st.integers(0, len(original) - 1), tokens), min_size=1, max_size=8),
+           cut=st.one_of(st.none(), st.integers(0, len(original))))
+    def run(changes, cut):
+        data = bytearray(original)
+        for at, new in changes:
+            data[at:at + 1] = new
+        path.write_bytes(bytes(data[:cut] if cut is not None else data))
+        _read_or_refuse(path)
+
+    run()
