@@ -172,7 +172,10 @@ def read_gltf(path: str | Path) -> GltfMesh:
     return _parse(path, document, {})
 
 
-def _split_glb(blob: bytes, path: Path) -> tuple[dict, dict[int, bytes]]:
+def _split_glb(blob: bytes, path: Path, strict: bool = True) -> tuple[dict, dict[int, bytes]]:
+    """The JSON document and the binary chunk of a GLB. ``strict=False`` (importing other programs'
+    files) accepts chunks not padded to 4 bytes and a header length that disagrees with the file,
+    as other readers do; every chunk must still lie inside the file."""
     def fail(what: str) -> NoReturn:
         raise GltfFileError(f"not a valid binary glTF: {what}", file=path)
 
@@ -181,7 +184,7 @@ def _split_glb(blob: bytes, path: Path) -> tuple[dict, dict[int, bytes]]:
     magic, version, length = struct.unpack_from("<III", blob)
     if magic != GLB_MAGIC or version != 2:
         fail(f"magic {magic:#x}, container version {version} (expected glTF, 2)")
-    if length != len(blob):
+    if length != len(blob) and (strict or length > len(blob)):
         fail(f"the header says {length} bytes, the file has {len(blob)}")
     chunks: list[tuple[int, bytes]] = []
     offset = 12
@@ -189,7 +192,7 @@ def _split_glb(blob: bytes, path: Path) -> tuple[dict, dict[int, bytes]]:
         if offset + 8 > length:
             fail("a chunk header runs past the end")
         size, kind = struct.unpack_from("<II", blob, offset)
-        if size % 4 or offset + 8 + size > length:
+        if (strict and size % 4) or offset + 8 + size > length:
             fail("a chunk is misaligned or runs past the end")
         chunks.append((kind, blob[offset + 8:offset + 8 + size]))
         offset += 8 + size

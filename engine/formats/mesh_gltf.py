@@ -3,8 +3,9 @@
 Every mesh the default scene places is read with its node transforms
 applied; triangles, triangle strips and fans are kept (points and lines
 dropped); each glTF mesh becomes a part. ``TEXCOORD_0`` gives the texture
-coordinates and the material's ``baseColorTexture`` its image (a file beside
-the document, or an image embedded in it). Coordinates stay in metres here
+coordinates (v turned to run up the image, as in OBJ and PLY) and the
+material's ``baseColorTexture`` its image (a file beside the document, or an
+image embedded in it). Coordinates stay in metres here
 (``units="m"``): :func:`engine.formats.mesh_io.read_mesh` converts them.
 
 A buffer file that is missing, or a Git LFS pointer in its place, is named
@@ -60,7 +61,7 @@ def read_gltf_mesh(path: Path) -> RawMesh:
         raise MeshImportError(f"cannot read file: {exc.strerror or exc}", file=path) from None
     try:
         if blob[:4] == struct.pack("<I", GLB_MAGIC):
-            document, embedded = _split_glb(blob, path)
+            document, embedded = _split_glb(blob, path, strict=False)
         else:
             try:
                 document = json.loads(blob.decode("utf-8"))
@@ -203,6 +204,7 @@ class _Importer:
             uv = np.asarray(self.accessor(attributes["TEXCOORD_0"]), dtype=float)
             if uv.ndim != 2 or uv.shape != (n, 2):
                 self.fail(f"{where}: TEXCOORD_0 is not one (u, v) pair per vertex")
+            uv = np.column_stack([uv[:, 0], 1.0 - uv[:, 1]])     # glTF's v runs down the image; ours up
         material = self.material(spec["material"]) if "material" in spec else -1
         return points, triangles, uv, material
 

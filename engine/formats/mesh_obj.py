@@ -72,6 +72,8 @@ class _ObjReader:
         self.object_name: str | None = None
         self.current_part = -1
         self.current_material = -1
+        self.notes: list[str] = []
+        self.bad_uv_lines = 0
 
     def fail(self, what: str, line: int) -> MeshImportError:
         return MeshImportError(what, file=self.path, line=line)
@@ -113,11 +115,8 @@ class _ObjReader:
         for token in corners:
             fields = token.split("/")
             self.cells.append(self.index(fields[0], len(self.vertices), token, "vertex", line))
-            if len(fields) > 1 and fields[1]:
-                k = self.index(fields[1], len(self.uvs), token, "texture coordinate", line)
-                self.corner_uv.append((self.uvs[k][0], self.uvs[k][1]))
-            else:
-                self.corner_uv.append((np.nan, np.nan))
+            k = self.uv_index(fields[1], token, line) if len(fields) > 1 and fields[1] else None
+            self.corner_uv.append((np.nan, np.nan) if k is None else (self.uvs[k][0], self.uvs[k][1]))
         if self.current_part < 0:
             label = self.group or self.object_name or _DEFAULT_PART
             if label not in self.part_index:
@@ -137,11 +136,23 @@ class _ObjReader:
             raise self.fail(f"face vertex '{token}' names a {what} that is not defined yet", line)
         return i
 
+    def uv_index(self, text: str, token: str, line: int) -> int | None:
+        """The texture coordinate a corner names, or ``None`` (with a note) where it names none that
+        exists: the geometry is still good, as other readers agree."""
+        try:
+            return self.index(text, len(self.uvs), token, "texture coordinate", line)
+        except MeshImportError:
+            if not self.bad_uv_lines:
+                self.notes.append(f"line {line}: face corner '{token}' names a texture coordinate that is not "
+                                  "defined; such corners have none")
+            self.bad_uv_lines += 1
+            return None
+
     def result(self) -> RawMesh:
         texture = None
         corner_uv = np.array(self.corner_uv, dtype=float).reshape(-1, 2)
-        notes = [f"material library '{name}' not found beside the file: its materials have no images"
-                 for name in self.libraries if not (self.path.parent / name).is_file()]
+        notes = self.notes + [f"material library '{name}' not found beside the file: its materials have no "
+                              "images" for name in self.libraries if not (self.path.parent / name).is_file()]
         if self.materials:
             images = _material_images(self.path, self.libraries)
             for material in self.materials:

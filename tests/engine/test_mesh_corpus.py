@@ -30,7 +30,27 @@ EXPECTED = {
     "box.obj": (8, 6, True, []),
     "textured_tetrahedron.obj": (4, 4, True, []),
     "Mesh_PrimitiveMode_04.gltf": (4, 2, False, []),
+    "cube.glb": (8, 12, False, []),
 }
+#: Files VTK reads wrongly or not at all: what is in them, checked against the file's own text.
+VTK_FAILS = {
+    "cubevt.obj": "VTK's OBJ reader segfaults (a corner names a texture coordinate the file lacks)",
+    "fuze_ascii.ply": "VTK's PLY reader finds 5 of the 1000 faces (ASCII with per-corner texcoord lists)",
+    "jacked.obj": "VTK's OBJ reader finds no polygons ('f 2/2/' corners, a missing mtllib)",
+}
+
+
+@pytest.mark.parametrize("name", sorted(VTK_FAILS))
+def test_files_vtk_fails_on_read_every_polygon_they_hold(name):
+    mesh = read_mesh(DATA / name)
+    text = (DATA / name).read_text()
+    if name.endswith(".obj"):
+        expected = sum(line.startswith("f ") for line in text.splitlines())
+    else:
+        expected = int(text.split("element face ")[1].split()[0])
+    assert len(cell_sizes(mesh.faces)) == expected
+    has_uv = name != "cubevt.obj"          # its corners name texture coordinates it lacks
+    assert (mesh.texture is not None and mesh.texture.has_coordinates) == has_uv
 
 
 def corners(points: np.ndarray, faces: np.ndarray, uv: np.ndarray | None) -> np.ndarray:
@@ -103,3 +123,20 @@ def test_gltf_sample_is_converted_to_millimetres_and_keeps_the_texture():
     mesh = read_mesh(DATA / "BoxTextured.glb", keep_units=True)
     np.testing.assert_allclose(mesh.vertices.max(axis=0), [0.5, 0.5, 0.5])
     assert mesh.texture.materials[0].name == "Texture"
+
+
+def test_a_file_that_segfaults_vtk_reads_with_a_note():
+    mesh = read_mesh(DATA / "cubevt.obj")
+    text = (DATA / "cubevt.obj").read_text()
+    assert len(mesh.vertices) == text.count("\nv ") + text.startswith("v ")
+    assert len(cell_sizes(mesh.faces)) == text.count("\nf ")
+    assert mesh.notes == ["line 50: face corner '1/1/1' names a texture coordinate that is not defined; "
+                          "such corners have none"]
+
+
+def test_ascii_ply_that_vtk_misreads_equals_its_binary_twin():
+    """MeshLab wrote fuze.ply and fuze_ascii.ply from one mesh; VTK reads 5 faces of the ASCII one."""
+    ascii_mesh, binary_mesh = read_mesh(DATA / "fuze_ascii.ply"), read_mesh(DATA / "fuze.ply")
+    np.testing.assert_allclose(ascii_mesh.vertices, binary_mesh.vertices, atol=1e-5)
+    np.testing.assert_array_equal(ascii_mesh.faces, binary_mesh.faces)
+    np.testing.assert_allclose(ascii_mesh.texture.corner_uv, binary_mesh.texture.corner_uv, atol=1e-5)
