@@ -63,8 +63,8 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("--keep-units", action="store_true",
                    help="keep the file's numbers as they are (no metres-to-mm conversion for glTF)")
     p.add_argument("--up", default="+Y", metavar="AXIS",
-                   help="the file's up direction: +Y (default), -Y, +Z, -Z, +X or -X; the mesh is "
-                        "turned so that it points along +Y, the model's up")
+                   help="the file's up direction: Y (default), Z or X with a sign, e.g. --up Z or "
+                        "--up Z- (or --up=-Z); the mesh is turned so that it points along +Y, the model's up")
     p.set_defaults(run=run_import_mesh)
 
 
@@ -114,7 +114,8 @@ def run_import_mesh(args: argparse.Namespace) -> int:
 def import_report(mesh: Any, source: str, out: str | Any) -> str:
     """What ``import-mesh`` read: sizes, units, up axis, texture coordinates and material images."""
     lines = [f"{source}: {len(mesh.vertices)} vertices, {len(mesh.part_names)} part(s); model written to {out}",
-             f"units: coordinates × {mesh.scale:g} to mm; up: {mesh.up} (turned to +Y)"]
+             f"units: coordinates × {mesh.scale:g} to mm; up: " +
+             ("+Y, as in the file" if mesh.up == "+Y" else f"the file's {mesh.up} turned to +Y")]
     texture = mesh.texture
     if texture is None or not texture.has_coordinates:
         lines.append("texture coordinates: none")

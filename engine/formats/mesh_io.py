@@ -117,7 +117,7 @@ def read_mesh(path: str | Path, scale: float | None = None, *, keep_units: bool 
         raw.notes += [f"image '{image}' is missing" for image in raw.texture.images()
                       if not image.startswith("embedded:") and not Path(image).is_file()]
     return ImportedMesh(vertices @ rotation.T * factor, faces, part_names, vertex_part, raw.texture, factor,
-                        up.upper() if up[0] in "+-" else "+" + up.upper(), raw.notes)
+                        normalise_up(up), raw.notes)
 
 
 def up_rotation(up: str) -> np.ndarray:
@@ -126,11 +126,19 @@ def up_rotation(up: str) -> np.ndarray:
     >>> up_rotation("+Z") @ [0, 0, 1]
     array([0., 1., 0.])
     """
-    text = str(up).strip().upper()
-    text = text if text[:1] in ("+", "-") else "+" + text
+    text = normalise_up(up)
     if text not in _UP_ROTATIONS:
         raise MeshImportError(f"up must be one of {', '.join(_UP_ROTATIONS)}, not {up!r}")
     return np.array(_UP_ROTATIONS[text], dtype=float)
+
+
+def normalise_up(up: str) -> str:
+    """``"+Z"`` for ``"z"``, ``"+z"``, ``"Z+"``; ``"-Z"`` for ``"-z"`` and ``"Z-"`` (a sign after the
+    axis lets a command line say ``--up Z-``, which argparse would take ``-Z`` for an option)."""
+    text = str(up).strip().upper()
+    if len(text) == 2 and text[1] in "+-":
+        text = text[1] + text[0]
+    return text if text[:1] in ("+", "-") else "+" + text
 
 
 _UP_ROTATIONS = {

@@ -47,7 +47,7 @@ def test_strip_triangles_keep_one_orientation(tmp_path):
 
 @pytest.mark.parametrize("up, expected_up_vector", [
     ("+Y", [0, 1, 0]), ("+Z", [0, 0, 1]), ("-Z", [0, 0, -1]), ("Z", [0, 0, 1]), ("-Y", [0, -1, 0]),
-    ("+X", [1, 0, 0]), ("-x", [-1, 0, 0]),
+    ("+X", [1, 0, 0]), ("-x", [-1, 0, 0]), ("Z-", [0, 0, -1]), ("y+", [0, 1, 0]),
 ])
 def test_up_option_turns_the_files_up_to_plus_y(tmp_path, up, expected_up_vector):
     path = tmp_path / "arrow.obj"
@@ -125,6 +125,15 @@ def test_a_node_cycle_is_refused(tmp_path):
     path.write_text(json.dumps(document))
     with pytest.raises(MeshImportError, match="cycle"):
         import_mesh(path)
+
+
+def test_cli_takes_a_negative_up_axis_in_both_spellings(tmp_path):
+    path = tmp_path / "nose.obj"
+    path.write_text("v 0 0 0\nv 10 0 0\nv 0 5 -30\nf 1 2 3\n")
+    for spelling in (["--up", "Z-"], ["--up=-Z"]):
+        result = run_cli("import-mesh", path, "-o", tmp_path / "m.xml", *spelling)
+        assert result.returncode == 0, result.stderr
+        assert "the file's -Z turned to +Y" in result.stdout
 
 
 def test_cli_up_and_keep_units(tmp_path):
