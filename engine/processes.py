@@ -15,7 +15,10 @@ is essential on Debian, so it is always there).
 
 from __future__ import annotations
 
+import ctypes
 import shutil
+import signal
+import sys
 from collections.abc import Sequence
 
 _SETPRIV = shutil.which("setpriv")
@@ -25,3 +28,17 @@ def with_parent_death_signal(command: Sequence[str]) -> list[str]:
     """``command``, run so that it gets SIGKILL when its parent dies (unchanged where setpriv is absent)."""
     prefix = [_SETPRIV, "--pdeathsig", "KILL", "--"] if _SETPRIV else []
     return [*prefix, *command]
+
+
+def die_with_parent() -> None:
+    """Ask the kernel to kill this process when its parent dies (a worker process calls it at start).
+
+    Linux only (``prctl(PR_SET_PDEATHSIG, SIGKILL)``); elsewhere nothing happens.
+    """
+    if not sys.platform.startswith("linux"):
+        return
+    libc = ctypes.CDLL(None, use_errno=True)
+    libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+
+
+_PR_SET_PDEATHSIG = 1

@@ -1,0 +1,281 @@
+"""Design files: factors and their levels in, the list of stimuli to make out (docs/stimuli.md).
+
+A design is a TOML file (read with the standard library's ``tomllib``)::
+
+    seed = 7                              # optional: visual prosody, noise (default 0)
+
+    [factors]
+    text = ["Pappa ampui pallon.", "Maija meni kotiin."]
+    av_offset_ms = [-200, 0, 200]
+
+    [output]
+    kinds = ["mp4"]                       # mp4, wav, png, silent-mp4
+    size = "320x240"
+    fps = 30
+
+Factors with fixed meanings: ``text`` (with inline commands), ``voice``,
+``model`` (a model file, relative to the design), ``expression`` and
+``intensity`` (0–100 %), ``av_offset_ms`` (positive: the audio later than the
+video), ``snr_db`` and ``noise`` (``white``, ``speech-shaped`` or a WAV file).
+Any other factor is a free label copied into the manifest. Which combinations
+are made: every one (the default, ``combine = "cross"``), a listed subset
+(``combine = "list"`` with ``[[rows]]`` tables), or blocks (``[[blocks]]``,
+each crossed on its own, one after the other). Every error names the file,
+the line and the key, and nothing is made.
+
+>>> design = parse_design('[factors]\\ntext = ["Moi.", "Hei."]\\nav_offset_ms = [0, 100]\\n', "d.toml")
+>>> [(s.id, s.levels["text"], s.levels["av_offset_ms"]) for s in design.stimuli]
+[('0001', 'Moi.', 0), ('0002', 'Moi.', 100), ('0003', 'Hei.', 0), ('0004', 'Hei.', 100)]
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import math
+import re
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from engine.errors import UserError
+from engine.formats.text_files import read_bounded_text
+
+FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise")
+KINDS = ("mp4", "wav", "png", "silent-mp4", "phones", "tracks")
+NOISES = ("white", "speech-shaped")
+MAX_STIMULI = 100_000
+MAX_OFFSET_MS = 10_000.0
+VIEWS = ("front", "side", "three-quarter")
+_TOP_KEYS = {"seed", "factors", "output", "combine", "rows", "blocks", "name"}
+_OUTPUT_KEYS = {"kinds", "size", "fps", "view", "still_ms"}
+
+
+class DesignError(UserError):
+    """A design file that cannot be made: its file, line and key are named."""
+
+
+@dataclass(frozen=True)
+class Output:
+    """What each stimulus becomes."""
+
+    kinds: tuple[str, ...] = ("mp4",)
+    size: tuple[int, int] = (320, 240)
+    fps: float = 30.0
+    view: str = "front"
+    still_ms: float | None = None
+    """When a ``png`` still is taken (ms from the start of the clip); default: the expression's apex, or the
+    middle of the speech."""
+
+
+@dataclass(frozen=True)
+class Stimulus:
+    """One stimulus: its id (its place in the design, ``0001`` …) and the level of every factor."""
+
+    id: str
+    levels: dict[str, Any]
+
+
+@dataclass
+class Design:
+    path: Path
+    factors: dict[str, list[Any]]
+    stimuli: list[Stimulus]
+    output: Output
+    seed: int = 0
+    name: str = ""
+    sha256: str = ""
+    extra_files: dict[str, Path] = field(default_factory=dict)
+    """Model and noise files the design names, by the name written in it (resolved against its folder)."""
+
+    @property
+    def folder(self) -> Path:
+        return self.path.parent
+
+
+def load_design(path: str | Path) -> Design:
+    """Read and check a design file (:class:`DesignError` naming file, line and key)."""
+    path = Path(path)
+    try:
+        text = read_bounded_text(path, limit=4 * 1024 * 1024, error=DesignError, what="design file")
+    except OSError as exc:
+        raise DesignError(f"cannot read the design: {exc.strerror or exc}", file=path) from None
+    return parse_design(text, path)
+
+
+def parse_design(text: str, path: str | Path = "<design>") -> Design:
+    """Check a design's text and list its stimuli."""
+    path = Path(path)
+    where = _Locator(text, path)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        found = re.search(r"\(at line (\d+), column (\d+)\)", str(exc))
+        message = str(exc).split(" (at ")[0] + (f" (column {found.group(2)})" if found else "")
+        raise DesignError(f"not a TOML file: {message}", file=path,
+                          line=int(found.group(1)) if found else None) from None
+    for key in data:
+        if key not in _TOP_KEYS:
+            raise where.error(key, f"unknown key '{key}' (known: {', '.join(sorted(_TOP_KEYS))})")
+    factors = data.get("factors")
+    if not isinstance(factors, dict) or not factors:
+        raise DesignError("the design has no [factors] table with at least one factor", file=path, line=1)
+    checked = {name: _levels(name, values, where, path.parent) for name, values in factors.items()}
+    combine = data.get("combine", "blocks" if "blocks" in data else "list" if "rows" in data else "cross")
+    if combine not in ("cross", "list", "blocks"):
+        raise where.error("combine", f"combine must be cross, list or blocks, not {combine!r}")
+    rows = _combinations(combine, checked, data, where, path.parent)
+    if not rows:
+        raise where.error("factors", "the design makes no stimulus")
+    if len(rows) > MAX_STIMULI:
+        raise where.error("factors", f"the design makes {len(rows)} stimuli, more than {MAX_STIMULI}")
+    width = max(4, len(str(len(rows))))
+    stimuli = [Stimulus(f"{i:0{width}d}", row) for i, row in enumerate(rows, start=1)]
+    seed = data.get("seed", 0)
+    if not isinstance(seed, int) or isinstance(seed, bool) or not 0 <= seed < 2**32:
+        raise where.error("seed", "seed must be a whole number from 0 to 4294967295")
+    name = data.get("name", path.stem)
+    if not isinstance(name, str):
+        raise where.error("name", "name must be a string")
+    extra = {}
+    for row in rows:
+        for factor in ("model", "noise"):
+            value = row.get(factor)
+            if isinstance(value, str) and (factor == "model" or value not in NOISES):
+                extra[value] = (path.parent / value).resolve()
+    return Design(path, checked, stimuli, _output(data.get("output", {}), where), seed, name,
+                  hashlib.sha256(text.encode("utf-8")).hexdigest(), extra)
+
+
+# ---------------------------------------------------------------------------
+
+def _combinations(combine: str, factors: dict[str, list[Any]], data: dict[str, Any], where: _Locator,
+                  folder: Path) -> list[dict[str, Any]]:
+    if combine == "cross":
+        return _cross(factors)
+    if combine == "list":
+        rows = data.get("rows")
+        if not isinstance(rows, list) or not rows or not all(isinstance(r, dict) for r in rows):
+            raise where.error("rows", "combine = \"list\" needs [[rows]] tables, one per stimulus")
+        out = []
+        for row in rows:
+            for name, value in row.items():
+                if name not in factors:
+                    raise where.error(name, f"row names '{name}', which is not a factor")
+                if _levels(name, [value], where, folder)[0] not in factors[name]:
+                    raise where.error(name, f"{value!r} is not a level of '{name}'")
+            missing = [n for n in factors if n not in row]
+            if missing:
+                raise where.error("rows", f"a row gives no level for {', '.join(missing)}")
+            out.append({name: row[name] for name in factors})
+        return out
+    blocks = data.get("blocks")
+    if not isinstance(blocks, list) or not blocks or not all(isinstance(b, dict) for b in blocks):
+        raise where.error("blocks", "combine = \"blocks\" needs [[blocks]] tables of factor levels")
+    out = []
+    for block in blocks:
+        chosen = dict(factors)
+        for name, values in block.items():
+            if name not in factors:
+                raise where.error(name, f"block names '{name}', which is not a factor")
+            levels = _levels(name, values, where, folder)
+            for level in levels:
+                if level not in factors[name]:
+                    raise where.error(name, f"{level!r} is not a level of '{name}'")
+            chosen[name] = levels
+        out += _cross(chosen)
+    return out
+
+
+def _cross(factors: dict[str, list[Any]]) -> list[dict[str, Any]]:
+    names = list(factors)
+    total = math.prod(len(v) for v in factors.values())
+    if total > MAX_STIMULI:
+        return [{}] * (MAX_STIMULI + 1)                       # refused by the caller with the count
+    return [dict(zip(names, combo, strict=True)) for combo in itertools.product(*factors.values())]
+
+
+def _levels(name: str, values: Any, where: _Locator, folder: Path) -> list[Any]:
+    if not isinstance(values, list) or not values:
+        raise where.error(name, f"factor '{name}' must be a list of its levels, e.g. {name} = [...]")
+    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name):
+        raise where.error(name, f"factor name '{name}': letters, digits and _ only")
+    checked = [_level(name, value, where, folder) for value in values]
+    if len({repr(v) for v in checked}) != len(checked):
+        raise where.error(name, f"factor '{name}' lists a level twice")
+    return checked
+
+
+def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
+    def need(ok: bool, what: str) -> None:
+        if not ok:
+            raise where.error(name, f"'{name}' level {value!r}: {what}")
+
+    number = isinstance(value, int | float) and not isinstance(value, bool)
+    if name in ("text", "voice", "expression"):
+        need(isinstance(value, str) and value.strip() != "", "must be a non-empty string")
+    elif name == "model":
+        need(isinstance(value, str), "must be a model file name (relative to the design)")
+        need((folder / value).is_file(), f"no such model file ({(folder / value)})")
+    elif name == "intensity":
+        need(number and 0 <= value <= 100, "must be a number from 0 to 100 (%)")
+    elif name == "av_offset_ms":
+        need(number and math.isfinite(value) and abs(value) <= MAX_OFFSET_MS,
+             f"must be a number of ms within ±{MAX_OFFSET_MS:g}")
+    elif name == "snr_db":
+        need(number and math.isfinite(value) and -60 <= value <= 60, "must be a number of dB from -60 to 60")
+    elif name == "noise":
+        need(isinstance(value, str), f"must be {' or '.join(NOISES)} or a WAV file")
+        need(value in NOISES or (folder / value).is_file(), f"no such noise file ({folder / value})")
+    else:
+        need(isinstance(value, str | int | float | bool), "a free label must be a string, number or boolean")
+    return value
+
+
+def _output(table: Any, where: _Locator) -> Output:
+    if not isinstance(table, dict):
+        raise where.error("output", "[output] must be a table")
+    for key in table:
+        if key not in _OUTPUT_KEYS:
+            raise where.error(key, f"unknown output key '{key}' (known: {', '.join(sorted(_OUTPUT_KEYS))})")
+    kinds = table.get("kinds", ["mp4"])
+    if not isinstance(kinds, list) or not kinds or any(k not in KINDS for k in kinds):
+        raise where.error("kinds", f"kinds must list some of {', '.join(KINDS)}")
+    size = table.get("size", "320x240")
+    match = re.fullmatch(r"(\d{2,4})x(\d{2,4})", str(size))
+    if not match or any(int(v) % 2 or int(v) < 16 for v in match.groups()):
+        raise where.error("size", f"size must be WIDTHxHEIGHT, even numbers from 16 (got {size!r})")
+    fps = table.get("fps", 30)
+    if not isinstance(fps, int | float) or isinstance(fps, bool) or not 1 <= fps <= 240:
+        raise where.error("fps", "fps must be a number from 1 to 240")
+    view = table.get("view", "front")
+    if view not in VIEWS:
+        raise where.error("view", f"view must be one of {', '.join(VIEWS)}")
+    still = table.get("still_ms")
+    if still is not None and (not isinstance(still, int | float) or isinstance(still, bool) or still < 0):
+        raise where.error("still_ms", "still_ms must be a time in ms from the start of the clip")
+    return Output(tuple(dict.fromkeys(kinds)), (int(match.group(1)), int(match.group(2))), float(fps), view,
+                  None if still is None else float(still))
+
+
+class _Locator:
+    """Finds the line a key is written on, for errors (tomllib gives no positions for values)."""
+
+    def __init__(self, text: str, path: Path):
+        self.lines = text.splitlines()
+        self.path = path
+
+    def line_of(self, key: str) -> int | None:
+        pattern = re.compile(rf'^\s*(?:\[+\s*)?"?{re.escape(key)}"?\s*(?:=|\]|\.)')
+        for number, line in enumerate(self.lines, start=1):
+            if pattern.match(line):
+                return number
+        inline = re.compile(rf'[{{,]\s*"?{re.escape(key)}"?\s*=')
+        for number, line in enumerate(self.lines, start=1):
+            if inline.search(line):
+                return number
+        return None
+
+    def error(self, key: str, message: str) -> DesignError:
+        return DesignError(f"{key}: {message}", file=self.path, line=self.line_of(key))

@@ -1,0 +1,212 @@
+"""One stimulus of a design: speech, an expression overlay, the offset and the noise, into its files.
+
+:func:`make_stimulus` is what a worker runs (a local process or a Dask worker);
+it reads nothing but the design's levels and the files they name, and writes
+the stimulus's files and then its record (``.records/ID.json``) atomically, so
+a record on disk means every file it names is complete (``--resume`` trusts
+a record only after checking the files' SHA-256).
+
+>>> from engine.stimuli.design import parse_design
+>>> design = parse_design('[factors]\\ntext = ["Moi."]\\n[output]\\nkinds = ["wav"]\\n', "d.toml")
+>>> record = make_stimulus(design, design.stimuli[0], out)                         # doctest: +SKIP
+>>> record["files"]["wav"]["name"], record["speech_onset_ms"]                       # doctest: +SKIP
+('0001.wav', 30.0)
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import json
+import math
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from engine.commands import Library, load_library, translate
+from engine.commands.command_files import HighLevelCommand
+from engine.formats.atomic import atomic_files, atomic_write_text
+from engine.formats.model_files import load_model
+from engine.model.model import Model
+from engine.outputs.png_file import write_png
+from engine.outputs.video_writer import check_video, encode_video
+from engine.speech.say import Speech, speak
+from engine.speech.synthesis import phones_csv, wav_bytes
+from engine.stimuli.audio import (
+    add_noise,
+    clip_layout,
+    measured_offset_ms,
+    measured_snr_db,
+    placed_audio,
+    speech_mask,
+)
+from engine.stimuli.design import Design, Stimulus
+from engine.timeline.timeline import Timeline
+from engine.timeline.tracks import tracks_csv_text
+
+RECORDS = ".records"
+PAUSES = frozenset({"#", "##", "pau", "h#", "brth", "_", "sil", "sp"})
+EXPRESSION_ONSET_MS = 400.0
+EXPRESSION_OFFSET_MS = 700.0
+FILE_NAMES = {"mp4": "{id}.mp4", "silent-mp4": "{id}-silent.mp4", "wav": "{id}.wav", "png": "{id}.png",
+              "phones": "{id}-phones.csv", "tracks": "{id}-tracks.csv"}
+
+
+def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dict[str, Any]:
+    """Make every file of ``stimulus`` in ``outdir`` and return (and write) its record."""
+    outdir = Path(outdir)
+    levels = stimulus.levels
+    model = _model(str(design.extra_files[levels["model"]]) if "model" in levels else "")
+    speech = speak(str(levels.get("text", "")), model, voice=levels.get("voice"), library=_library(),
+                   name=f"{design.path.name}: stimulus {stimulus.id}")
+    timeline, apex_ms = _with_expression(speech, model, levels)
+    offset = float(levels.get("av_offset_ms", 0.0))
+    video_ms = max(speech.end_ms, timeline.end)
+    layout = clip_layout(speech.duration_ms, video_ms, offset)
+    utterance = speech.utterance
+    rate = utterance.sample_rate
+    clean = placed_audio(utterance.samples, rate, layout.audio_start_ms, layout.length_ms)
+    mask = speech_mask(_shifted(utterance.phones, layout.audio_start_ms), rate, len(clean), PAUSES)
+    audio, snr, gain = clean, None, 1.0
+    if "snr_db" in levels:
+        noise = levels.get("noise", "white")
+        noise_source = design.extra_files.get(noise, noise) if isinstance(noise, str) else "white"
+        audio, gain = add_noise(clean, rate, float(levels["snr_db"]), noise_source, mask,
+                                seed=design.seed * 100_003 + int(stimulus.id))
+        snr = measured_snr_db(clean, audio, mask, gain)
+    fps = design.output.fps
+    count = max(1, math.ceil(layout.length_ms * fps / 1000.0 - 1e-9))
+    frame_times = np.arange(count) * (1000.0 / fps)
+    values = timeline.sample(frame_times - layout.video_start_ms)
+    names = {kind: FILE_NAMES[kind].format(id=stimulus.id) for kind in design.output.kinds}
+    paths = {kind: outdir / name for kind, name in names.items()}
+    requests = {kind: check_video(paths[kind], model, frame_times, values, timeline.parameters, fps,
+                                  audio=audio if kind == "mp4" else None, sample_rate=rate if kind == "mp4" else None,
+                                  size=design.output.size, view=design.output.view)
+                for kind in ("mp4", "silent-mp4") if kind in paths}
+    words = [w.start_ms + layout.audio_start_ms for w in utterance.words]
+    onset = next((p.start_ms for p in utterance.phones if p.label not in PAUSES), 0.0) + layout.audio_start_ms
+    still_ms = design.output.still_ms
+    if still_ms is None:
+        still_ms = (apex_ms + layout.video_start_ms) if apex_ms is not None else layout.video_start_ms + \
+            0.5 * (speech.duration_ms)
+    with atomic_files(paths.values()) as temporary:
+        for kind, path in paths.items():
+            destination = temporary[path]
+            if kind in requests:
+                encode_video(requests[kind], destination)
+            elif kind == "wav":
+                destination.write_bytes(wav_bytes(audio, rate))
+            elif kind == "png":
+                _still(model, timeline, still_ms - layout.video_start_ms, design, destination)
+            elif kind == "phones":
+                shifted = replace(utterance, phones=_shifted(utterance.phones, layout.audio_start_ms))
+                destination.write_text(phones_csv(shifted), encoding="utf-8")
+            elif kind == "tracks":
+                destination.write_text(tracks_csv_text(timeline.parameters, frame_times, values), encoding="utf-8")
+    check = _check(paths, utterance.samples * gain, clean, mask, rate, layout.audio_start_ms,
+                   float(levels["snr_db"]) if "snr_db" in levels else None, gain)
+    record = {
+        "id": stimulus.id,
+        "levels": levels,
+        "files": {kind: {"name": names[kind], "sha256": sha256_of(paths[kind])} for kind in names},
+        "duration_ms": layout.length_ms,
+        "audio_start_ms": layout.audio_start_ms,
+        "video_start_ms": layout.video_start_ms,
+        "av_offset_ms": offset,
+        "snr_db": snr,
+        "speech_onset_ms": onset,
+        "word_onsets_ms": words,
+        "words": [w.label for w in utterance.words],
+        "expression_apex_ms": None if apex_ms is None else apex_ms + layout.video_start_ms,
+        "still_ms": still_ms if "png" in names else None,
+        "voice": utterance.voice,
+        "warnings": speech.warnings,
+        "snr_spec_db": levels.get("snr_db"),
+        "check": check,
+    }
+    records = outdir / RECORDS
+    records.mkdir(exist_ok=True)
+    atomic_write_text(records / f"{stimulus.id}.json", json.dumps(record, indent=1, ensure_ascii=False))
+    return record
+
+
+OFFSET_TOLERANCE_SAMPLES = 1
+SNR_TOLERANCE_DB = {"wav": 0.1, "mp4": 1.5}
+
+
+def _check(paths: dict[str, Path], speech: np.ndarray, clean: np.ndarray, mask: np.ndarray, rate: int,
+           audio_start_ms: float, snr_db: float | None, gain: float) -> dict[str, Any]:
+    """Measure the written file's audio: where the speech starts in it (cross-correlation with the speech
+    alone) and its SNR; compare both with the design."""
+    source = "wav" if "wav" in paths else "mp4" if "mp4" in paths else None
+    if source is None:
+        return {"ok": True, "measured_from": ""}
+    if source == "wav":
+        from engine.speech.synthesis import read_wav
+
+        written, _ = read_wav(paths["wav"])
+    else:
+        from engine.outputs.video_probe import read_audio
+
+        written, _ = read_audio(paths["mp4"], rate)
+    written = np.asarray(written[:len(clean)], dtype=np.float64)
+    if len(written) < len(clean):
+        written = np.pad(written, (0, len(clean) - len(written)))
+    start = measured_offset_ms(speech, written, rate, search_ms=abs(audio_start_ms) + 200.0)
+    problems = []
+    if abs(start - audio_start_ms) > OFFSET_TOLERANCE_SAMPLES * 1000.0 / rate + 1e-9:
+        problems.append(f"the speech starts at {start:.3f} ms in the {source}, not {audio_start_ms:.3f} ms")
+    measured = measured_snr_db(clean, written, mask, gain) if snr_db is not None else None
+    if measured is not None and snr_db is not None and abs(measured - snr_db) > SNR_TOLERANCE_DB[source]:
+        problems.append(f"the SNR in the {source} is {measured:.2f} dB, not {snr_db:g} dB")
+    return {"ok": not problems, "measured_from": source, "measured_audio_start_ms": start,
+            "measured_snr_db": measured, "problem": "; ".join(problems)}
+
+
+def sha256_of(path: Path) -> str:
+    digest = hashlib.sha256()
+    with path.open("rb") as stream:
+        for block in iter(lambda: stream.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()
+
+
+def _with_expression(speech: Speech, model: Model, levels: dict[str, Any]) -> tuple[Timeline, float | None]:
+    """The speech's timeline with the expression held over it at ``intensity`` %; and when it is at full."""
+    expression = levels.get("expression")
+    if expression is None or str(expression).lower() in ("none", "neutral"):
+        return speech.timeline, None
+    intensity = float(levels.get("intensity", 100.0))
+    hold = max(0.0, speech.end_ms - EXPRESSION_ONSET_MS)
+    command = HighLevelCommand(str(expression), {"at": 0.0, "amplitude": intensity, "onset": EXPRESSION_ONSET_MS,
+                                                 "apex": hold, "offset": EXPRESSION_OFFSET_MS},
+                               file="design", line=None)
+    activations = speech.activations + translate([command], _library(), model)
+    return Timeline(activations, model), EXPRESSION_ONSET_MS
+
+
+def _shifted(phones: list, by_ms: float) -> list:
+    return [replace(p, start_ms=p.start_ms + by_ms, end_ms=p.end_ms + by_ms) for p in phones] if by_ms else phones
+
+
+def _still(model: Model, timeline: Timeline, at_ms: float, design: Design, destination: Path) -> None:
+    from engine.outputs.render import FrameRenderer
+
+    values = timeline.values_at(at_ms)
+    with FrameRenderer(model, size=design.output.size, view=design.output.view) as renderer:
+        image = renderer.render(model.deform(values))
+    write_png(destination, image)
+
+
+@functools.lru_cache(maxsize=8)
+def _model(path: str) -> Model:
+    """A model per worker process, loaded once (the default head for ``""``)."""
+    return load_model(path or None)
+
+
+@functools.lru_cache(maxsize=1)
+def _library() -> Library:
+    return load_library()

@@ -1,0 +1,193 @@
+"""The tables of a stimulus set: manifest, PsychoPy conditions, checks, provenance — written together.
+
+* ``manifest.csv``: one row per stimulus: its id, every factor's level, each
+  file with its SHA-256, the clip's duration, where the audio and the video
+  start in it, the audio–visual offset, the SNR measured back, and the times a
+  researcher aligns to (speech onset, each word's onset, the expression's
+  apex, the still's time), ms from the start of the file.
+* ``conditions.csv``: PsychoPy's loop format (a header of variable names, one
+  row per trial, paths relative to the table): ``stimulus`` (the main file),
+  every factor, and every file by kind.
+* ``check.csv``: each stimulus's own measurements from the files it wrote
+  (audio offset by cross-correlation with the clean speech, SNR), and
+  whether they meet the design.
+* ``provenance.json``: the toolkit's version and git commit, the hashes of
+  the design, model, noise and library files, Festival's version and voices,
+  the numeric libraries' versions, the seed.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import importlib.metadata
+import io
+import json
+import platform
+import subprocess
+import sys
+from pathlib import Path
+from typing import Any
+
+from engine.formats.atomic import atomic_files
+from engine.paths import LIBRARY_DIR
+from engine.processes import with_parent_death_signal
+from engine.stimuli.design import FIXED_FACTORS, Design
+
+MANIFEST = "manifest.csv"
+CONDITIONS = "conditions.csv"
+CHECKS = "check.csv"
+PROVENANCE = "provenance.json"
+MAIN_KINDS = ("mp4", "silent-mp4", "wav", "png", "tracks", "phones")
+
+
+def write_set_files(design: Design, outdir: Path, records: list[dict[str, Any]]) -> None:
+    """The four tables of the set, from the records of every stimulus (all replaced together)."""
+    factors = list(design.factors)
+    kinds = list(design.output.kinds)
+    texts = {
+        MANIFEST: _csv(_manifest_rows(records, factors, kinds)),
+        CONDITIONS: _csv(_condition_rows(records, factors, kinds)),
+        CHECKS: _csv(_check_rows(records)),
+        PROVENANCE: json.dumps(provenance(design, records), indent=2, ensure_ascii=False) + "\n",
+    }
+    with atomic_files([outdir / name for name in texts]) as temporary:
+        for name, text in texts.items():
+            temporary[outdir / name].write_text(text, encoding="utf-8")
+
+
+def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: list[str]) -> list[dict[str, Any]]:
+    rows = []
+    for record in records:
+        row: dict[str, Any] = {"id": record["id"]}
+        row.update({name: record["levels"].get(name, "") for name in factors})
+        for kind in kinds:
+            row[f"file_{kind}"] = record["files"][kind]["name"]
+            row[f"sha256_{kind}"] = record["files"][kind]["sha256"]
+        row.update({
+            "duration_ms": _ms(record["duration_ms"]), "audio_start_ms": _ms(record["audio_start_ms"]),
+            "video_start_ms": _ms(record["video_start_ms"]), "av_offset_ms": _ms(record["av_offset_ms"]),
+            "snr_db": "" if record["snr_db"] is None else f"{record['snr_db']:.3f}",
+            "speech_onset_ms": _ms(record["speech_onset_ms"]),
+            "word_onsets_ms": ";".join(_ms(t) for t in record["word_onsets_ms"]),
+            "words": ";".join(record["words"]),
+            "expression_apex_ms": "" if record["expression_apex_ms"] is None else _ms(record["expression_apex_ms"]),
+            "still_ms": "" if record["still_ms"] is None else _ms(record["still_ms"]),
+        })
+        rows.append(row)
+    return rows
+
+
+def _condition_rows(records: list[dict[str, Any]], factors: list[str], kinds: list[str]) -> list[dict[str, Any]]:
+    main = next(kind for kind in MAIN_KINDS if kind in kinds)
+    rows = []
+    for record in records:
+        row: dict[str, Any] = {"stimulus": record["files"][main]["name"], "id": record["id"]}
+        row.update({name: record["levels"].get(name, "") for name in factors})
+        row.update({f"file_{kind.replace('-', '_')}": record["files"][kind]["name"] for kind in kinds})
+        row["speech_onset_ms"] = _ms(record["speech_onset_ms"])
+        rows.append(row)
+    return rows
+
+
+def _check_rows(records: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    rows = []
+    for record in records:
+        check = record.get("check", {})
+        rows.append({"id": record["id"], "av_offset_ms": _ms(record["av_offset_ms"]),
+                     "audio_start_ms": _ms(record["audio_start_ms"]),
+                     "measured_audio_start_ms": _optional(check.get("measured_audio_start_ms")),
+                     "measured_from": check.get("measured_from", ""),
+                     "snr_db": _optional(record.get("snr_spec_db")),
+                     "measured_snr_db": _optional(check.get("measured_snr_db")),
+                     "ok": "yes" if check.get("ok", True) else "NO", "problem": check.get("problem", "")})
+    return rows
+
+
+def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
+    """What made the set, so it can be made the same way again."""
+    libraries: dict[str, str | None] = {}
+    for name in ("numpy", "scipy", "vtk", "h5py", "lxml"):
+        try:
+            libraries[name] = importlib.metadata.version(name)
+        except importlib.metadata.PackageNotFoundError:
+            libraries[name] = None
+    return {
+        "toolkit": {"version": _toolkit_version(), "git_commit": _git_commit()},
+        "design": {"file": design.path.name, "sha256": design.sha256, "seed": design.seed,
+                   "stimuli": len(records)},
+        "files": {name: _file_hash(path) for name, path in sorted(design.extra_files.items())},
+        "library_sha256": _tree_hash(LIBRARY_DIR),
+        "default_model_sha256": _default_model_hash(),
+        "festival": {"version": _festival_version(), "voices": sorted({r["voice"] for r in records})},
+        "python": sys.version.split()[0], "platform": platform.platform(), "libraries": libraries,
+    }
+
+
+def _csv(rows: list[dict[str, Any]]) -> str:
+    buffer = io.StringIO()
+    if rows:
+        writer = csv.DictWriter(buffer, fieldnames=list(rows[0]), lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+    return buffer.getvalue()
+
+
+def _ms(value: float) -> str:
+    return f"{float(value):.3f}".rstrip("0").rstrip(".") or "0"
+
+
+def _optional(value: float | None) -> str:
+    return "" if value is None else f"{float(value):.3f}"
+
+
+def _file_hash(path: Path) -> str | None:
+    try:
+        return hashlib.sha256(Path(path).read_bytes()).hexdigest()
+    except OSError:
+        return None
+
+
+def _tree_hash(folder: Path) -> str:
+    digest = hashlib.sha256()
+    for path in sorted(p for p in folder.rglob("*") if p.is_file() and "__pycache__" not in p.parts):
+        digest.update(str(path.relative_to(folder)).encode() + b"\0" + path.read_bytes())
+    return digest.hexdigest()
+
+
+def _default_model_hash() -> dict[str, str | None]:
+    from engine.paths import default_model_path
+
+    xml = default_model_path()
+    return {xml.name: _file_hash(xml), xml.with_suffix(".h5").name: _file_hash(xml.with_suffix(".h5"))}
+
+
+def _toolkit_version() -> str | None:
+    for name in ("artificial-person", "artificial_person"):
+        try:
+            return importlib.metadata.version(name)
+        except importlib.metadata.PackageNotFoundError:
+            continue
+    return None
+
+
+def _git_commit() -> str | None:
+    top = Path(__file__).resolve().parents[2]
+    try:
+        done = subprocess.run(with_parent_death_signal(["git", "-C", str(top), "rev-parse", "HEAD"]),
+                              capture_output=True, text=True, timeout=10, check=False)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return done.stdout.strip() or None if done.returncode == 0 else None
+
+
+def _festival_version() -> str | None:
+    try:
+        done = subprocess.run(with_parent_death_signal(["festival", "--version"]), capture_output=True, text=True,
+                              timeout=30, check=False)
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+    return (done.stdout or done.stderr).strip().splitlines()[0] if (done.stdout or done.stderr).strip() else None
+
+
+__all__ = ["CHECKS", "CONDITIONS", "FIXED_FACTORS", "MANIFEST", "PROVENANCE", "provenance", "write_set_files"]

@@ -1,0 +1,244 @@
+"""Stimulus sets from design files (issue 20): designs, every example, checks, reproducibility, resume, Dask.
+
+Real Festival, real ffmpeg, real processes; the Dask cluster is one of local
+worker processes on 127.0.0.1.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from engine.stimuli import DesignError, load_design, make_set, parse_design
+from engine.stimuli.make import RECORDS, sha256_of
+from tests.engine.cli_runner import assert_user_error, run
+from tests.engine.test_festival import needs_festival
+
+EXAMPLES = Path(__file__).parents[2] / "examples" / "stimuli"
+SMALL = """
+[factors]
+text = ["Pappa ampui pallon.", "Maija meni kotiin."]
+av_offset_ms = [-150, 0, 250]
+
+[output]
+kinds = ["mp4", "wav"]
+size = "96x72"
+fps = 25
+"""
+
+
+def rows(path: Path) -> list[dict[str, str]]:
+    with path.open(encoding="utf-8") as stream:
+        return list(csv.DictReader(stream))
+
+
+# ---------------------------------------------------------------------------
+# Design files
+# ---------------------------------------------------------------------------
+
+def test_crossing_lists_and_blocks():
+    design = parse_design(SMALL, "d.toml")
+    assert [(s.id, s.levels["av_offset_ms"]) for s in design.stimuli][:3] == [("0001", -150), ("0002", 0),
+                                                                              ("0003", 250)]
+    listed = parse_design('combine = "list"\n[factors]\ntext = ["a.", "b."]\nx = [1, 2]\n'
+                          '[[rows]]\ntext = "b."\nx = 2\n', "l.toml")
+    assert [s.levels for s in listed.stimuli] == [{"text": "b.", "x": 2}]
+    blocks = load_design(EXAMPLES / "blocks.toml")
+    assert [(s.levels["av_offset_ms"], s.levels["expression"]) for s in blocks.stimuli] == [
+        (-300, "none"), (0, "none"), (300, "none"), (0, "Happy")]
+
+
+@pytest.mark.parametrize("text, line, message", [
+    ('[factors]\ntext = ["a."]\n\n[output]\nkinds = ["avi"]\n', 5, "kinds: kinds must list some of"),
+    ('[factors]\ntext = ["a."]\nintensity = [150]\n', 3, "'intensity' level 150: must be a number from 0 to 100"),
+    ('[factors]\ntext = ["a."]\ncolour = 3\n', 3, "factor 'colour' must be a list"),
+    ('[factors]\ntext = ["a."]\n[output]\nsize = "320x241"\n', 4, "size must be WIDTHxHEIGHT"),
+    ('[factors]\ntext = ["a."]\nmodel = ["nosuch.xml"]\n', 3, "no such model file"),
+    ('[factors]\ntext = ["a."]\n[output]\nfps = 30\nsped = 2\n', 5, "unknown output key 'sped'"),
+    ('[factors\ntext = ["a."]\n', 1, "not a TOML file"),
+    ('seed = -1\n[factors]\ntext = ["a."]\n', 1, "seed must be a whole number"),
+    ('[output]\nfps = 30\n', 1, "no [factors] table"),
+])
+def test_a_bad_design_names_file_line_and_key(tmp_path, text, line, message):
+    design = tmp_path / "bad.toml"
+    design.write_text(text, encoding="utf-8")
+    error = assert_user_error(run("stimuli", design, "-o", tmp_path / "out"))
+    assert error.startswith(f"error: {design}:{line}: ") and message in error, error
+    assert not (tmp_path / "out").exists()                               # nothing is written
+
+
+def test_dry_run_lists_and_estimates(tmp_path):
+    result = run("stimuli", EXAMPLES / "minimal.toml", "-o", tmp_path / "out", "--dry-run")
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert lines[0].startswith("0001  to make") and "av_offset_ms=-200" in lines[0]
+    assert lines[-1].startswith("6 stimuli, 6 to make, about ")
+    assert not (tmp_path / "out").exists()
+
+
+# ---------------------------------------------------------------------------
+# Making sets
+# ---------------------------------------------------------------------------
+
+@needs_festival
+@pytest.mark.slow
+@pytest.mark.parametrize("example", sorted(p.name for p in EXAMPLES.glob("*.toml")))
+def test_every_example_design_runs(example, tmp_path):
+    out = tmp_path / "set"
+    result = run("stimuli", EXAMPLES / example, "-o", out, "--workers", "2")
+    assert result.returncode == 0, result.stderr
+    design = load_design(EXAMPLES / example)
+    manifest = rows(out / "manifest.csv")
+    assert [r["id"] for r in manifest] == [s.id for s in design.stimuli]
+    for row in manifest:
+        for kind in design.output.kinds:
+            path = out / row[f"file_{kind}"]
+            assert path.is_file() and sha256_of(path) == row[f"sha256_{kind}"]
+    conditions = rows(out / "conditions.csv")
+    assert all((out / r["stimulus"]).is_file() for r in conditions)
+    assert all(r["ok"] == "yes" for r in rows(out / "check.csv"))
+    provenance = json.loads((out / "provenance.json").read_text())
+    assert provenance["design"]["sha256"] == design.sha256 and provenance["festival"]["voices"]
+
+
+@needs_festival
+@pytest.mark.slow
+def test_offsets_and_snr_are_what_the_files_hold(tmp_path, head):
+    """Measured here from the files, independently of the set's own checks: the audio starts where the
+    manifest says (to the sample), the video's mouth moves where it says, the noise is at its SNR."""
+    from engine.outputs.video_probe import read_audio
+    from engine.speech.say import speak
+    from engine.speech.synthesis import read_wav
+    from engine.stimuli.audio import measured_offset_ms
+
+    design = tmp_path / "d.toml"
+    design.write_text(SMALL.replace('"Maija meni kotiin."', "") .replace(", ]", "]")
+                      .replace('kinds = ["mp4", "wav"]', 'kinds = ["mp4", "wav", "tracks"]'), encoding="utf-8")
+    out = tmp_path / "set"
+    assert run("stimuli", design, "-o", out, "--workers", "1").returncode == 0
+    clean = speak("Pappa ampui pallon.", head).utterance
+    jaw = None
+    for row in rows(out / "manifest.csv"):
+        offset = float(row["av_offset_ms"])
+        wav, rate = read_wav(out / row["file_wav"])
+        start = measured_offset_ms(clean.samples, wav, rate, 600)
+        assert start == pytest.approx(max(0.0, offset), abs=1000 / rate)
+        audio, _ = read_audio(out / row["file_mp4"], rate)
+        assert measured_offset_ms(clean.samples, audio, rate, 600) == pytest.approx(max(0.0, offset), abs=1000 / rate)
+        table = np.genfromtxt(out / row["file_tracks"], delimiter=",", names=True)
+        moving = table["time_ms"][np.abs(table["jaw_open"]) > 0.05]
+        video_start = float(row["video_start_ms"])
+        assert video_start == pytest.approx(max(0.0, -offset))
+        first = moving[0] - video_start                    # the mouth's first opening, on the speech's clock
+        jaw = first if jaw is None else jaw
+        assert first == pytest.approx(jaw, abs=1000 / 25 + 1e-6)
+
+
+@needs_festival
+@pytest.mark.slow
+def test_a_missed_specification_fails_the_run(tmp_path, monkeypatch, capsys):
+    import engine.stimuli.make as make
+    from engine.cli import main
+
+    design = tmp_path / "d.toml"
+    design.write_text('[factors]\ntext = ["Moi."]\nsnr_db = [3]\n[output]\nkinds = ["wav"]\n', encoding="utf-8")
+    monkeypatch.setattr(make, "SNR_TOLERANCE_DB", {"wav": -1.0, "mp4": -1.0})    # nothing can meet it
+    code = main(["stimuli", str(design), "-o", str(tmp_path / "out"), "--workers", "1"])
+    assert code == 1
+    assert "stimulus 0001 misses its specification: the SNR in the wav" in capsys.readouterr().err
+    assert rows(tmp_path / "out" / "check.csv")[0]["ok"] == "NO"
+
+
+@needs_festival
+@pytest.mark.slow
+def test_the_same_design_makes_bit_identical_files_and_resume_after_kill_finishes_it(tmp_path):
+    design = tmp_path / "d.toml"
+    design.write_text(SMALL, encoding="utf-8")
+    first = tmp_path / "first"
+    assert run("stimuli", design, "-o", first, "--workers", "2").returncode == 0
+    second = tmp_path / "second"
+    process = subprocess.Popen([sys.executable, "-m", "engine", "stimuli", str(design), "-o", str(second),
+                                "--workers", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 120
+    while time.monotonic() < deadline and not list((second / RECORDS).glob("*.json")):
+        time.sleep(0.05)
+    os.kill(process.pid, signal.SIGKILL)
+    process.wait()
+    made_before = len(list((second / RECORDS).glob("*.json")))
+    assert 1 <= made_before < 6 and not (second / "manifest.csv").exists()
+    for path in second.iterdir():                         # nothing half-made under a final name
+        if path.suffix in (".mp4", ".wav"):
+            assert (second / RECORDS / f"{path.stem}.json").exists() or path.stat().st_size > 0
+    assert_user_error(run("stimuli", design, "-o", second))          # not without --resume
+    result = run("stimuli", design, "-o", second, "--resume", "--workers", "2")
+    assert result.returncode == 0, result.stderr
+    assert f"{6 - made_before} made, {made_before} already there" in result.stdout
+    assert not [p for p in second.iterdir() if p.name.endswith((".tmp", ".journal"))]
+    a, b = rows(first / "manifest.csv"), rows(second / "manifest.csv")
+    assert [r["sha256_mp4"] for r in a] == [r["sha256_mp4"] for r in b]       # bit-identical, resumed or not
+    assert [r["sha256_wav"] for r in a] == [r["sha256_wav"] for r in b]
+    (second / "0003.wav").write_bytes(b"damaged")                            # a damaged file is made again
+    result = run("stimuli", design, "-o", second, "--resume", "--workers", "1")
+    assert "1 made, 5 already there" in result.stdout
+    assert sha256_of(second / "0003.wav") == a[2]["sha256_wav"]
+
+
+# ---------------------------------------------------------------------------
+# A Dask cluster of local worker processes (127.0.0.1 only)
+# ---------------------------------------------------------------------------
+
+@needs_festival
+@pytest.mark.slow
+def test_a_dask_cluster_makes_the_set_even_when_a_worker_is_killed(tmp_path):
+    from distributed import Client, LocalCluster
+
+    design = load_design(_write(tmp_path / "d.toml", SMALL))
+    out = tmp_path / "set"
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address=None, silence_logs=50) as cluster, Client(cluster) as client:
+        outcome: dict[str, object] = {}
+
+        def make() -> None:
+            try:
+                outcome["result"] = make_set(design, out, scheduler=cluster.scheduler_address)
+            except BaseException as error:          # reported below
+                outcome["error"] = error
+
+        worker = threading.Thread(target=make)
+        worker.start()
+        killed = None
+        deadline = time.monotonic() + 120
+        while killed is None and time.monotonic() < deadline:
+            busy = [address for address, tasks in client.processing().items() if tasks]
+            if busy and list((out / RECORDS).glob("*.json")):
+                pids = client.run(os.getpid)
+                killed = pids[busy[0]]
+                os.kill(killed, signal.SIGKILL)          # mid-task: it holds a stimulus
+            time.sleep(0.05)
+        worker.join(300)
+    assert killed is not None, "no worker was ever busy"
+    assert "error" not in outcome, outcome.get("error")
+    manifest = rows(out / "manifest.csv")
+    assert [r["id"] for r in manifest] == [s.id for s in design.stimuli]
+    for row in manifest:
+        assert sha256_of(out / row["file_mp4"]) == row["sha256_mp4"]
+
+
+def _write(path: Path, text: str) -> Path:
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_design_errors_are_user_errors():
+    with pytest.raises(DesignError, match=r"d\.toml:2: text"):
+        parse_design('[factors]\ntext = [""]\n', "d.toml")
