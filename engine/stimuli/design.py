@@ -17,7 +17,10 @@ Factors with fixed meanings: ``text`` (with inline commands), ``voice``,
 ``model`` (a model file, relative to the design), ``expression`` and
 ``intensity`` (0–100 %), ``av_offset_ms`` (positive: the audio later than the
 video), ``snr_db`` and ``noise`` (``white``, ``speech-shaped`` or a WAV file).
-Any other factor is a free label copied into the manifest. Which combinations
+``audio_text`` makes an incongruent (McGurk) stimulus: its audio is heard
+while the face articulates ``text``, the two aligned at the onset of
+``align_phone`` (default: the first vowel). Any other factor is a free label
+copied into the manifest. Which combinations
 are made: every one (the default, ``combine = "cross"``), a listed subset
 (``combine = "list"`` with ``[[rows]]`` tables), or blocks (``[[blocks]]``,
 each crossed on its own, one after the other). Every error names the file,
@@ -42,7 +45,8 @@ from typing import Any
 from engine.errors import UserError
 from engine.formats.text_files import read_bounded_text
 
-FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise")
+FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise",
+                 "audio_text", "align_phone")
 KINDS = ("mp4", "wav", "png", "silent-mp4", "phones", "tracks")
 NOISES = ("white", "speech-shaped")
 MAX_STIMULI = 100_000
@@ -213,7 +217,7 @@ def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
             raise where.error(name, f"'{name}' level {value!r}: {what}")
 
     number = isinstance(value, int | float) and not isinstance(value, bool)
-    if name in ("text", "voice", "expression"):
+    if name in ("text", "voice", "expression", "audio_text", "align_phone"):
         need(isinstance(value, str) and value.strip() != "", "must be a non-empty string")
     elif name == "model":
         need(isinstance(value, str), "must be a model file name (relative to the design)")

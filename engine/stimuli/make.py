@@ -33,7 +33,7 @@ from engine.model.model import Model
 from engine.outputs.png_file import write_png
 from engine.outputs.video_writer import check_video, encode_video
 from engine.speech.say import Speech, speak
-from engine.speech.synthesis import phones_csv, wav_bytes
+from engine.speech.synthesis import Utterance, phones_csv, wav_bytes
 from engine.stimuli.audio import (
     add_noise,
     clip_layout,
@@ -42,7 +42,7 @@ from engine.stimuli.audio import (
     placed_audio,
     speech_mask,
 )
-from engine.stimuli.design import Design, Stimulus
+from engine.stimuli.design import Design, DesignError, Stimulus
 from engine.timeline.timeline import Timeline
 from engine.timeline.tracks import tracks_csv_text
 
@@ -62,10 +62,17 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     speech = speak(str(levels.get("text", "")), model, voice=levels.get("voice"), library=_library(),
                    name=f"{design.path.name}: stimulus {stimulus.id}")
     timeline, apex_ms = _with_expression(speech, model, levels)
-    offset = float(levels.get("av_offset_ms", 0.0))
+    utterance, alignment = speech.utterance, 0.0
+    if "audio_text" in levels:          # incongruent (McGurk): heard one utterance, seen another
+        heard = speak(str(levels["audio_text"]), model, voice=levels.get("voice"), library=_library(),
+                      name=f"{design.path.name}: stimulus {stimulus.id} (audio_text)")
+        phone = levels.get("align_phone")
+        where = f"{design.path.name}: stimulus {stimulus.id}"
+        alignment = _onset(speech.utterance, phone, where) - _onset(heard.utterance, phone, where)
+        utterance = heard.utterance
+    offset = float(levels.get("av_offset_ms", 0.0)) + alignment
     video_ms = max(speech.end_ms, timeline.end)
-    layout = clip_layout(speech.duration_ms, video_ms, offset)
-    utterance = speech.utterance
+    layout = clip_layout(utterance.duration_ms, video_ms, offset)
     rate = utterance.sample_rate
     clean = placed_audio(utterance.samples, rate, layout.audio_start_ms, layout.length_ms)
     mask = speech_mask(_shifted(utterance.phones, layout.audio_start_ms), rate, len(clean), PAUSES)
@@ -115,7 +122,8 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
         "duration_ms": layout.length_ms,
         "audio_start_ms": layout.audio_start_ms,
         "video_start_ms": layout.video_start_ms,
-        "av_offset_ms": offset,
+        "av_offset_ms": offset - alignment,
+        "alignment_ms": alignment,
         "snr_db": snr,
         "speech_onset_ms": onset,
         "word_onsets_ms": words,
@@ -186,6 +194,21 @@ def _with_expression(speech: Speech, model: Model, levels: dict[str, Any]) -> tu
                                file="design", line=None)
     activations = speech.activations + translate([command], _library(), model)
     return Timeline(activations, model), EXPRESSION_ONSET_MS
+
+
+def _onset(utterance: Utterance, phone: str | None, where: str) -> float:
+    """Where ``phone`` (its first occurrence; a long form counts) or, with no phone given, the first vowel
+    begins in ``utterance``."""
+    for segment in utterance.phones:
+        label = segment.label
+        if phone is None:
+            features = utterance.phone_features.get(label)
+            if features is not None and features.is_vowel:
+                return segment.start_ms
+        elif label == phone or label.rstrip(":") == phone:
+            return segment.start_ms
+    raise DesignError(f"{where}: '{utterance.text}' has no {'vowel' if phone is None else repr(phone)} to "
+                      "align the audio and the video at (align_phone)")
 
 
 def _shifted(phones: list, by_ms: float) -> list:

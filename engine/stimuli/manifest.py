@@ -67,6 +67,7 @@ def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: lis
         row.update({
             "duration_ms": _ms(record["duration_ms"]), "audio_start_ms": _ms(record["audio_start_ms"]),
             "video_start_ms": _ms(record["video_start_ms"]), "av_offset_ms": _ms(record["av_offset_ms"]),
+            "alignment_ms": _ms(record.get("alignment_ms", 0.0)),
             "snr_db": "" if record["snr_db"] is None else f"{record['snr_db']:.3f}",
             "speech_onset_ms": _ms(record["speech_onset_ms"]),
             "word_onsets_ms": ";".join(_ms(t) for t in record["word_onsets_ms"]),

@@ -242,3 +242,25 @@ def _write(path: Path, text: str) -> Path:
 def test_design_errors_are_user_errors():
     with pytest.raises(DesignError, match=r"d\.toml:2: text"):
         parse_design('[factors]\ntext = [""]\n', "d.toml")
+
+
+@needs_festival
+@pytest.mark.slow
+def test_mcgurk_pairs_are_aligned_at_the_vowel(tmp_path, head):
+    """Heard /kaa/ over seen /paa/: the vowel begins at the same moment in the audio and on the face, the
+    lips close for the seen p, and the manifest names both sources and the shift."""
+    from engine.speech.say import speak
+
+    out = tmp_path / "set"
+    assert run("stimuli", EXAMPLES / "mcgurk.toml", "-o", out, "--workers", "1").returncode == 0
+    row = next(r for r in rows(out / "manifest.csv") if r["text"] == "Paa." and r["audio_text"] == "Kaa.")
+    seen, heard = speak("Paa.", head).utterance, speak("Kaa.", head).utterance
+    vowel = next(p for p in seen.phones if p.label.startswith("a")).start_ms
+    heard_vowel = next(p for p in heard.phones if p.label.startswith("a")).start_ms
+    assert float(row["alignment_ms"]) == pytest.approx(vowel - heard_vowel, abs=1e-3)
+    assert float(row["audio_start_ms"]) + heard_vowel == pytest.approx(float(row["video_start_ms"]) + vowel,
+                                                                        abs=1e-3)
+    table = np.genfromtxt(out / row["file_tracks"], delimiter=",", names=True)
+    p = next(s for s in seen.phones if s.label == "p")
+    closed = table["lower_lip_raise"][np.abs(table["time_ms"] - float(row["video_start_ms"]) - p.mid_ms) <= 20]
+    assert closed.max() > 0.9                                         # the face says p, whatever is heard
