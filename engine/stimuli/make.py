@@ -115,6 +115,14 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
                 destination.write_text(tracks_csv_text(timeline.parameters, frame_times, values), encoding="utf-8")
     check = _check(paths, utterance.samples * gain, clean, mask, rate, layout.audio_start_ms,
                    float(levels["snr_db"]) if "snr_db" in levels else None, gain)
+    check.update(_check_video(paths, values, fps, layout.video_start_ms))
+    if check.get("video_ok") is False:
+        check["ok"] = False
+        check["problem"] = "; ".join(filter(None, [check.get("problem", ""), "the video's frames move "
+                                                   f"{check['measured_video_lag_frames']} frames off its face"]))
+    records = outdir / RECORDS
+    records.mkdir(exist_ok=True)
+    _thumbnail(model, timeline, still_ms - layout.video_start_ms, design, records / f"{stimulus.id}.thumb.npy")
     record = {
         "id": stimulus.id,
         "levels": levels,
@@ -135,8 +143,6 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
         "snr_spec_db": levels.get("snr_db"),
         "check": check,
     }
-    records = outdir / RECORDS
-    records.mkdir(exist_ok=True)
     atomic_write_text(records / f"{stimulus.id}.json", json.dumps(record, indent=1, ensure_ascii=False))
     return record
 
@@ -172,6 +178,48 @@ def _check(paths: dict[str, Path], speech: np.ndarray, clean: np.ndarray, mask: 
         problems.append(f"the SNR in the {source} is {measured:.2f} dB, not {snr_db:g} dB")
     return {"ok": not problems, "measured_from": source, "measured_audio_start_ms": start,
             "measured_snr_db": measured, "problem": "; ".join(problems)}
+
+
+def _check_video(paths: dict[str, Path], values: np.ndarray, fps: float, video_start_ms: float) -> dict[str, Any]:
+    """Measure the written video: where its frames move against where the face's parameters move.
+
+    The motion of the frames (mean absolute change of the pixels from one frame to the next) is
+    cross-correlated with the motion of the parameters (summed absolute change); they must coincide to
+    the frame, so the face starts where the clip says (``video_start_ms``) in the file as written.
+    """
+    kind = "mp4" if "mp4" in paths else "silent-mp4" if "silent-mp4" in paths else None
+    if kind is None or len(values) < 3:
+        return {}
+    from engine.outputs.video_probe import read_frames
+
+    frames = read_frames(paths[kind]).astype(np.float32)
+    moving_pixels = np.abs(np.diff(frames, axis=0)).mean(axis=(1, 2, 3))
+    moving_values = np.abs(np.diff(values, axis=0)).sum(axis=1)
+    count = min(len(moving_pixels), len(moving_values))
+    if count < 3 or not moving_values[:count].any() or not moving_pixels[:count].any():
+        return {"measured_video_lag_frames": None}
+    a = (moving_pixels[:count] - moving_pixels[:count].mean()) / (moving_pixels[:count].std() or 1.0)
+    b = (moving_values[:count] - moving_values[:count].mean()) / (moving_values[:count].std() or 1.0)
+    reach = min(count - 1, round((video_start_ms + 500.0) * fps / 1000.0))
+    lags = list(range(-reach, reach + 1))
+    scores = [float(np.dot(a[max(0, k):count + min(0, k)], b[max(0, -k):count - max(0, k)])) for k in lags]
+    lag = lags[int(np.argmax(scores))]
+    return {"measured_video_lag_frames": lag, "video_ok": lag == 0}
+
+
+THUMBNAIL_WIDTH = 128
+
+
+def _thumbnail(model: Model, timeline: Timeline, at_ms: float, design: Design, path: Path) -> None:
+    """A small picture of the stimulus at its still's time, for the set's contact sheet."""
+    from engine.outputs.render import FrameRenderer
+
+    width, height = design.output.size
+    size = (THUMBNAIL_WIDTH, max(2, round(THUMBNAIL_WIDTH * height / width / 2) * 2))
+    with FrameRenderer(model, size=size, view=design.output.view) as renderer:
+        image = renderer.render(model.deform(timeline.values_at(at_ms)))
+    with path.open("wb") as stream:
+        np.save(stream, np.ascontiguousarray(image, dtype=np.uint8), allow_pickle=False)
 
 
 def sha256_of(path: Path) -> str:

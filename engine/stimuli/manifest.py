@@ -29,15 +29,22 @@ import sys
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from engine.formats.atomic import atomic_files
+from engine.outputs.png_file import png_bytes
 from engine.paths import LIBRARY_DIR
 from engine.processes import with_parent_death_signal
 from engine.stimuli.design import FIXED_FACTORS, Design
+from engine.stimuli.make import RECORDS
 
 MANIFEST = "manifest.csv"
 CONDITIONS = "conditions.csv"
 CHECKS = "check.csv"
 PROVENANCE = "provenance.json"
+CONTACT_SHEET = "contact-sheet.png"
+SHEET_COLUMNS = 8
+SHEET_LIMIT = 400
 MAIN_KINDS = ("mp4", "silent-mp4", "wav", "png", "tracks", "phones")
 
 
@@ -51,9 +58,44 @@ def write_set_files(design: Design, outdir: Path, records: list[dict[str, Any]])
         CHECKS: _csv(_check_rows(records)),
         PROVENANCE: json.dumps(provenance(design, records), indent=2, ensure_ascii=False) + "\n",
     }
-    with atomic_files([outdir / name for name in texts]) as temporary:
+    sheet = contact_sheet(outdir, records)
+    targets = [outdir / name for name in texts] + ([outdir / CONTACT_SHEET] if sheet is not None else [])
+    with atomic_files(targets) as temporary:
         for name, text in texts.items():
             temporary[outdir / name].write_text(text, encoding="utf-8")
+        if sheet is not None:
+            temporary[outdir / CONTACT_SHEET].write_bytes(png_bytes(sheet))
+
+
+def contact_sheet(outdir: Path, records: list[dict[str, Any]]) -> np.ndarray | None:
+    """Every stimulus's thumbnail (at its still's time) labelled with its id, in design order, 8 a row; the
+    first 400 of a larger set. ``None`` when no thumbnail is there."""
+    from engine.outputs.raster import draw_text
+
+    thumbs = []
+    for record in records[:SHEET_LIMIT]:
+        path = outdir / RECORDS / f"{record['id']}.thumb.npy"
+        try:
+            image = np.load(path, allow_pickle=False)
+        except (OSError, ValueError):
+            continue
+        if image.ndim == 3 and image.shape[2] == 3 and image.dtype == np.uint8:
+            marked = not record.get("check", {}).get("ok", True)
+            thumbs.append((record["id"] + (" NO" if marked else ""), image))
+    if not thumbs:
+        return None
+    height, width = thumbs[0][1].shape[:2]
+    gap, label = 4, 14
+    columns = min(SHEET_COLUMNS, len(thumbs))
+    rows = -(-len(thumbs) // columns)
+    sheet = np.full((gap + rows * (height + label + gap), gap + columns * (width + gap), 3), 255, np.uint8)
+    for k, (name, image) in enumerate(thumbs):
+        r, c = divmod(k, columns)
+        y, x = gap + r * (height + label + gap), gap + c * (width + gap)
+        if image.shape[:2] == (height, width):
+            sheet[y:y + height, x:x + width] = image
+        draw_text(sheet, name, x, y + height + 3, (40, 40, 40), scale=1)
+    return sheet
 
 
 def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: list[str]) -> list[dict[str, Any]]:
@@ -101,6 +143,8 @@ def _check_rows(records: list[dict[str, Any]]) -> list[dict[str, Any]]:
                      "measured_from": check.get("measured_from", ""),
                      "snr_db": _optional(record.get("snr_spec_db")),
                      "measured_snr_db": _optional(check.get("measured_snr_db")),
+                     "measured_video_lag_frames": "" if check.get("measured_video_lag_frames") is None
+                     else str(check["measured_video_lag_frames"]),
                      "ok": "yes" if check.get("ok", True) else "NO", "problem": check.get("problem", "")})
     return rows
 

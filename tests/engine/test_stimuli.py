@@ -107,6 +107,7 @@ def test_every_example_design_runs(example, tmp_path):
     conditions = rows(out / "conditions.csv")
     assert all((out / r["stimulus"]).is_file() for r in conditions)
     assert all(r["ok"] == "yes" for r in rows(out / "check.csv"))
+    assert (out / "contact-sheet.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     provenance = json.loads((out / "provenance.json").read_text())
     assert provenance["design"]["sha256"] == design.sha256 and provenance["festival"]["voices"]
 
@@ -264,3 +265,22 @@ def test_mcgurk_pairs_are_aligned_at_the_vowel(tmp_path, head):
     p = next(s for s in seen.phones if s.label == "p")
     closed = table["lower_lip_raise"][np.abs(table["time_ms"] - float(row["video_start_ms"]) - p.mid_ms) <= 20]
     assert closed.max() > 0.9                                         # the face says p, whatever is heard
+
+
+@needs_festival
+@pytest.mark.slow
+def test_the_video_check_sees_frames_shifted_off_the_face(tmp_path):
+    """The check measures the file: frames that moved two frames off the parameters are caught."""
+    from engine.stimuli.make import _check_video
+
+    design = _write(tmp_path / "d.toml", '[factors]\ntext = ["Pappa ampui pallon."]\n[output]\n'
+                    'kinds = ["silent-mp4", "tracks"]\nsize = "96x72"\nfps = 25\n')
+    out = tmp_path / "set"
+    assert run("stimuli", design, "-o", out).returncode == 0
+    row = rows(out / "manifest.csv")[0]
+    table = np.genfromtxt(out / row["file_tracks"], delimiter=",", names=True)
+    values = np.column_stack([table[name] for name in table.dtype.names[1:]])
+    video = {"silent-mp4": out / row["file_silent-mp4"]}
+    assert _check_video(video, values, 25.0, 0.0) == {"measured_video_lag_frames": 0, "video_ok": True}
+    late = np.vstack([np.repeat(values[:1], 2, axis=0), values[:-2]])        # the face two frames later
+    assert _check_video(video, late, 25.0, 0.0) == {"measured_video_lag_frames": -2, "video_ok": False}
