@@ -46,7 +46,7 @@ def read_c3d(path: str | Path) -> Recording:
                               + (f"; it holds {int(analog)} analog channels only, which are not marker data"
                                  if analog else ""), file=path)
     scales = _unit_scales(params, n_points, path)
-    scale = _scale(header, params, notes)
+    scale = _scale(header, params, notes, path)
     is_float = scale < 0
     word = 4 if is_float else 2
     start = _data_start(header, params, len(data), path)
@@ -58,7 +58,7 @@ def read_c3d(path: str | Path) -> Recording:
     frames = frames.reshape(n_frames, frame_bytes)[:, :4 * n_points * word]
     if is_float:
         words = decode_floats(frames.tobytes(), params.processor).reshape(n_frames, n_points, 4)
-        xyz = words[..., :3].astype(np.float64)
+        xyz = words[..., :3].copy()
         valid = ~(words[..., 3] < 0)  # NaN or +1.7e38 is not "negative": the sample is valid
     else:
         ints = frames.copy().view(int_order(params.processor) + "i2").reshape(n_frames, n_points, 4)
@@ -115,7 +115,7 @@ def _whole(values: np.ndarray) -> int | None:
     return int(value) if np.isfinite(value) and 0 <= value < 2**31 and value == int(value) else None
 
 
-def _scale(header: C3dHeader, params: C3dParameters, notes: list[str]) -> float:
+def _scale(header: C3dHeader, params: C3dParameters, notes: list[str], path: Path) -> float:
     """The point scale (negative: float data): the header's, ``POINT:SCALE`` where the header has none.
 
     They differ in one file of the corpus (c3d.org sample 6, ``MACsample.c3d``),
@@ -123,8 +123,11 @@ def _scale(header: C3dHeader, params: C3dParameters, notes: list[str]) -> float:
     36 cm) and ``POINT:SCALE`` one of 40 % of it.
     """
     param = params.number("POINT:SCALE")
-    header_ok = np.isfinite(header.scale) and header.scale != 0
-    if param is None or not np.isfinite(param) or param == 0:
+    header_ok = bool(np.isfinite(header.scale) and header.scale != 0 and abs(header.scale) < 1e30)
+    param_ok = param is not None and bool(np.isfinite(param) and param != 0 and abs(param) < 1e30)
+    if not param_ok or param is None:
+        if not header_ok:
+            raise MarkerFileError(f"no usable point scale (header {header.scale:g}, POINT:SCALE {param})", file=path)
         return header.scale
     if not header_ok:
         return param

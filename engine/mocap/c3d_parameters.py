@@ -39,14 +39,18 @@ def vax_to_ieee(raw: bytes | np.ndarray) -> np.ndarray:
     """
     data = np.frombuffer(bytes(raw), dtype=np.uint8).reshape(-1, 4)
     swapped = data[:, [2, 3, 0, 1]].copy().view("<f4").ravel()
-    return (swapped.astype(np.float64) / 4.0).astype(np.float32)
+    with np.errstate(invalid="ignore"):  # a signalling NaN in a damaged file is just NaN
+        return (swapped.astype(np.float64) / 4.0).astype(np.float32)
 
 
 def decode_floats(raw: bytes, processor: str) -> np.ndarray:
-    """Floats of the file's processor format as float32."""
+    """Floats of the file's processor format as float64 (NaN bit patterns of any kind become NaN quietly)."""
     if processor == "DEC":
-        return vax_to_ieee(raw)
-    return np.frombuffer(raw, dtype=(">" if processor == "MIPS" else "<") + "f4")
+        singles = vax_to_ieee(raw)
+    else:
+        singles = np.frombuffer(raw, dtype=(">" if processor == "MIPS" else "<") + "f4")
+    with np.errstate(invalid="ignore"):
+        return singles.astype(np.float64)
 
 
 def int_order(processor: str) -> str:
@@ -70,7 +74,7 @@ class C3dHeader:
     @classmethod
     def from_bytes(cls, block: bytes, order: str, processor: str = "INTEL") -> C3dHeader:
         words = np.frombuffer(block[:24], dtype=order + "u2").astype(int)
-        floats = decode_floats(block[12:16] + block[20:24], processor).astype(float)
+        floats = decode_floats(block[12:16] + block[20:24], processor)
         return cls(parameter_block=block[0], point_count=int(words[1]), analog_per_frame=int(words[2]),
                    first_frame=int(words[3]), last_frame=int(words[4]), scale=float(floats[0]),
                    data_block=int(words[8]), rate=float(floats[1]))
@@ -92,7 +96,7 @@ class C3dParameter:
         if self.kind == 2:
             return np.frombuffer(self.raw, dtype=int_order(self.processor) + "i2").astype(float)
         if self.kind == 4:
-            return decode_floats(self.raw, self.processor).astype(float)
+            return decode_floats(self.raw, self.processor)
         return np.zeros(0)
 
     def unsigned_words(self) -> np.ndarray:

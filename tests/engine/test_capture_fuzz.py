@@ -150,3 +150,14 @@ def test_damaged_qtm_tsv_files_read_or_are_refused_naming_the_file(tmp_path):
         _read_or_refuse(path)
 
     run()
+
+
+@pytest.mark.parametrize("pattern", [b"\x00\x81\x7f", b"\x00\x00\x80\x7f", b"\x01\x00\x80\xff"])
+def test_signalling_nan_and_infinite_header_floats(tmp_path, pattern):
+    """Found by the release fuzz run: a header scale or rate whose bits are a signalling NaN (numpy warned)."""
+    for name in ("Kistler-parameters.c3d", "FP_Type3.c3d", "read_NOTworking2.c3d"):
+        data = bytearray((DATA / name).read_bytes())
+        data[13:13 + len(pattern)] = pattern
+        path = tmp_path / name
+        path.write_bytes(bytes(data))
+        _read_or_refuse(path)
