@@ -20,7 +20,10 @@ video), ``snr_db`` and ``noise`` (``white``, ``speech-shaped`` or a WAV file).
 ``audio_text`` makes an incongruent (McGurk) stimulus: its audio is heard
 while the face articulates ``text``, the two aligned at the onset of
 ``align_phone`` (default: the first vowel). Any other factor is a free label
-copied into the manifest. Which combinations
+copied into the manifest. ``expression_b`` and ``morph`` (0–100 %) make an
+expression continuum: ``expression`` at (100 − morph) % and ``expression_b``
+at morph %, both scaled by ``intensity``. ``audio`` and ``labels`` (a WAV and
+its phone labels) replace Festival with a recorded voice. Which combinations
 are made: every one (the default, ``combine = "cross"``), a listed subset
 (``combine = "list"`` with ``[[rows]]`` tables), or blocks (``[[blocks]]``,
 each crossed on its own, one after the other). Every error names the file,
@@ -46,7 +49,7 @@ from engine.errors import UserError
 from engine.formats.text_files import read_bounded_text
 
 FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise",
-                 "audio_text", "align_phone")
+                 "audio_text", "align_phone", "expression_b", "morph", "audio", "labels")
 KINDS = ("mp4", "wav", "png", "silent-mp4", "phones", "tracks")
 NOISES = ("white", "speech-shaped")
 MAX_STIMULI = 100_000
@@ -144,9 +147,14 @@ def parse_design(text: str, path: str | Path = "<design>") -> Design:
         raise where.error("name", "name must be a string")
     extra = {}
     for row in rows:
-        for factor in ("model", "noise"):
+        if ("audio" in row) != ("labels" in row):
+            raise where.error("audio" if "audio" not in row else "labels",
+                              "a recorded voice needs both factors: audio (the WAV) and labels")
+        if "audio" in row and ("voice" in row or "audio_text" in row):
+            raise where.error("audio", "a recorded voice cannot also have a Festival voice or audio_text")
+        for factor in ("model", "noise", "audio", "labels"):
             value = row.get(factor)
-            if isinstance(value, str) and (factor == "model" or value not in NOISES):
+            if isinstance(value, str) and (factor != "noise" or value not in NOISES):
                 extra[value] = (path.parent / value).resolve()
     return Design(path, checked, stimuli, _output(data.get("output", {}), where), seed, name,
                   hashlib.sha256(text.encode("utf-8")).hexdigest(), extra)
@@ -217,13 +225,17 @@ def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
             raise where.error(name, f"'{name}' level {value!r}: {what}")
 
     number = isinstance(value, int | float) and not isinstance(value, bool)
-    if name in ("text", "voice", "expression", "audio_text", "align_phone"):
+    if name in ("text", "voice", "expression", "audio_text", "align_phone", "expression_b"):
         need(isinstance(value, str) and value.strip() != "", "must be a non-empty string")
     elif name == "model":
         need(isinstance(value, str), "must be a model file name (relative to the design)")
         need((folder / value).is_file(), f"no such model file ({(folder / value)})")
-    elif name == "intensity":
+    elif name in ("intensity", "morph"):
         need(number and 0 <= value <= 100, "must be a number from 0 to 100 (%)")
+    elif name in ("audio", "labels"):
+        need(isinstance(value, str), f"must be a file name (relative to the design): the recording's "
+                                     f"{'WAV' if name == 'audio' else 'phone labels'}")
+        need((folder / value).is_file(), f"no such file ({folder / value})")
     elif name == "av_offset_ms":
         need(number and math.isfinite(value) and abs(value) <= MAX_OFFSET_MS,
              f"must be a number of ms within ±{MAX_OFFSET_MS:g}")

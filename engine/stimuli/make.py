@@ -59,8 +59,15 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     outdir = Path(outdir)
     levels = stimulus.levels
     model = _model(str(design.extra_files[levels["model"]]) if "model" in levels else "")
-    speech = speak(str(levels.get("text", "")), model, voice=levels.get("voice"), library=_library(),
-                   name=f"{design.path.name}: stimulus {stimulus.id}")
+    name = f"{design.path.name}: stimulus {stimulus.id}"
+    if "audio" in levels:               # a recorded voice: its audio unchanged, the face from its labels
+        from engine.speech.recorded import speak_recording
+
+        speech = speak_recording(design.extra_files[levels["audio"]], design.extra_files[levels["labels"]], model,
+                                 text=levels.get("text"), library=_library(), name=name)
+    else:
+        speech = speak(str(levels.get("text", "")), model, voice=levels.get("voice"), library=_library(),
+                       name=name)
     timeline, apex_ms = _with_expression(speech, model, levels)
     utterance, alignment = speech.utterance, 0.0
     if "audio_text" in levels:          # incongruent (McGurk): heard one utterance, seen another
@@ -232,15 +239,17 @@ def sha256_of(path: Path) -> str:
 
 def _with_expression(speech: Speech, model: Model, levels: dict[str, Any]) -> tuple[Timeline, float | None]:
     """The speech's timeline with the expression held over it at ``intensity`` %; and when it is at full."""
-    expression = levels.get("expression")
-    if expression is None or str(expression).lower() in ("none", "neutral"):
-        return speech.timeline, None
     intensity = float(levels.get("intensity", 100.0))
+    morph = float(levels.get("morph", 0.0)) / 100.0                  # 0: all expression, 1: all expression_b
+    weights = [(levels.get("expression"), intensity * (1.0 - morph)), (levels.get("expression_b"), intensity * morph)]
     hold = max(0.0, speech.end_ms - EXPRESSION_ONSET_MS)
-    command = HighLevelCommand(str(expression), {"at": 0.0, "amplitude": intensity, "onset": EXPRESSION_ONSET_MS,
-                                                 "apex": hold, "offset": EXPRESSION_OFFSET_MS},
-                               file="design", line=None)
-    activations = speech.activations + translate([command], _library(), model)
+    commands = [HighLevelCommand(str(name), {"at": 0.0, "amplitude": amplitude, "onset": EXPRESSION_ONSET_MS,
+                                             "apex": hold, "offset": EXPRESSION_OFFSET_MS}, file="design", line=None)
+                for name, amplitude in weights
+                if name is not None and str(name).lower() not in ("none", "neutral") and amplitude > 0]
+    if not commands:
+        return speech.timeline, None
+    activations = speech.activations + translate(commands, _library(), model)
     return Timeline(activations, model), EXPRESSION_ONSET_MS
 
 
