@@ -40,18 +40,30 @@ def test_the_cli_says_one_line_where_vtk_crashes(tmp_path):
 
 
 def _new_children(of: int, known: set[int]) -> list[int]:
-    return [c for c in _children(of) if c not in known]
+    """New children of ``of`` that already run the reader: a process freshly forked but not yet
+    exec'd must not be stopped (its parent waits for the exec, and would wait for ever)."""
+    found = []
+    for child in _children(of):
+        if child in known:
+            continue
+        try:
+            command = Path(f"/proc/{child}/cmdline").read_bytes()
+        except FileNotFoundError:
+            continue
+        if b"\0-m\0engine.formats.mesh_child\0" in command:    # the reader itself, not a fork of its parent
+            found.append(child)
+    return found
 
 
 def _freeze_the_reader_when_it_starts(of: int, known: set[int], frozen: list[int]) -> None:
     """Stop (SIGSTOP) the first new child of ``of``: from outside, a reader that never returns."""
-    for _ in range(6000):                           # up to ten minutes on a loaded machine
+    for _ in range(60000):                          # up to ten minutes on a loaded machine
         found = _new_children(of, known)
         if found:
             os.kill(found[0], signal.SIGSTOP)
             frozen.append(found[0])
             return
-        time.sleep(0.1)
+        time.sleep(0.01)                            # the reader takes far longer than this to start
 
 
 @pytest.mark.skipif(not Path("/proc/self/task").exists(), reason="reads the process tree from /proc")
