@@ -44,7 +44,8 @@ from engine.model.parameters import Parameter
 from engine.timeline.timeline import Timeline
 
 EXPRESSION_PROCEDURE = "attack-hold-release"
-AU_NAME = re.compile(r"^AU\d+")
+AU_NAME = re.compile(r"^AU[0-9]+")
+_AU_NUMBER = re.compile(r"^AU([0-9]{1,9})")      # ASCII, and few enough digits for int() to take
 ORDER = ("Neutral", "Happy", "Sad", "Surprise", "Fear", "Anger", "Disgust", "Contempt", "HappySurprise")
 """The paper's six emotions (§4) and their kin first; other expression commands follow by name."""
 AU_TIMING = {"onset": 300.0, "apex": 1000.0, "offset": 400.0}
@@ -121,5 +122,5 @@ def gallery_entries(library: Library, model: Model) -> list[GalleryEntry]:
 
 def _unit_order(name: str) -> tuple[int, str]:
     """``AU12_left`` → (12, name): action units by number, then by name."""
-    match = AU_NAME.match(name)
-    return (int(match[0][2:]) if match else 0), name
+    match = _AU_NUMBER.match(name)
+    return (int(match[1]) if match else 0), name

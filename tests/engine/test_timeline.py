@@ -221,3 +221,10 @@ def test_sampling_beyond_the_bounds_is_one_user_error(head, fps, end, words):
 def test_a_timeline_whose_keys_are_all_before_the_start_samples_the_start_frame(head):
     timeline = Timeline([act("brow_raise", [(-500, 0), (-100, 0.5)])], head)
     assert timeline.frame_times(60).tolist() == [0.0]
+
+
+@pytest.mark.parametrize("name", ["AU" + "1" * 5000, "AU\u0663"])
+def test_action_units_with_numbers_int_cannot_read_still_sort(name):
+    from engine.timeline.expressions import _unit_order
+
+    assert _unit_order(name)[1] == name
