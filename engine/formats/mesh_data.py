@@ -10,7 +10,9 @@ Texture coordinates are kept **per polygon corner** (one (u, v) pair for each
 vertex index in the flat cell array ``faces``, in the same order), because an
 OBJ file gives a vertex different coordinates on either side of a texture
 seam while the model keeps one vertex there. :meth:`MeshTexture.vertex_uv`
-gives one pair per vertex where the file has no seams.
+gives one pair per vertex where the file has no seams. (u, v) follow OBJ's
+convention: u from the image's left edge, v from its **bottom** edge, both
+0..1 (glTF's v, which runs down from the top, is turned over when read).
 
 >>> import numpy as np
 >>> texture = MeshTexture(np.array([[0, 0], [1, 0], [0, 1.0]]), [MeshMaterial("skin", "skin.png")],
