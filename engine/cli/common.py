@@ -139,6 +139,17 @@ def non_negative(text: str) -> float:
     return value
 
 
+def seed(text: str) -> int:
+    """A random seed: a whole number from 0 to 2**32 - 1."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
+    if not 0 <= value < 2**32:
+        raise argparse.ArgumentTypeError(f"'{text}' must be from 0 to 4294967295")
+    return value
+
+
 def positive_int(text: str) -> int:
     """A whole number, 1 or more."""
     try:

@@ -17,6 +17,7 @@ from engine.cli.common import (
     add_model_option,
     frame_rate,
     load_model_argument,
+    seed,
     size,
 )
 from engine.errors import UserError
@@ -54,7 +55,7 @@ def add_verbs(verbs: Any) -> None:
                    help="Cohen–Massaro dominance functions (default) or the paper's plain target interpolation")
     p.add_argument("--prosody", action="store_true",
                    help="add visual prosody: blinks, brows on accented words, nods at phrase ends")
-    p.add_argument("--seed", type=int, default=0, metavar="N", help="seed for --prosody (default 0)")
+    p.add_argument("--seed", type=seed, default=0, metavar="N", help="seed for --prosody (default 0)")
     p.add_argument("--fps", type=frame_rate, default=30.0, metavar="N", help="frames per second (default 30)")
     p.add_argument("--size", type=size, default=(640, 480), metavar="WxH", help="video size (default 640x480)")
     p.add_argument("--view", choices=VIEW_NAMES, default="front", help="camera (default front)")

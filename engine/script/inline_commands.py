@@ -96,24 +96,40 @@ def anchored_commands(script: Script, spoken_words: Sequence[TimedLabel]) -> lis
 
 
 def word_start_times(words: list[str], spoken_words: Sequence[TimedLabel]) -> list[float]:
-    """Start time of each written word, matched to the spoken words by their letters."""
+    """Start time of each written word, matched to the spoken words by their letters.
+
+    The match runs block by block (:data:`MATCH_BLOCK` written words against
+    the spoken words from where the block before ended), so a long story costs
+    in proportion to its length; a text of one block is matched as a whole.
+    """
     if not spoken_words:
         return [0.0] * len(words)
     written = [_letters(w) for w in words]
     spoken = [_letters(w.label) for w in spoken_words]
-    match_of: dict[int, int] = {}
-    for block in difflib.SequenceMatcher(a=written, b=spoken, autojunk=False).get_matching_blocks():
-        for k in range(block.size):
-            match_of[block.a + k] = block.b + k
     starts: list[float] = []
     next_spoken = 0
-    for i in range(len(words)):
-        j = match_of.get(i)
-        if j is None:                        # e.g. "2" spoken as "kaksi": the next unmatched spoken word
-            j = min(next_spoken, len(spoken_words) - 1)
-        starts.append(float(spoken_words[j].start_ms))
-        next_spoken = max(next_spoken, j + 1)
+    for first in range(0, len(written), MATCH_BLOCK):
+        block = written[first:first + MATCH_BLOCK]
+        last = first + MATCH_BLOCK >= len(written)
+        window_end = len(spoken) if last else min(len(spoken), next_spoken + 4 * MATCH_BLOCK)
+        offset = min(next_spoken, len(spoken))
+        match_of: dict[int, int] = {}
+        matcher = difflib.SequenceMatcher(a=block, b=spoken[offset:window_end], autojunk=False)
+        for found in matcher.get_matching_blocks():
+            for k in range(found.size):
+                match_of[found.a + k] = offset + found.b + k
+        for i in range(len(block)):
+            j = match_of.get(i)
+            if j is None:                    # e.g. "2" spoken as "kaksi": the next unmatched spoken word
+                j = min(next_spoken, len(spoken_words) - 1)
+            starts.append(float(spoken_words[j].start_ms))
+            next_spoken = max(next_spoken, j + 1)
     return starts
+
+
+MATCH_BLOCK = 256
+"""Written words matched at a time by :func:`word_start_times` (a number spoken as several words,
+inline commands between them: a spoken window four times as long is searched)."""
 
 
 def _letters(word: str) -> str:

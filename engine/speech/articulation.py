@@ -45,6 +45,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from engine.errors import LibraryError
+from engine.formats.text_files import read_bounded_text
 from engine.paths import LIBRARY_DIR
 from engine.speech.phone_features import DERIVED_PARAMETERS, PhoneFeatures, derived_cells
 
@@ -141,16 +142,9 @@ def load_articulation(path: str | Path | None = None) -> ArticulationTable:
     """Read an articulation table (default: the shipped Finnish one)."""
     path = Path(path) if path is not None else DEFAULT_TABLE
     try:
-        with path.open("rb") as stream:
-            data = stream.read(MAX_TABLE_BYTES + 1)
-        if len(data) > MAX_TABLE_BYTES:
-            raise LibraryError(f"the articulation table is larger than {MAX_TABLE_BYTES // (1024 * 1024)} MiB "
-                               "(is it the right file?)", file=path)
-        text = data.decode("utf-8")
+        text = read_bounded_text(path, MAX_TABLE_BYTES, LibraryError, "articulation table")
     except OSError as exc:
         raise LibraryError(f"cannot read the articulation table: {exc.strerror or exc}", file=path) from None
-    except UnicodeDecodeError:
-        raise LibraryError("the articulation table is not UTF-8 text", file=path) from None
     return parse_articulation(text, str(path))
 
 

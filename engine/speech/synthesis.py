@@ -42,6 +42,7 @@ import numpy as np
 
 from engine.errors import UserError
 from engine.formats.atomic import atomic_write_bytes, atomic_write_text
+from engine.formats.text_files import read_bounded_bytes, read_bounded_text
 from engine.speech.phone_features import PhoneFeatures
 
 PHONES_CSV_HEADER = ("start_ms", "end_ms", "phone", "word")
@@ -168,10 +169,14 @@ def decode_wav(data: bytes, source: str | Path = "<wav>") -> tuple[np.ndarray, i
     return values.astype(np.float32), rate
 
 
+MAX_WAV_BYTES = 2 * 1024**3
+"""A WAV file larger than this (2 GiB: hours of studio audio) is refused before it is read."""
+
+
 def read_wav(path: str | Path) -> tuple[np.ndarray, int]:
-    """Samples (float32 mono in [-1, 1]) and sample rate of a PCM WAV file."""
+    """Samples (float32 mono in [-1, 1]) and sample rate of a PCM WAV file (a regular file, at most 2 GiB)."""
     try:
-        data = Path(path).read_bytes()
+        data = read_bounded_bytes(path, MAX_WAV_BYTES, SynthesisError, "WAV file")
     except OSError as exc:
         raise SynthesisError(f"cannot read: {exc.strerror or exc}", file=path) from None
     return decode_wav(data, path)
@@ -209,9 +214,9 @@ def write_phones_csv(path: str | Path, utterance: Utterance) -> None:
 def read_phones_csv(path: str | Path) -> list[Segment]:
     """The phones of a phones CSV file, as :class:`Segment` s."""
     try:
-        text = Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise SynthesisError(f"cannot read: {getattr(exc, 'strerror', None) or exc}", file=path) from None
+        text = read_bounded_text(path, error=SynthesisError, what="phones CSV")
+    except OSError as exc:
+        raise SynthesisError(f"cannot read: {exc.strerror or exc}", file=path) from None
     rows = list(csv.reader(io.StringIO(text)))
     if not rows or tuple(rows[0]) != PHONES_CSV_HEADER:
         raise SynthesisError(f"not a phones CSV: the header must be {','.join(PHONES_CSV_HEADER)}",

@@ -265,3 +265,21 @@ def test_frames_cover_a_command_that_outlasts_the_audio():
     assert after.end_ms == after.timeline.end
     times = after.frame_times(25)
     assert times[-1] < after.end_ms <= times[-1] + 40.0
+
+
+def test_a_long_story_anchors_every_word_across_match_blocks():
+    """Words are matched block by block (linear in the story's length); a number spoken as two words at
+    a block's edge still leaves every later word on its own spoken word."""
+    from engine.script.inline_commands import MATCH_BLOCK
+
+    base = "Pappa ampui pallon ja Maija meni kotiin kauniina".split()
+    written = base * (3 * MATCH_BLOCK // len(base))
+    written.insert(MATCH_BLOCK - 1, "25")
+    spoken_labels = list(written)
+    at = spoken_labels.index("25")
+    spoken_labels[at:at + 1] = ["kaksikymmentä", "viisi"]
+    spoken = [Word(label, 10.0 * i, 10.0 * i + 9) for i, label in enumerate(spoken_labels)]
+    starts = word_start_times(written, spoken)
+    assert starts[MATCH_BLOCK - 1] == spoken[at].start_ms                  # "25" at "kaksikymmentä"
+    assert starts[MATCH_BLOCK:] == [w.start_ms for w in spoken[at + 2:]]   # every later word on its own
+    assert starts[:MATCH_BLOCK - 1] == [w.start_ms for w in spoken[:at]]

@@ -191,6 +191,7 @@ def test_inline_commands_without_a_word_tier_are_refused(tmp_path, head):
     (["--labels", "x.lab", "-o", "x.xml", "Hei"], "--labels needs --audio"),
     (["--audio", "x.wav", "-o", "x.xml"], "--audio needs --labels"),
     (["--audio", "x.wav", "--labels", "y", "--voice", "kal_diphone", "-o", "x.xml"], "--voice applies to Festival"),
+    (["hei", "--prosody", "--seed", "-1", "-o", "x.wav"], "'-1' must be from 0 to 4294967295"),
 ])
 def test_options_that_do_not_go_together(arguments, message):
     assert message in assert_user_error(run("say", *arguments))
