@@ -44,41 +44,41 @@ def _mutations(size: int, near: int):
     return st.lists(st.tuples(offset, st.binary(min_size=1, max_size=4)), min_size=1, max_size=8)
 
 
+def _damaged(original: bytes, changes, cut) -> bytes:
+    data = bytearray(original)
+    for at, new in changes:
+        data[at:at + len(new)] = new
+    return bytes(data[:cut] if cut is not None else data)
+
+
+TEXT_TOKENS = [b"\t", b"\n", b",", b" ", b"nan", b"inf", b"-1", b"1e308", b"1e-300", b"0", b"", b"\r\n", b"\x00",
+               b"\xff"]
+
+
 @pytest.mark.parametrize("name", C3D_FILES)
-def test_damaged_c3d_files_read_or_are_refused_naming_the_file(name, tmp_path):
+@FUZZ
+@given(draw=st.data())
+def test_damaged_c3d_files_read_or_are_refused_naming_the_file(name, tmp_path, draw):
     original = (DATA / name).read_bytes()
+    changes = draw.draw(_mutations(len(original), 3072), label="changes")
+    cut = draw.draw(st.one_of(st.none(), st.integers(0, len(original))), label="cut")
     path = tmp_path / name
-
-    @FUZZ
-    @given(changes=_mutations(len(original), 3072), cut=st.one_of(st.none(), st.integers(0, len(original))))
-    def run(changes, cut):
-        data = bytearray(original)
-        for at, new in changes:
-            data[at:at + len(new)] = new
-        path.write_bytes(bytes(data[:cut] if cut is not None else data))
-        _read_or_refuse(path)
-
-    run()
+    path.write_bytes(_damaged(original, changes, cut))
+    _read_or_refuse(path)
 
 
 @pytest.mark.parametrize("name", TRC_FILES)
-def test_damaged_trc_files_read_or_are_refused_naming_the_file(name, tmp_path):
+@FUZZ
+@given(draw=st.data())
+def test_damaged_trc_files_read_or_are_refused_naming_the_file(name, tmp_path, draw):
     original = (DATA / name).read_bytes()
+    tokens = st.sampled_from([*TEXT_TOKENS, b"PathFileType", b"NumFrames"])
+    changes = draw.draw(st.lists(st.tuples(st.integers(0, len(original) - 1), tokens), min_size=1, max_size=8),
+                        label="changes")
+    cut = draw.draw(st.one_of(st.none(), st.integers(0, len(original))), label="cut")
     path = tmp_path / name
-    tokens = st.sampled_from([b"\t", b"\n", b",", b" ", b"nan", b"inf", b"-1", b"1e308", b"0", b"", b"\r\n",
-                              b"PathFileType", b"NumFrames", b"\x00", b"\xff"])
-
-    @FUZZ
-    @given(changes=st.lists(st.tuples(st.integers(0, len(original) - 1), tokens), min_size=1, max_size=8),
-           cut=st.one_of(st.none(), st.integers(0, len(original))))
-    def run(changes, cut):
-        data = bytearray(original)
-        for at, new in changes:
-            data[at:at + 1] = new
-        path.write_bytes(bytes(data[:cut] if cut is not None else data))
-        _read_or_refuse(path)
-
-    run()
+    path.write_bytes(_damaged(original, [(at, new) for at, new in changes], cut))
+    _read_or_refuse(path)
 
 
 @pytest.mark.parametrize("value", [float("nan"), float("inf"), -1.0, 1e30, 2.5])
@@ -127,29 +127,23 @@ def test_header_numbers_out_of_any_range(tmp_path, fmt, key, value, message):
         read_marker_file(path)
 
 
-def test_damaged_qtm_tsv_files_read_or_are_refused_naming_the_file(tmp_path):
-    """No public QTM export was found: the file is the sample recording's own TSV (engine.mocap.sample_files)."""
+@FUZZ
+@given(draw=st.data())
+def test_damaged_qtm_tsv_files_read_or_are_refused_naming_the_file(tmp_path, draw):
+    """No public QTM export was found: the file is one engine.mocap.sample_files writes."""
     from engine.mocap.sample_files import write_qtm_tsv
 
     positions = np.random.default_rng(0).normal(0, 50, (6, 4, 3))
     positions[2, 1] = 0.0
     source = write_qtm_tsv(tmp_path / "source.tsv", ["8.3", "8.4", "2.1", "9.3"], positions, rate_hz=60)
     original = Path(source).read_bytes()
+    tokens = st.sampled_from([*TEXT_TOKENS, b"EXT", b"NO_OF_FRAMES", b"MARKER_NAMES", b"EVENT\tx\t1e308\t1"])
+    changes = draw.draw(st.lists(st.tuples(st.integers(0, len(original) - 1), tokens), min_size=1, max_size=8),
+                        label="changes")
+    cut = draw.draw(st.one_of(st.none(), st.integers(0, len(original))), label="cut")
     path = tmp_path / "take.tsv"
-    tokens = st.sampled_from([b"\t", b"\n", b",", b" ", b"nan", b"inf", b"-1", b"1e300", b"1e-300", b"0", b"",
-                              b"EXT", b"NO_OF_FRAMES", b"MARKER_NAMES", b"EVENT\tx\t1e308\t1", b"\x00", b"\xff"])
-
-    @FUZZ
-    @given(changes=st.lists(st.tuples(st.integers(0, len(original) - 1), tokens), min_size=1, max_size=8),
-           cut=st.one_of(st.none(), st.integers(0, len(original))))
-    def run(changes, cut):
-        data = bytearray(original)
-        for at, new in changes:
-            data[at:at + 1] = new
-        path.write_bytes(bytes(data[:cut] if cut is not None else data))
-        _read_or_refuse(path)
-
-    run()
+    path.write_bytes(_damaged(original, changes, cut))
+    _read_or_refuse(path)
 
 
 @pytest.mark.parametrize("pattern", [b"\x00\x81\x7f", b"\x00\x00\x80\x7f", b"\x01\x00\x80\xff"])
