@@ -33,6 +33,8 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from engine.processes import die_with_parent, with_parent_death_signal
+
 #: Objects (groups and datasets) a probe visits at most: our files hold a few hundred.
 MAX_OBJECTS = 100_000
 MAX_DEPTH = 32
@@ -114,6 +116,7 @@ def _probe_forked(path: Path, budget: int, allowed_filters: frozenset[int], seco
         warnings.simplefilter("ignore", DeprecationWarning)       # Python 3.12 warns of the idle BLAS threads
         pid = os.fork()
     if pid == 0:                        # the child: read, report, and leave without running any cleanup
+        die_with_parent()
         status = 0
         gc.disable()                    # collecting would copy the parent's pages, for nothing
         faulthandler.disable()          # a crash is reported by the parent in one line, not as a stack dump
@@ -164,7 +167,7 @@ def _probe_spawned(path: Path, budget: int, allowed_filters: frozenset[int], sec
     command = [sys.executable, "-I", str(Path(__file__).resolve()), str(path), str(budget),
                ",".join(map(str, sorted(allowed_filters)))]
     try:
-        done = subprocess.run(command, capture_output=True, timeout=seconds, check=False)
+        done = subprocess.run(with_parent_death_signal(command), capture_output=True, timeout=seconds, check=False)
     except subprocess.TimeoutExpired:
         raise ProbeFailed(f"reading it did not finish in {seconds:.0f} s (the HDF5 library hangs on it)") from None
     status = done.returncode
