@@ -6,8 +6,9 @@ child process, so a crash or hang there must still end in our error). The
 mutations overwrite, insert, delete and cut bytes, and insert numbers that
 make counts huge, negative or non-finite.
 
-CI size: ``AP_FUZZ_EXAMPLES`` inputs per format (default 200; legacy VTK,
-which starts a process per input, a tenth of that). Release check:
+CI size: ``AP_FUZZ_EXAMPLES`` inputs per format (default 200; legacy VTK (a
+polygon surface and a volume grid), which starts a process per input, a tenth
+of that). Release check:
 ``AP_FUZZ_EXAMPLES=10000 AP_FUZZ_REPORT=counts.txt pytest tests/engine/test_mesh_fuzz.py``
 (with ``AP_FUZZ_REPORT`` each format appends a line: inputs tried, read,
 refused with our error; see docs/meshes.md for the last such run).
@@ -40,6 +41,9 @@ OBJ = (b"mtllib m.mtl\no head\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 
        b"g skin\nusemtl skin\nf 1/1/1 2/2/1 3/3/1\nf -4 -2 -1\ng eye\nf 1//1 3//1 4//1\n")
 VTK_LEGACY = (b"# vtk DataFile Version 3.0\nsquare\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
               b"0 0 0 1 0 0 1 1 0 0 1 0\nPOLYGONS 2 8\n3 0 1 2\n3 0 2 3\n")
+VTK_GRID = (b"# vtk DataFile Version 3.0\ntet\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
+            b"0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n")
+VTK_SEEDS = {"square.vtk": VTK_LEGACY, "grid.vtk": VTK_GRID}
 
 
 def _texcoord_ply() -> bytes:
@@ -144,18 +148,19 @@ def test_own_readers_survive_mutated_files(name, tmp_path_factory):
     _report(name, counts)
 
 
-def test_vtk_in_a_child_survives_mutated_files(tmp_path_factory):
+@pytest.mark.parametrize("name", sorted(VTK_SEEDS))
+def test_vtk_in_a_child_survives_mutated_files(name, tmp_path_factory):
     tmp = tmp_path_factory.mktemp("fuzz")
     seed: Counter = Counter()
-    _check("square.vtk", VTK_LEGACY, tmp, seed)
+    _check(name, VTK_SEEDS[name], tmp, seed)
     assert seed["read"] == 1, "the seed itself reads"
     counts: Counter = Counter()
 
     @settings(max_examples=max(EXAMPLES // 10, 5), deadline=None, derandomize=True, database=None,
               suppress_health_check=[HealthCheck.too_slow])
-    @given(mutated(VTK_LEGACY))
+    @given(mutated(VTK_SEEDS[name]))
     def run(data: bytes) -> None:
-        _check("square.vtk", data, tmp, counts)
+        _check(name, data, tmp, counts)
 
     run()
-    _report("square.vtk (VTK in a child process)", counts)
+    _report(f"{name} (VTK in a child process)", counts)
