@@ -8,6 +8,13 @@ signal set: the kernel sends it SIGKILL when its parent dies. util-linux's
 ``setpriv --pdeathsig KILL --`` sets it and then runs the program (util-linux
 is essential on Debian, so it is always there).
 
+The kernel sends the signal when the *thread* that started the child ends,
+not only the process: start a child from a thread that lives as long as the
+child is needed. Ours do — the thread that starts Festival or ffmpeg waits
+for it, and worker pools are started by the thread that waits for their
+results. (The mesh reader's child watches a pipe instead:
+``engine/formats/mesh_child.py``.)
+
 >>> command = with_parent_death_signal(["ffmpeg", "-version"])
 >>> command[-2:]
 ['ffmpeg', '-version']

@@ -122,7 +122,7 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
                 destination.write_text(tracks_csv_text(timeline.parameters, frame_times, values), encoding="utf-8")
     check = _check(paths, utterance.samples * gain, clean, mask, rate, layout.audio_start_ms,
                    float(levels["snr_db"]) if "snr_db" in levels else None, gain)
-    check.update(_check_video(paths, values, fps, layout.video_start_ms))
+    check.update(_check_video(paths, vertex_motion(model, values), fps, layout.video_start_ms))
     if check.get("video_ok") is False:
         check["ok"] = False
         check["problem"] = "; ".join(filter(None, [check.get("problem", ""), "the video's frames move "
@@ -187,21 +187,36 @@ def _check(paths: dict[str, Path], speech: np.ndarray, clean: np.ndarray, mask: 
             "measured_snr_db": measured, "problem": "; ".join(problems)}
 
 
-def _check_video(paths: dict[str, Path], values: np.ndarray, fps: float, video_start_ms: float) -> dict[str, Any]:
-    """Measure the written video: where its frames move against where the face's parameters move.
+def vertex_motion(model: Model, values: np.ndarray) -> np.ndarray:
+    """How far the face moves into each frame (``values``: frames × the model's parameters, in tree order):
+    the mean distance its vertices travel from the frame before (mm; 0 for the first frame). What a camera
+    sees move, unlike a parameter's value (the tongue behind closed lips moves no pixel)."""
+    deformer = model.deformer()
+    previous, motion = None, np.zeros(len(values))
+    for n, row in enumerate(values):
+        positions = deformer.deform(row)
+        if previous is not None:
+            motion[n] = float(np.linalg.norm(positions - previous, axis=1).mean())
+        previous = positions
+    return motion
+
+
+def _check_video(paths: dict[str, Path], motion: np.ndarray, fps: float, video_start_ms: float) -> dict[str, Any]:
+    """Measure the written video: where its frames move against where the face moves.
 
     The motion of the frames (mean absolute change of the pixels from one frame to the next) is
-    cross-correlated with the motion of the parameters (summed absolute change); they must coincide to
-    the frame, so the face starts where the clip says (``video_start_ms``) in the file as written.
+    cross-correlated with the motion of the face (``motion``: how far its vertices travel into each
+    frame); they must coincide to the frame, so the face starts where the clip says
+    (``video_start_ms``) in the file as written. Clips shorter than 25 frames are too short to tell.
     """
     kind = "mp4" if "mp4" in paths else "silent-mp4" if "silent-mp4" in paths else None
-    if kind is None or len(values) < 3:
+    if kind is None or len(motion) < 25:
         return {}
     from engine.outputs.video_probe import read_frames
 
     frames = read_frames(paths[kind]).astype(np.float32)
     moving_pixels = np.abs(np.diff(frames, axis=0)).mean(axis=(1, 2, 3))
-    moving_values = np.abs(np.diff(values, axis=0)).sum(axis=1)
+    moving_values = motion[1:]
     count = min(len(moving_pixels), len(moving_values))
     if count < 3 or not moving_values[:count].any() or not moving_pixels[:count].any():
         return {"measured_video_lag_frames": None}

@@ -269,9 +269,9 @@ def test_mcgurk_pairs_are_aligned_at_the_vowel(tmp_path, head):
 
 @needs_festival
 @pytest.mark.slow
-def test_the_video_check_sees_frames_shifted_off_the_face(tmp_path):
-    """The check measures the file: frames that moved two frames off the parameters are caught."""
-    from engine.stimuli.make import _check_video
+def test_the_video_check_sees_frames_shifted_off_the_face(tmp_path, head):
+    """The check measures the file: frames that moved two frames off the face are caught."""
+    from engine.stimuli.make import _check_video, vertex_motion
 
     design = _write(tmp_path / "d.toml", '[factors]\ntext = ["Pappa ampui pallon."]\n[output]\n'
                     'kinds = ["silent-mp4", "tracks"]\nsize = "96x72"\nfps = 25\n')
@@ -281,6 +281,9 @@ def test_the_video_check_sees_frames_shifted_off_the_face(tmp_path):
     table = np.genfromtxt(out / row["file_tracks"], delimiter=",", names=True)
     values = np.column_stack([table[name] for name in table.dtype.names[1:]])
     video = {"silent-mp4": out / row["file_silent-mp4"]}
-    assert _check_video(video, values, 25.0, 0.0) == {"measured_video_lag_frames": 0, "video_ok": True}
+    assert list(table.dtype.names[1:]) == head.parameters.names
+    assert _check_video(video, vertex_motion(head, values), 25.0, 0.0) == {"measured_video_lag_frames": 0,
+                                                                            "video_ok": True}
     late = np.vstack([np.repeat(values[:1], 2, axis=0), values[:-2]])        # the face two frames later
-    assert _check_video(video, late, 25.0, 0.0) == {"measured_video_lag_frames": -2, "video_ok": False}
+    assert _check_video(video, vertex_motion(head, late), 25.0, 0.0) == {"measured_video_lag_frames": -2,
+                                                                         "video_ok": False}
