@@ -272,7 +272,7 @@ def test_a_long_story_anchors_every_word_across_match_blocks():
     a block's edge still leaves every later word on its own spoken word."""
     from engine.script.inline_commands import MATCH_BLOCK
 
-    base = "Pappa ampui pallon ja Maija meni kotiin kauniina".split()
+    base = ["Pappa", "ampui", "pallon", "ja", "Maija", "meni", "kotiin", "kauniina"]
     written = base * (3 * MATCH_BLOCK // len(base))
     written.insert(MATCH_BLOCK - 1, "25")
     spoken_labels = list(written)

@@ -346,7 +346,7 @@ def test_read_wav_errors(tmp_path):
     bad.write_bytes(b"not a wave at all")
     with pytest.raises(SynthesisError, match=r"bad\.wav: not a PCM WAV"):
         read_wav(bad)
-    with pytest.raises(SynthesisError, match="missing.wav: no such file"):
+    with pytest.raises(SynthesisError, match=r"missing\.wav: no such file"):
         read_wav(tmp_path / "missing.wav")
 
 
