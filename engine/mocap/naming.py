@@ -30,6 +30,7 @@ import re
 from pathlib import Path
 
 from engine.formats.atomic import atomic_write_text
+from engine.formats.text_files import read_bounded_bytes
 from engine.mocap.errors import LabelFileError, MocapError
 from engine.model.landmarks import landmark_sort_key
 
@@ -88,13 +89,13 @@ def read_mapping(path: str | Path) -> dict[str, str]:
     """Read a mapping file: ``label = id`` lines; ``-`` as the id drops the marker."""
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8-sig")
-    except FileNotFoundError:
-        raise LabelFileError("no such file", file=path) from None
-    except UnicodeDecodeError:
-        text = path.read_text(encoding="latin-1")
+        data = read_bounded_bytes(path, error=LabelFileError, what="mapping file")
     except OSError as exc:
         raise LabelFileError(f"cannot read: {exc.strerror or exc}", file=path) from None
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        text = data.decode("latin-1")
     mapping: dict[str, str] = {}
     targets: dict[str, int] = {}
     for number, raw in enumerate(text.splitlines(), start=1):

@@ -60,6 +60,8 @@ def read_marker_file(path: str | Path, format: str = "auto", csv_layout: CsvLayo
         raise MarkerFileError("no such file", file=path)
     if path.is_dir():
         raise MarkerFileError("is a folder, not a marker file", file=path)
+    if not path.is_file():
+        raise MarkerFileError("is not a regular file (a device or a pipe?), not a marker file", file=path)
     fmt = detect_format(path) if format == "auto" else format
     if fmt == "tsv":
         return read_qtm_tsv(path)

@@ -19,6 +19,7 @@ from types import ModuleType
 
 import numpy as np
 
+from engine.formats.text_files import read_bounded_bytes
 from engine.mocap.errors import MarkerFileError
 
 _text_table: ModuleType | None
@@ -28,10 +29,14 @@ except ImportError:  # pragma: no cover - exercised where the extension is not b
     _text_table = None
 
 
+MAX_TEXT_TABLE_BYTES = 4 << 30
+"""A text marker file larger than this (4 GiB: hours of capture at hundreds of markers) is refused unread."""
+
+
 def read_text_lines(path: Path) -> list[str]:
     """The file's lines without line ends (UTF-8, else Latin-1); a trailing empty line is dropped."""
     try:
-        data = path.read_bytes()
+        data = read_bounded_bytes(path, MAX_TEXT_TABLE_BYTES, MarkerFileError, "marker file")
     except OSError as exc:
         raise MarkerFileError(f"cannot read: {exc.strerror or exc}", file=path) from None
     if b"\0" in data[:4096]:

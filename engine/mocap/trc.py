@@ -71,7 +71,7 @@ def read_trc(path: str | Path) -> Recording:
     n_columns = 2 + 3 * n_markers
     data = _without_trailing_empty_cells(lines[5:], n_columns)
     tab = any("\t" in ln for ln in data[:5])
-    ends_with_newline = path.read_bytes()[-1:] in (b"\n", b"\r")
+    ends_with_newline = _last_byte(path) in (b"\n", b"\r")
     table = parse_rows(data, 6, n_columns, path, delimiter="\t" if tab else None, empty_is_missing=True,
                        short_rows_at=3, last_line_complete=ends_with_newline)
     notes = []
@@ -115,3 +115,16 @@ def _whole(text: str, key: str, path: Path) -> int:
     if n < 0 or n != float(text):
         raise MarkerFileError(f"{key} '{text}' is not a whole number", file=path, line=3)
     return n
+
+
+def _last_byte(path: Path) -> bytes:
+    """The file's last byte (without reading the rest again)."""
+    try:
+        with path.open("rb") as stream:
+            stream.seek(0, 2)
+            if stream.tell() == 0:
+                return b""
+            stream.seek(-1, 2)
+            return stream.read(1)
+    except OSError as exc:
+        raise MarkerFileError(f"cannot read: {exc.strerror or exc}", file=path) from None

@@ -501,3 +501,20 @@ def test_a_point_scale_that_disagrees_with_the_header_yields_to_it(tmp_path):
     rec = read_marker_file(path)
     np.testing.assert_array_equal(rec.positions, read_marker_file(DATA / "read_NOTworking2.c3d").positions)
     assert any("POINT:SCALE says 0.05, the header 0.1449" in note for note in rec.notes)
+
+
+@pytest.mark.parametrize("kind", ["device", "fifo"])
+def test_a_device_or_a_pipe_is_refused_unread(tmp_path, kind):
+    """/dev/zero would be read without end, a pipe with no writer would block: both are refused at once."""
+    from tests.engine.cli_runner import assert_user_error, run
+
+    if kind == "device":
+        path = Path("/dev/zero")
+    else:
+        path = tmp_path / "take.tsv"
+        os.mkfifo(path)
+    line = assert_user_error(run("mocap", "import", path, "-o", tmp_path / "s.h5"))
+    assert "not a regular file" in line and str(path) in line
+    sample = Path(__file__).parent / "data" / "mocap" / "qtm_sample.tsv"
+    mapping = assert_user_error(run("mocap", "import", sample, "--map", "/dev/zero", "-o", tmp_path / "s.h5"))
+    assert "/dev/zero: not a regular file" in mapping
