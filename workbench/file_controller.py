@@ -13,13 +13,14 @@ the name stored inside it.
 
 from __future__ import annotations
 
+import threading
 import time
 import weakref
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from PySide6.QtCore import QSettings
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtCore import QEventLoop, QSettings, Qt
+from PySide6.QtWidgets import QApplication, QFileDialog, QMessageBox, QProgressDialog
 
 import engine
 from engine.formats.mesh_io import import_mesh
@@ -41,6 +42,8 @@ MODEL_FILTER = "Model descriptions (*.xml);;All files (*)"
 MESH_FILTER = ("Meshes (*.obj *.ply *.stl *.vtk *.vtp *.vtu *.off *.gltf *.glb);;"
                "All files (*)")
 METRE_FORMATS = (".gltf", ".glb")  # glTF is in metres by that format's convention; everything else mm
+MESH_BUSY_AFTER_S = 0.3
+"""A mesh read that takes longer than this (s) shows a busy dialog while the window keeps drawing."""
 MESSAGE_MS = 5000
 Button = QMessageBox.StandardButton
 
@@ -119,7 +122,7 @@ class FileController:
         path = Path(path)
         scale = 1000.0 if path.suffix.lower() in METRE_FORMATS else None
         try:
-            model = import_mesh(path)
+            model = self._read_mesh_responsively(path)
         except engine.UserError as exc:
             QMessageBox.critical(self.window, f"{TITLE}: cannot import mesh", str(exc))
             return False
@@ -129,6 +132,36 @@ class FileController:
         self.show_message(f"New model from {path.name}: {model.n_vertices:,} vertices, "
                           f"{len(model.parts)} parts (units: {units})")
         return True
+
+    def _read_mesh_responsively(self, path: Path) -> engine.Model:
+        """``import_mesh(path)`` on a thread of its own: the window keeps drawing and shows a busy dialog
+        while a slow file (a VTK format read in a child process, stopped after its time limit) is read."""
+        outcome: dict[str, object] = {}
+
+        def read() -> None:
+            try:
+                outcome["model"] = import_mesh(path)
+            except BaseException as error:          # handed back to the GUI thread below
+                outcome["error"] = error
+
+        reader = threading.Thread(target=read, name=f"read {path.name}", daemon=True)
+        reader.start()
+        reader.join(MESH_BUSY_AFTER_S)
+        if reader.is_alive():
+            busy = QProgressDialog(f"Reading {path.name}…", "", 0, 0, self.window)
+            busy.setCancelButton(None)               # the child process stops itself at its time limit
+            busy.setWindowModality(Qt.WindowModality.WindowModal)
+            busy.setMinimumDuration(0)
+            busy.setWindowTitle(TITLE)
+            busy.show()
+            while reader.is_alive():
+                QApplication.processEvents(QEventLoop.ProcessEventsFlag.AllEvents, 50)
+                reader.join(0.02)
+            busy.close()
+            busy.deleteLater()
+        if "error" in outcome:
+            raise outcome["error"]              # type: ignore[misc]
+        return outcome["model"]                 # type: ignore[return-value]
 
     def open_dialog(self) -> bool:
         """Ask for a model description and open it; ``False`` if cancelled or unreadable."""
