@@ -185,7 +185,8 @@ def _analog_words(header: C3dHeader, params: C3dParameters, point_rate: float, n
 
 
 def _frame_count(header: C3dHeader, params: C3dParameters, available: int, notes: list[str], path: Path) -> int:
-    """The declared frame count that the file's data hold; one frame fewer than declared is read with a note."""
+    """The declared frame count that the file's data hold; a file cut short is read as far as it goes, with a
+    note (as the reference reader reads it, but saying so)."""
     declared = []
     start, end = params.get("TRIAL:ACTUAL_START_FIELD"), params.get("TRIAL:ACTUAL_END_FIELD")
     if start is not None and end is not None and start.kind == end.kind == 2 and len(start.raw) >= 4 \
@@ -210,10 +211,14 @@ def _frame_count(header: C3dHeader, params: C3dParameters, available: int, notes
                          f"{n} frames read, as the data hold")
         return n
     wanted = min(declared)
+    if available < 1:
+        raise MarkerFileError(f"the data end before the first of {wanted} frames (truncated?)", file=path)
     if wanted - available == 1:
         notes.append(f"the data end one frame early ({available} of {wanted} frames); {available} read")
-        return available
-    raise MarkerFileError(f"the data end after {available} of {wanted} frames (truncated?)", file=path)
+    else:                               # a cut file: what is there is read, and the report says so
+        notes.append(f"the file is cut short: its data end after {available} of the {wanted} frames it "
+                     f"declares; the {available} there are read")
+    return available
 
 
 def _first_frame(header: C3dHeader, params: C3dParameters) -> int:

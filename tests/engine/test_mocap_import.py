@@ -407,9 +407,9 @@ def test_c3d_errors(tmp_path, motion):
     path = tmp_path / "bad.c3d"
     write_c3d(path, IDS, motion[2])
     data = path.read_bytes()
-    path.write_bytes(data[:len(data) - 3000])
-    with pytest.raises(MarkerFileError, match=r"bad.c3d: the data end after \d+ of 90 frames \(truncated\?\)"):
-        read_marker_file(path)
+    path.write_bytes(data[:len(data) - 3000])                          # cut short: what is there is read
+    cut = read_marker_file(path)
+    assert 0 < cut.n_frames < 90 and any(f"after {cut.n_frames} of the 90 frames" in n for n in cut.notes)
     path.write_bytes(data[:300])
     with pytest.raises(MarkerFileError, match=r"bad.c3d: "):
         read_marker_file(path, format="c3d")
