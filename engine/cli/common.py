@@ -141,23 +141,21 @@ def non_negative(text: str) -> float:
 
 def seed(text: str) -> int:
     """A random seed: a whole number from 0 to 2**32 - 1."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
-    if not 0 <= value < 2**32:
-        raise argparse.ArgumentTypeError(f"'{text}' must be from 0 to 4294967295")
-    return value
+    return _whole_number(text, 0, 2**32 - 1, "must be from 0 to 4294967295")
 
 
 def positive_int(text: str) -> int:
     """A whole number, 1 or more."""
+    return _whole_number(text, 1, None, "must be at least 1")
+
+
+def _whole_number(text: str, lowest: int, highest: int | None, out_of_range: str) -> int:
     try:
         value = int(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"'{text}' must be at least 1")
+    if value < lowest or (highest is not None and value > highest):
+        raise argparse.ArgumentTypeError(f"'{text}' {out_of_range}")
     return value
 
 
