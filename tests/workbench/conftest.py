@@ -174,3 +174,18 @@ def unexpected_dialogs(monkeypatch):
 def window(make_window, synthetic_model_path):
     """The main window on the synthetic head."""
     return make_window(synthetic_model_path)
+
+
+@pytest.fixture
+def captured_errors(monkeypatch):
+    """QMessageBox.critical records its message instead of blocking the test."""
+    from PySide6.QtWidgets import QMessageBox
+
+    errors: list[tuple[str, str]] = []
+
+    def critical(parent, title, text, *args, **kwargs):
+        errors.append((title, text))
+        return QMessageBox.StandardButton.Ok
+
+    monkeypatch.setattr(QMessageBox, "critical", staticmethod(critical))
+    return errors

@@ -5,24 +5,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from PySide6.QtCore import Qt
-from PySide6.QtWidgets import QFileDialog, QMessageBox
+from PySide6.QtWidgets import QFileDialog
 from vtkmodules.vtkCommonCore import VTK_COLOR_MODE_DIRECT_SCALARS
 
 import engine
 from tests.workbench.synthetic_workbench_model import SYNTHETIC_PARAMETERS, build_synthetic_model
-
-
-@pytest.fixture
-def captured_errors(monkeypatch):
-    """QMessageBox.critical records its message instead of blocking the test."""
-    errors: list[tuple[str, str]] = []
-
-    def critical(parent, title, text, *args, **kwargs):
-        errors.append((title, text))
-        return QMessageBox.StandardButton.Ok
-
-    monkeypatch.setattr(QMessageBox, "critical", staticmethod(critical))
-    return errors
 
 
 def test_window_opens_on_the_model_and_shows_the_mesh(window):

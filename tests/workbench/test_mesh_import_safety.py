@@ -2,23 +2,7 @@
 
 from __future__ import annotations
 
-import pytest
-from PySide6.QtWidgets import QMessageBox
-
 from tests.engine.test_mesh_child import SEGFAULTING_VTK
-
-
-@pytest.fixture
-def captured_errors(monkeypatch):
-    """QMessageBox.critical records its message instead of blocking the test."""
-    errors: list[tuple[str, str]] = []
-
-    def critical(parent, title, text, *args, **kwargs):
-        errors.append((title, text))
-        return QMessageBox.StandardButton.Ok
-
-    monkeypatch.setattr(QMessageBox, "critical", staticmethod(critical))
-    return errors
 
 
 def test_a_file_that_segfaults_vtk_leaves_the_window_and_its_model(window, tmp_path, captured_errors):
