@@ -22,6 +22,7 @@ True
 from __future__ import annotations
 
 import hashlib
+import math
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
@@ -35,6 +36,7 @@ from engine.formats.atomic import atomic_files, finish_interrupted_writes
 from engine.formats.hdf5_reading import HDF5Reader
 from engine.formats.hdf5_reading import text as hdf5_text
 from engine.formats.xml_io import parse_xml, source_line, validate
+from engine.model.identity_record import IdentityRecord
 from engine.model.landmarks import FEATURE_POINTS
 from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
@@ -161,12 +163,32 @@ def load_model(path: str | Path | None = None) -> Model:
             raise ModelFileError(f"landmark {key}: vertex {v} is outside the mesh (0..{n - 1})",
                                  file=path, line=landmark_lines[key])
     desc = root.findtext("description") or ""
+    identity = _read_identity(root, path)
     try:
-        return Model(vertices, faces, parts, vertex_part, tree, regions, landmarks,
-                     name=_required(root, "name", path), description=desc.strip(), part_colors=colors,
-                     vertex_colors=colors_rgb)
+        model = Model(vertices, faces, parts, vertex_part, tree, regions, landmarks,
+                      name=_required(root, "name", path), description=desc.strip(), part_colors=colors,
+                      vertex_colors=colors_rgb)
     except UserError as exc:
         raise ModelFileError(exc.message, file=arrays_path) from None
+    model.identity = identity
+    return model
+
+
+def _read_identity(root: etree._Element, path: Path) -> IdentityRecord | None:
+    """The ``<identity>`` record, if any: finite values, each name once."""
+    el = root.find("identity")
+    if el is None:
+        return None
+    values: dict[str, float] = {}
+    for v in el.findall("value"):
+        name = _required(v, "name", path)
+        if name in values:
+            raise ModelFileError(f"identity value '{name}' is given twice", file=path, line=source_line(v))
+        number = float(_required(v, "value", path))
+        if not math.isfinite(number):
+            raise ModelFileError(f"identity value '{name}' must be a finite number", file=path, line=source_line(v))
+        values[name] = number
+    return IdentityRecord(values, _required(el, "source", path))
 
 
 def _child(el: etree._Element, tag: str, path: Path) -> etree._Element:
@@ -353,6 +375,10 @@ def model_to_xml(model: Model, arrays_name: str, generation: str | None = None) 
             el = etree.SubElement(lm, "landmark", id=key, vertex=str(model.landmarks[key]))
             if key in FEATURE_POINTS:
                 el.set("description", FEATURE_POINTS[key])
+    if model.identity is not None:
+        ident = etree.SubElement(root, "identity", source=_xml_text(model.identity.source, "the identity's source"))
+        for name, value in model.identity.values.items():
+            etree.SubElement(ident, "value", name=_xml_text(name, "an identity parameter name"), value=repr(value))
     etree.indent(root, space="  ")
     return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
 

@@ -22,6 +22,7 @@ import numpy.typing as npt
 
 from engine.errors import ParameterError, UserError
 from engine.model.cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
+from engine.model.identity_record import IdentityRecord
 from engine.model.parameters import NAME_PATTERN, Parameter, ParameterTree
 
 if TYPE_CHECKING:
@@ -116,6 +117,7 @@ class Model:
         self.description = description
         self.part_colors = dict(part_colors or {})
         self.vertex_colors = None if vertex_colors is None else np.asarray(vertex_colors, dtype=np.uint8)
+        self.identity: IdentityRecord | None = None       # who the head is (engine.identity), if made as one
         self.revision = 0
         self._deformer: Deformer | None = None
         self.validate()
@@ -285,7 +287,9 @@ class Model:
                      None if self.vertex_colors is None else self.vertex_colors[order])
 
     def copy(self) -> Model:
-        return Model(self.vertices.copy(), self.faces.copy(), list(self.parts), self.vertex_part.copy(),
-                     self.parameters.copy(), {k: r.copy() for k, r in self.regions.items()},
-                     dict(self.landmarks), self.name, self.description, dict(self.part_colors),
-                     None if self.vertex_colors is None else self.vertex_colors.copy())
+        copied = Model(self.vertices.copy(), self.faces.copy(), list(self.parts), self.vertex_part.copy(),
+                       self.parameters.copy(), {k: r.copy() for k, r in self.regions.items()},
+                       dict(self.landmarks), self.name, self.description, dict(self.part_colors),
+                       None if self.vertex_colors is None else self.vertex_colors.copy())
+        copied.identity = self.identity
+        return copied

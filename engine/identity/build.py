@@ -1,0 +1,115 @@
+"""Making a head for an identity: the default head's mesh moved by the identity's targets, its rig carried over.
+
+>>> from engine.identity import Identity, make_identity_head
+>>> head = make_identity_head(Identity({"sex": 1.0, "age": 60}))
+>>> head.identity.value("age"), head.n_vertices == make_identity_head(Identity()).n_vertices
+(60.0, True)
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from engine.identity.carry_over import Similarity, carry_rig_over, similarity
+from engine.identity.errors import IdentityError
+from engine.identity.lip_closure import refit_closure
+from engine.identity.parameters import Identity
+from engine.identity.targets import IdentityTargets, shipped_targets
+from engine.identity.weights import identity_displacement
+from engine.model import Model
+from engine.paths import reference_poses_path
+
+GENERATED_NEIGHBOURS = 8      # made vertices (not MakeHuman's) follow this many nearest MakeHuman vertices
+
+
+@cache
+def default_head_sources() -> np.ndarray:
+    """For each default-head vertex, its MakeHuman hm08 index (−1 for vertices the derivation made)."""
+    import h5py
+
+    with h5py.File(reference_poses_path(), "r") as f:
+        return np.asarray(f["source_vertex"][()], dtype=np.int64)
+
+
+@cache
+def _default_head() -> Model:
+    from engine.formats.model_files import load_model
+
+    return load_model()
+
+
+def identity_vertex_displacement(model: Model, identity: Identity,
+                                 targets: IdentityTargets | None = None) -> tuple[np.ndarray, dict[str, Similarity]]:
+    """(n, 3) mm that move ``model`` (the default head's vertices) to ``identity``, and the eyes' motions."""
+    targets = targets or shipped_targets()
+    source = default_head_sources()
+    if model.n_vertices != len(source):
+        raise IdentityError(f"identities are made on the default head's mesh ({len(source)} vertices); "
+                            f"this model has {model.n_vertices}")
+    made = source < 0
+    pos = np.searchsorted(targets.hm08_vertex, source[~made])
+    pos = np.minimum(pos, len(targets.hm08_vertex) - 1)
+    if not np.array_equal(targets.hm08_vertex[pos], source[~made]):
+        raise IdentityError("the identity targets file does not cover the default head's vertices",
+                            file=targets.path)
+    D_kept = identity_displacement(identity, targets)
+    D = np.zeros((model.n_vertices, 3))
+    D[~made] = D_kept[pos]
+    skin = model.vertex_part[~made] == model.parts.index("skin") if "skin" in model.parts else slice(None)
+    offset = np.median((model.vertices[~made] - targets.rest[pos])[skin], axis=0)   # MakeHuman frame → ours
+    rigid: dict[str, Similarity] = {}
+    for part, helper in targets.eye_helpers.items():
+        if part not in model.parts:
+            continue
+        rest_h = targets.rest[helper] + offset
+        move = similarity(rest_h, rest_h + D_kept[helper])
+        rigid[part] = move
+        idx = model.part_vertices(part)
+        D[idx] = move.point(model.vertices[idx]) - model.vertices[idx]
+        made[idx] = False
+    if made.any():      # other made vertices (an inner mouth, say) follow their nearest MakeHuman vertices
+        known = np.flatnonzero(source >= 0)
+        dist, near = cKDTree(model.vertices[known]).query(model.vertices[made], k=GENERATED_NEIGHBOURS)
+        w = 1.0 / np.maximum(dist, 1e-6) ** 2
+        D[made] = np.einsum("mk,mkd->md", w / w.sum(axis=1, keepdims=True), D[known[near]])
+    return D, rigid
+
+
+def make_identity_head(identity: Identity, base: Model | None = None) -> Model:
+    """The head of ``identity``: ``base`` (the default head by default) reshaped, its rig carried over.
+
+    ``base`` must have the default head's vertices and no identity of its own
+    (a default head whose rig was edited keeps its edits). The result carries
+    ``identity`` and is named after it.
+    """
+    base = base if base is not None else _default_head()
+    if getattr(base, "identity", None) is not None and base.identity != Identity():
+        raise IdentityError("this model already is an identity; make identities from the default head")
+    D, rigid = identity_vertex_displacement(base, identity)
+    head = carry_rig_over(base, base.vertices + D, rigid)
+    if identity != Identity():
+        refit_closure(head)
+    head.identity = identity
+    head.name = identity_name(identity)
+    head.description = (f"{base.description} Identity: "
+                        + (", ".join(f"{k}={v:g}" for k, v in identity.values.items()) or "the default head") + ".")
+    return head
+
+
+def identity_name(identity: Identity) -> str:
+    """A short model name for an identity, e.g. ``person-sex1-age60``."""
+    parts = [f"{k.split('-')[0]}{v:g}" for k, v in list(identity.values.items())[:4]]
+    return "-".join(["person", *parts]) if parts else "default-head"
+
+
+def identity_vertices(identity: Identity, base: Model | None = None) -> np.ndarray:
+    """Only the rest vertices of ``identity``'s head (no rig carried over): a fast preview while a slider moves.
+
+    About 10 ms on the default head, against a few hundred for :func:`make_identity_head`.
+    """
+    base = base if base is not None else _default_head()
+    D, _ = identity_vertex_displacement(base, identity)
+    return base.vertices + D
