@@ -1,9 +1,11 @@
-"""Reading and writing models: XML description + HDF5 arrays (format version 1).
+"""Reading and writing models: XML description + HDF5 arrays (format version 2; version 1 is read too).
 
 ``head.xml`` (validated against ``engine/formats/schemas/model.xsd``) holds the
 parameter tree, parts and landmarks; the HDF5 file it names in ``arrays``
 holds the rest mesh, faces, per-vertex parts, sparse weights and displacement
-fields. Both carry a format version; readers refuse versions they do not know.
+fields, and (version 2) the texture: every polygon corner's texture
+coordinates, each polygon's image and the images' pixels. Both carry a
+format version; readers refuse versions they do not know.
 Saves are atomic for the pair, even under ``kill -9``: both files are written
 under temporary names and renamed under a journal that the next save or load
 finishes (:mod:`engine.formats.atomic`), and both carry the same
@@ -36,14 +38,18 @@ from engine.formats.atomic import atomic_files, finish_interrupted_writes
 from engine.formats.hdf5_reading import HDF5Reader
 from engine.formats.hdf5_reading import text as hdf5_text
 from engine.formats.xml_io import parse_xml, source_line, validate
+from engine.model.cells import check_cell_array
 from engine.model.identity_record import IdentityRecord
 from engine.model.landmarks import FEATURE_POINTS
 from engine.model.model import InfluenceRegion, Model
 from engine.model.parameters import Parameter, ParameterTree
+from engine.model.texture import ModelTexture, TextureImage
 
 FORMAT = "artificial-person-model"
 ARRAYS_FORMAT = "artificial-person-arrays"
-VERSION = 1
+VERSION = 2
+#: Format versions this program reads: 1 (no texture) and 2 (texture, identity).
+READABLE_VERSIONS = (1, 2)
 SCHEMA_NAME = "model.xsd"
 
 
@@ -149,7 +155,8 @@ def load_model(path: str | Path | None = None) -> Model:
     arrays_path = (path.parent / _required(root, "arrays", path)).resolve()
     if arrays_path.parent != path.parent.resolve():
         finish_interrupted_writes(arrays_path.parent)
-    vertices, faces, vertex_part, regions, colors_rgb, generation = _read_arrays(arrays_path, tree, len(parts))
+    vertices, faces, vertex_part, regions, colors_rgb, generation, texture = _read_arrays(arrays_path, tree,
+                                                                                          len(parts))
     described = root.get("generation")
     if described is not None and generation != described:
         raise ModelFileError(
@@ -167,7 +174,7 @@ def load_model(path: str | Path | None = None) -> Model:
     try:
         model = Model(vertices, faces, parts, vertex_part, tree, regions, landmarks,
                       name=_required(root, "name", path), description=desc.strip(), part_colors=colors,
-                      vertex_colors=colors_rgb)
+                      vertex_colors=colors_rgb, texture=texture)
     except UserError as exc:
         raise ModelFileError(exc.message, file=arrays_path) from None
     model.identity = identity
@@ -221,11 +228,12 @@ def _vec(text: str) -> np.ndarray:
 
 def _read_arrays(path: Path, tree: ParameterTree, n_parts: int
                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict[str, InfluenceRegion], np.ndarray | None,
-                            str | None]:
+                            str | None, ModelTexture | None]:
     """The arrays file's contents, checked (kind, shape, size, finite values) before and after reading.
 
-    Returns vertices, faces, per-vertex parts, regions, vertex colours and the
-    file's ``generation`` attribute (None in files written before it existed).
+    Returns vertices, faces, per-vertex parts, regions, vertex colours, the
+    file's ``generation`` attribute (None in files written before it existed)
+    and the texture (None if the file has none; version 1 files never do).
     """
     if not path.exists():
         raise ModelFileError("the arrays file named by the model description does not exist", file=path)
@@ -234,7 +242,7 @@ def _read_arrays(path: Path, tree: ParameterTree, n_parts: int
         if fmt != ARRAYS_FORMAT:
             raise f.fail(f"not an Artificial Person arrays file (format attribute is {fmt!r})")
         version = _integer(hdf5_text(f.attribute("version")))
-        if version is None or version > VERSION or version < 1:
+        if version not in READABLE_VERSIONS:
             raise f.fail(f"arrays format version {version} is not one this program reads ({VERSION})")
         generation = hdf5_text(f.attribute("generation"))
 
@@ -263,7 +271,34 @@ def _read_arrays(path: Path, tree: ParameterTree, n_parts: int
                 regions[p.name] = InfluenceRegion(idx, w, disp)
             except UserError as exc:
                 raise f.fail(f"parameter '{p.name}': {exc.message}") from None
-    return vertices, faces, vertex_part, regions, colors, generation
+        texture = _read_texture(f, faces, len(vertices)) if version >= 2 and f.has("texture") else None
+    return vertices, faces, vertex_part, regions, colors, generation, texture
+
+
+def _read_texture(f: HDF5Reader, faces: np.ndarray, n_vertices: int) -> ModelTexture:
+    """The ``/texture`` group: corner coordinates, each polygon's image, the images (raw RGB(A) pixels)."""
+    corner_uv = f.array("texture/corner_uv", "f", tail=(2,)).astype(float)
+    face_image = f.array("texture/face_image", "iu").astype(np.int64)
+    names = f.strings("texture/image_names")
+    images: list[TextureImage] = []
+    for index, name in enumerate(names):
+        node = f"texture/images/{index}"
+        pixels = f.array(node, "u", ndim=3)
+        if pixels.dtype != np.uint8:
+            raise f.fail(f"dataset '/{node}' holds {pixels.dtype} pixels, expected 8-bit (uint8)")
+        try:
+            images.append(TextureImage(name, pixels))
+        except UserError as exc:
+            raise f.fail(exc.message) from None
+    if f.has(f"texture/images/{len(names)}"):
+        raise f.fail(f"'/texture/images' holds more images than the {len(names)} names in '/texture/image_names'")
+    texture = ModelTexture(corner_uv, images, face_image)
+    try:
+        check_cell_array(faces, n_vertices)
+        texture.check(faces)
+    except UserError as exc:
+        raise f.fail(exc.message) from None
+    return texture
 
 
 # ---------------------------------------------------------------------------
@@ -417,6 +452,15 @@ def _arrays_of(model: Model) -> list[tuple[str, np.ndarray, dict[str, Any]]]:
     ]
     if model.vertex_colors is not None:
         out.append(("mesh/colors", np.asarray(model.vertex_colors), {"compression": "gzip"}))
+    if model.texture is not None:
+        # Images as raw pixels, deflated: read back through the same shape and size checks as every other
+        # array, with no image decoder between a hostile file and us, and bit for bit what was saved.
+        texture = model.texture
+        out.append(("texture/corner_uv", texture.corner_uv, packed))
+        out.append(("texture/face_image", texture.face_image.astype(np.int32), {"compression": "gzip"}))
+        out.append(("texture/image_names", np.array([i.name.encode("ascii") for i in texture.images], dtype="S"), {}))
+        out.extend((f"texture/images/{index}", image.pixels, {"compression": "gzip", "compression_opts": 6})
+                   for index, image in enumerate(texture.images))
     for p in model.parameters:
         r = model.regions[p.name]
         out.append((f"parameters/{p.name}/indices", r.indices.astype(np.int64), {}))

@@ -24,6 +24,7 @@ from engine.errors import ParameterError, UserError
 from engine.model.cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
 from engine.model.identity_record import IdentityRecord
 from engine.model.parameters import NAME_PATTERN, Parameter, ParameterTree
+from engine.model.texture import ModelTexture
 
 if TYPE_CHECKING:
     from engine.deform.deformer import Deformer
@@ -95,13 +96,18 @@ class Model:
     vertex_colors : (N, 3) uint8 array, optional
         sRGB colour per vertex (e.g. iris and pupil painted on the eyeballs);
         renderers prefer it to ``part_colors``.
+    texture : ModelTexture, optional
+        Texture coordinates of every polygon corner, the images and the
+        image each polygon shows (:mod:`engine.model.texture`); renderers
+        draw textured polygons with their image, the others as above.
     """
 
     def __init__(self, vertices: npt.ArrayLike, faces: npt.ArrayLike, parts: Sequence[str] | None = None,
                  vertex_part: npt.ArrayLike | None = None, parameters: ParameterTree | None = None,
                  regions: Mapping[str, InfluenceRegion] | None = None, landmarks: Mapping[str, int] | None = None,
                  name: str = "model", description: str = "",
-                 part_colors: Mapping[str, str] | None = None, vertex_colors: npt.ArrayLike | None = None) -> None:
+                 part_colors: Mapping[str, str] | None = None, vertex_colors: npt.ArrayLike | None = None,
+                 texture: ModelTexture | None = None) -> None:
         self.vertices = np.ascontiguousarray(np.asarray(vertices, dtype=float).reshape(-1, 3))
         self.faces = np.asarray(faces, dtype=np.int64).reshape(-1)
         n = len(self.vertices)
@@ -117,6 +123,7 @@ class Model:
         self.description = description
         self.part_colors = dict(part_colors or {})
         self.vertex_colors = None if vertex_colors is None else np.asarray(vertex_colors, dtype=np.uint8)
+        self.texture = texture
         self.identity: IdentityRecord | None = None       # who the head is (engine.identity), if made as one
         self.revision = 0
         self._deformer: Deformer | None = None
@@ -162,6 +169,8 @@ class Model:
         for key, v in self.landmarks.items():
             if not 0 <= v < n:
                 raise UserError(f"landmark {key}: vertex {v} is outside 0..{n - 1}")
+        if self.texture is not None:
+            self.texture.check(self.faces)
 
     # -- queries ---------------------------------------------------------
     @property
@@ -284,12 +293,14 @@ class Model:
         return Model(self.vertices[order], faces, list(self.parts), self.vertex_part[order],
                      self.parameters.copy(), regions, {k: int(new_index[v]) for k, v in self.landmarks.items()},
                      self.name, self.description, dict(self.part_colors),
-                     None if self.vertex_colors is None else self.vertex_colors[order])
+                     None if self.vertex_colors is None else self.vertex_colors[order],
+                     None if self.texture is None else self.texture.copy())   # corners keep their order
 
     def copy(self) -> Model:
         copied = Model(self.vertices.copy(), self.faces.copy(), list(self.parts), self.vertex_part.copy(),
                        self.parameters.copy(), {k: r.copy() for k, r in self.regions.items()},
                        dict(self.landmarks), self.name, self.description, dict(self.part_colors),
-                       None if self.vertex_colors is None else self.vertex_colors.copy())
+                       None if self.vertex_colors is None else self.vertex_colors.copy(),
+                       None if self.texture is None else self.texture.copy())
         copied.identity = self.identity
         return copied

@@ -19,7 +19,9 @@ from __future__ import annotations
 import numpy as np
 from scipy import sparse
 
+from engine.model.cells import cell_sizes
 from engine.model.model import InfluenceRegion, Model
+from engine.model.texture import ModelTexture
 
 
 def subdivision_matrix(polygons: list[np.ndarray], n_vertices: int,
@@ -94,4 +96,47 @@ def subdivide(model: Model, k: int = 2) -> Model:
         np.rint(S @ model.vertex_colors.astype(float)), 0, 255).astype(np.uint8)
     return Model(vertices, faces, list(model.parts), model.vertex_part[owner], model.parameters.copy(),
                  regions, dict(model.landmarks), f"{model.name}-subdivided-{k}", model.description,
-                 dict(model.part_colors), colors)
+                 dict(model.part_colors), colors, subdivided_texture(model, k))
+
+
+def subdivided_texture(model: Model, k: int) -> ModelTexture | None:
+    """The texture of :func:`subdivide`'s result: every new corner's (u, v) interpolated inside its old
+    polygon with the weights that place its vertex (so seams stay seams), each new polygon showing its
+    old polygon's image."""
+    texture = model.texture
+    if texture is None:
+        return None
+    counts = cell_sizes(model.faces)
+    new_uv: list[np.ndarray] = []
+    start = 0
+    for count in counts.tolist():
+        corners = texture.corner_uv[start:start + count]
+        start += count
+        new_uv.append(_split_polygon_uv(corners, k))
+    pieces = np.repeat(texture.face_image, k * k)
+    corner_uv = np.concatenate(new_uv) if new_uv else np.zeros((0, 2))
+    return ModelTexture(corner_uv, [image.copy() for image in texture.images], pieces)
+
+
+def _split_polygon_uv(uv: np.ndarray, k: int) -> np.ndarray:
+    """Corner (u, v) of the k × k pieces of one polygon, in the order :func:`subdivision_matrix` makes them."""
+    if len(uv) == 4:
+        a, b, c, d = uv
+
+        def quad(i: int, j: int) -> np.ndarray:
+            return ((k - i) * (k - j) * a + i * (k - j) * b + i * j * c + (k - i) * j * d) / (k * k)
+
+        return np.array([quad(i + di, j + dj) for i in range(k) for j in range(k)
+                         for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1))])
+    a, b, c = uv
+
+    def tri(i: int, j: int) -> np.ndarray:
+        return ((k - i - j) * a + i * b + j * c) / k
+
+    out: list[np.ndarray] = []
+    for i in range(k):
+        for j in range(k - i):
+            out += [tri(i, j), tri(i + 1, j), tri(i, j + 1)]
+            if i + j < k - 1:
+                out += [tri(i + 1, j), tri(i + 1, j + 1), tri(i, j + 1)]
+    return np.array(out)

@@ -1,4 +1,4 @@
-"""Model files, format version 1: XML description + HDF5 arrays (docs/model-format.md).
+"""Model files, format version 2 (version 1 read too): XML description + HDF5 arrays (docs/model-format.md).
 
 Round trips are exact (bytes of the XML, every HDF5 dataset, every attribute
 of the model, and the deformations); saves are atomic; every error a user can
@@ -128,14 +128,14 @@ def test_load_save_load_gives_identical_model_and_deformations(tmp_path, label, 
         np.testing.assert_allclose(original.deform(values), first.deform(values), rtol=0, atol=1e-12)
 
 
-def test_saved_files_follow_format_version_1(saved):
+def test_saved_files_follow_format_version_2(saved):
     text = saved.read_text(encoding="utf-8")
     assert text.startswith("<?xml version='1.0' encoding='UTF-8'?>\n<model ")
-    assert 'format="artificial-person-model" version="1"' in text
+    assert 'format="artificial-person-model" version="2"' in text
     assert 'arrays="small.h5" units="mm"' in text
     with h5py.File(saved.with_suffix(".h5"), "r") as f:
         assert f.attrs["format"] == "artificial-person-arrays"
-        assert int(f.attrs["version"]) == 1
+        assert int(f.attrs["version"]) == 2
         assert f["mesh/vertices"].shape == (6, 3) and f["mesh/vertices"].dtype == np.float64
         assert f["mesh/faces"].dtype == np.int64 and f["mesh/faces"].ndim == 1
         assert f["mesh/part"].shape == (6,)
@@ -295,7 +295,7 @@ XML_ERRORS = [
      'id="2.1"', "999"),
     ("negative landmark", '<landmark id="9.3" vertex="0"', '<landmark id="9.3" vertex="-1"', 'id="9.3"', "-1"),
     ("duplicate landmark", '<landmark id="9.3"', '<landmark id="2.1"', 'vertex="0"', "defined twice"),
-    ("newer version", 'version="1" name="small"', 'version="2" name="small"', "<model ", "newer"),
+    ("newer version", 'version="2" name="small"', 'version="3" name="small"', "<model ", "newer"),
     ("minimum above maximum", 'name="jaw_open" type="rotation" min="-0.2"', 'name="jaw_open" type="rotation" min="2"',
      'name="jaw_open"', "above maximum"),
     ("translation without direction", '<translation direction="0.0 2.5 0.0"/>', "<translation/>",
@@ -341,12 +341,12 @@ def test_xml_error_of_an_empty_file(tmp_path):
     assert str(err.value).startswith(f"{path}:")
 
 
-@pytest.mark.parametrize("version", ["+2", " 2 "])
+@pytest.mark.parametrize("version", ["+3", " 3 "])
 def test_newer_version_is_refused_however_it_is_spelled(saved, version):
     """xs:positiveInteger accepts '+2' and ' 2 '. (Regression: the reader's version.isdigit()
     check let them through and read the file as version 1.)"""
     text = saved.read_text(encoding="utf-8")
-    saved.write_text(text.replace('version="1" name="small"', f'version="{version}" name="small"'))
+    saved.write_text(text.replace('version="2" name="small"', f'version="{version}" name="small"'))
     with pytest.raises(ModelFileError, match="newer") as err:
         load_model(saved)
     assert str(err.value).startswith(f"{saved}:2: ")
@@ -445,7 +445,7 @@ H5_ERRORS = [
     ("face outside mesh", _replace("mesh/faces", np.array([3, 0, 1, 60])), "outside"),
     ("wrong format attribute", _set_attr("format", "something-else"), "format"),
     ("no format attribute", lambda f: f.attrs.__delitem__("format"), "format"),
-    ("newer version", _set_attr("version", 2), "version 2"),
+    ("newer version", _set_attr("version", 3), "version 3"),
     ("group in place of a dataset", lambda f: (f.__delitem__("mesh/faces"), f.create_group("mesh/faces")),
      "not a dataset"),
 ]
