@@ -102,17 +102,19 @@ def run_import_mesh(args: argparse.Namespace) -> int:
     out = require_suffix(args.output, (".xml",), "import-mesh")
     from pathlib import Path
 
-    from engine.formats.mesh_io import read_mesh
+    from engine.formats.mesh_io import mesh_model, read_mesh
     from engine.formats.model_files import save_model
 
     mesh = read_mesh(args.file, scale=args.scale, keep_units=args.keep_units, up=args.up)
-    save_model(mesh.to_model(Path(args.file).stem, Path(args.file).name), out)
-    print(import_report(mesh, args.file, out))
+    model = mesh_model(mesh, Path(args.file))
+    save_model(model, out)
+    print(import_report(mesh, args.file, out, model))
     return 0
 
 
-def import_report(mesh: Any, source: str, out: str | Any) -> str:
-    """What ``import-mesh`` read: sizes, units, up axis, texture coordinates and material images."""
+def import_report(mesh: Any, source: str, out: str | Any, model: Model | None = None) -> str:
+    """What ``import-mesh`` read: sizes, units, up axis, texture coordinates and material images
+    (and, given the model made, the images it keeps)."""
     lines = [f"{source}: {len(mesh.vertices)} vertices, {len(mesh.part_names)} part(s); model written to {out}",
              f"units: coordinates × {mesh.scale:g} to mm; up: " +
              ("+Y, as in the file" if mesh.up == "+Y" else f"the file's {mesh.up} turned to +Y")]
@@ -125,6 +127,10 @@ def import_report(mesh: Any, source: str, out: str | Any) -> str:
         lines.append(f"texture coordinates: yes, {seams}")
     if texture is not None:
         lines += [f"material {m.name}: image {m.image or 'none'}" for m in texture.materials]
+    if model is not None and model.texture is not None:
+        kept = [f"{i.name} ({i.pixels.shape[1]}×{i.pixels.shape[0]})" for i in model.texture.images]
+        lines.append(f"texture kept in the model: {len(model.texture.corner_uv)} corner coordinates, "
+                     f"images: {', '.join(kept) or 'none'}")
     lines += [f"note: {note}" for note in mesh.notes]
     return "\n".join(lines)
 

@@ -54,13 +54,29 @@ def import_mesh(path: str | Path, scale: float | None = None, name: str | None =
     """Read a polygon surface as a new :class:`Model` with no parameters.
 
     The arguments are :func:`read_mesh`'s; ``name`` is the model's name (the
-    file's stem by default). The texture coordinates and material images
-    the file holds are on :func:`read_mesh`'s result, not on the model (the
-    model files have no place for them yet): read the file with
-    :func:`read_mesh` to have both.
+    file's stem by default). The model keeps the file's texture coordinates
+    and its material images (:func:`mesh_model`).
     """
-    return read_mesh(path, scale, keep_units=keep_units, up=up, timeout=timeout).to_model(
-        name or Path(path).stem, Path(path).name)
+    return mesh_model(read_mesh(path, scale, keep_units=keep_units, up=up, timeout=timeout), path, name)
+
+
+def mesh_model(mesh: ImportedMesh, path: str | Path, name: str | None = None) -> Model:
+    """The model :func:`import_mesh` makes of ``mesh`` read from ``path``: the surface, its parts and its
+    texture (corner coordinates, the material images loaded, each polygon's image). Images that cannot
+    be read are left out with a note added to ``mesh.notes``."""
+    from engine.formats.texture_images import model_texture
+
+    path = Path(path)
+    model = mesh.to_model(name or path.stem, path.name)
+    texture, notes = model_texture(mesh, path)
+    mesh.notes += notes
+    if texture is not None:
+        try:
+            texture.check(model.faces)
+        except UserError as exc:
+            raise MeshImportError(f"texture: {exc.message}", file=path) from None
+        model.texture = texture
+    return model
 
 
 def read_mesh(path: str | Path, scale: float | None = None, *, keep_units: bool = False, up: str = "+Y",
