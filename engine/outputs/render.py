@@ -31,7 +31,7 @@ import os
 import sys
 from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, SupportsInt
+from typing import TYPE_CHECKING, Any, SupportsInt
 
 import numpy as np
 
@@ -229,6 +229,7 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
     renderer.AutomaticLightCreationOff()
     points, normals = layout.points_and_normals(model.vertices)
     meshes: list[_MeshArrays] = []
+    textures: dict[int, Any] = {}           # image index → its vtkTexture, shared by the meshes showing it
     for k, (part, cells) in enumerate(zip(layout.parts, layout.cells, strict=True)):
         start, stop = layout.slices[k]
         used = layout.used(k)
@@ -245,7 +246,13 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
         normal_array = numpy_to_vtk(normals[start:stop], deep=True)
         normal_array.SetName("Normals")
         mesh.GetPointData().SetNormals(normal_array)
-        if model.vertex_colors is not None:
+        uv = layout.uv[k]
+        if uv is not None and model.texture is not None:
+            coordinates = numpy_to_vtk(np.ascontiguousarray(uv, dtype=np.float32), deep=True)
+            coordinates.SetName("TextureCoordinates")
+            mesh.GetPointData().SetTCoords(coordinates)
+            rgb = None
+        elif model.vertex_colors is not None:
             rgb = model.vertex_colors[used]
         elif is_eyeball(part):
             rgb = eye_colours(model.vertices[used], colour)
@@ -257,7 +264,14 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
         actor = vtkActor()
         actor.SetMapper(mapper)
         prop = actor.GetProperty()
-        if rgb is None:
+        if uv is not None and model.texture is not None:
+            image = layout.image[k]
+            if image not in textures:
+                textures[image] = _vtk_texture(model.texture.images[image].pixels)
+            mapper.ScalarVisibilityOff()
+            actor.SetTexture(textures[image])
+            prop.SetColor(1.0, 1.0, 1.0)              # the image's colours, lit
+        elif rgb is None:
             mapper.ScalarVisibilityOff()
             prop.SetColor(*colour)
         else:
@@ -295,6 +309,28 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
     window.SetSize(width, height)
     window.AddRenderer(renderer)
     return window, meshes
+
+
+def _vtk_texture(pixels: np.ndarray) -> Any:
+    """A VTK texture of (height, width, 3|4) uint8 sRGB pixels (row 0 at the top), repeated outside 0..1,
+    interpolated and mipmapped (a face seen small is not speckled)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+    from vtkmodules.vtkRenderingCore import vtkTexture
+
+    height, width, channels = pixels.shape
+    image = vtkImageData()
+    image.SetDimensions(width, height, 1)
+    data = numpy_to_vtk(np.ascontiguousarray(pixels[::-1].reshape(-1, channels)), deep=True)   # VTK: bottom row first
+    data.SetName("Pixels")
+    image.GetPointData().SetScalars(data)
+    texture = vtkTexture()
+    texture.SetInputData(image)
+    texture.InterpolateOn()
+    texture.MipmapOn()
+    texture.RepeatOn()
+    texture.SetColorModeToDirectScalars()
+    return texture
 
 
 def _choose_offscreen_backend() -> None:
