@@ -50,7 +50,9 @@ def add_verbs(verbs: Any) -> None:
     p = verbs.add_parser("pose", help="write the deformed mesh (same vertex order as the model)")
     add_model_option(p)
     add_set_option(p)
-    p.add_argument("-o", "--output", required=True, metavar="OUT.(obj|ply|npz)", help="mesh file to write")
+    p.add_argument("-o", "--output", required=True, metavar="OUT.(obj|ply|npz)",
+                   help="mesh file to write (a textured model's OBJ gets texture coordinates, an .mtl and the "
+                        "images as PNG beside it)")
     p.set_defaults(run=run_pose)
 
     p = verbs.add_parser("import-mesh", help="make a model with no parameters from a mesh file")
@@ -94,7 +96,7 @@ def run_pose(args: argparse.Namespace) -> int:
     from engine.formats.mesh_io import write_mesh
 
     write_mesh(out, model.deform(values), model.faces, parts=model.parts, vertex_part=model.vertex_part,
-               name=model.name)
+               name=model.name, texture=model.texture if str(out).lower().endswith(".obj") else None)
     return 0
 
 

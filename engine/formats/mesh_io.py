@@ -40,6 +40,7 @@ from engine.formats.mesh_obj import read_obj
 from engine.formats.mesh_ply import read_ply
 from engine.model.cells import cell_sizes, cells_to_triangles, check_cell_array, index_mask, split_cells
 from engine.model.model import Model
+from engine.model.texture import ModelTexture
 
 WRITE_FORMATS = (".obj", ".ply", ".npz")
 _DEFAULT_PART = "surface"
@@ -254,7 +255,7 @@ def _part_names(labels: list[str]) -> list[str]:
 
 def write_mesh(path: str | Path, vertices: npt.ArrayLike, faces: npt.ArrayLike, *,
                parts: Sequence[str] | None = None, vertex_part: npt.ArrayLike | None = None,
-               binary: bool = True, name: str | None = None) -> Path:
+               binary: bool = True, name: str | None = None, texture: ModelTexture | None = None) -> Path:
     """Write a polygon mesh as ``.obj``, ``.ply`` or ``.npz``, chosen by the file's extension.
 
     Parameters
@@ -272,6 +273,13 @@ def write_mesh(path: str | Path, vertices: npt.ArrayLike, faces: npt.ArrayLike, 
         PLY only: binary little-endian (default) or ASCII.
     name : str, optional
         OBJ only: an ``o`` line naming the object.
+    texture : ModelTexture, optional
+        OBJ only: the texture coordinates (``vt``, one per distinct corner
+        (u, v)) and, beside the OBJ, an MTL file (the OBJ's name with
+        ``.mtl``) with one material per image (``map_Kd``) and the images as
+        PNG (``<obj stem>_<image name>.png``); polygons without an image use
+        the material ``untextured``. All files are written together,
+        atomically. Blender, MeshLab and our own reader open it textured.
 
     An ``.npz`` holds ``vertices`` (N×3 float64, mm), ``faces`` (the flat cell
     array, int64) and ``triangles`` (T×3 int64, polygons fan-triangulated).
@@ -290,6 +298,10 @@ def write_mesh(path: str | Path, vertices: npt.ArrayLike, faces: npt.ArrayLike, 
         vertex_part = np.asarray(vertex_part, dtype=np.int64).reshape(-1)
         if len(vertex_part) != len(vertices):
             raise UserError(f"{len(vertex_part)} part labels for {len(vertices)} vertices")
+    if ext == ".obj" and texture is not None:
+        texture.check(faces)
+        _write_textured_obj(path, vertices, faces, parts, vertex_part, name, texture)
+        return path
     if ext == ".obj":
         data = _obj_bytes(vertices, faces, parts, vertex_part, name)
     elif ext == ".ply":
@@ -301,22 +313,64 @@ def write_mesh(path: str | Path, vertices: npt.ArrayLike, faces: npt.ArrayLike, 
 
 
 def _obj_bytes(vertices: np.ndarray, faces: np.ndarray, parts: Sequence[str] | None,
-               vertex_part: np.ndarray | None, name: str | None) -> bytes:
+               vertex_part: np.ndarray | None, name: str | None, texture: ModelTexture | None = None,
+               mtl_name: str | None = None) -> bytes:
     out = io.StringIO()
     out.write("# Artificial Person mesh; units: mm\n")
+    if mtl_name:
+        out.write(f"mtllib {mtl_name}\n")
     if name:
         out.write(f"o {name}\n")
     out.write("".join(f"v {x!r} {y!r} {z!r}\n" for x, y, z in vertices.tolist()))
     polygons = split_cells(faces)
+    corner_vt: np.ndarray | None = None
+    if texture is not None:
+        table, inverse = np.unique(texture.corner_uv, axis=0, return_inverse=True)
+        corner_vt = inverse.reshape(-1) + 1
+        out.write("".join(f"vt {u!r} {v!r}\n" for u, v in table.tolist()))
     last = None
-    for poly in polygons:
+    last_material: int | None = None
+    corner = 0
+    for index, poly in enumerate(polygons):
         if parts is not None and vertex_part is not None:
             part = int(vertex_part[poly[0]])
             if part != last:
                 out.write(f"g {parts[part]}\n")
                 last = part
-        out.write("f " + " ".join(str(i + 1) for i in poly.tolist()) + "\n")
+        if texture is None or corner_vt is None:
+            out.write("f " + " ".join(str(i + 1) for i in poly.tolist()) + "\n")
+            continue
+        image = int(texture.face_image[index])
+        if image != last_material:
+            out.write(f"usemtl {texture.images[image].name if image >= 0 else _UNTEXTURED}\n")
+            last_material = image
+        vt = corner_vt[corner:corner + len(poly)].tolist()
+        corner += len(poly)
+        out.write("f " + " ".join(f"{i + 1}/{t}" for i, t in zip(poly.tolist(), vt, strict=True)) + "\n")
     return out.getvalue().encode("utf-8")
+
+
+_UNTEXTURED = "untextured"
+
+
+def _write_textured_obj(path: Path, vertices: np.ndarray, faces: np.ndarray, parts: Sequence[str] | None,
+                        vertex_part: np.ndarray | None, name: str | None, texture: ModelTexture) -> None:
+    """The OBJ, its MTL and one PNG per image, written together (see :func:`write_mesh`)."""
+    from engine.formats.atomic import atomic_files
+    from engine.formats.texture_images import png_bytes
+
+    mtl = path.with_suffix(".mtl")
+    image_files = {image.name: path.with_name(f"{path.stem}_{image.name}.png") for image in texture.images}
+    lines = ["# Artificial Person materials", f"newmtl {_UNTEXTURED}", "Kd 0.8 0.8 0.8", ""]
+    for image in texture.images:
+        lines += [f"newmtl {image.name}", "Ka 1 1 1", "Kd 1 1 1", "Ks 0 0 0", "illum 1",
+                  f"map_Kd {image_files[image.name].name}", ""]
+    contents = {path: _obj_bytes(vertices, faces, parts, vertex_part, name, texture, mtl.name),
+                mtl: "\n".join(lines).encode("utf-8")}
+    contents.update({image_files[image.name]: png_bytes(image.pixels) for image in texture.images})
+    with atomic_files(list(contents), UserError) as temporary:
+        for target, data in contents.items():
+            temporary[target].write_bytes(data)
 
 
 def _ply_bytes(vertices: np.ndarray, faces: np.ndarray, binary: bool) -> bytes:
