@@ -17,6 +17,12 @@ from engine.identity.carry_over import Similarity, carry_rig_over, similarity
 from engine.identity.errors import IdentityError
 from engine.identity.lip_closure import refit_closure
 from engine.identity.parameters import Identity
+from engine.identity.rest_fit import (
+    keep_eyelid_clearance,
+    keep_fields_off_the_eyes,
+    keep_rest_lip_gap,
+    refit_eyelid_angles,
+)
 from engine.identity.targets import IdentityTargets, shipped_targets
 from engine.identity.weights import identity_displacement
 from engine.model import Model
@@ -62,11 +68,12 @@ def identity_vertex_displacement(model: Model, identity: Identity,
     offset = np.median((model.vertices[~made] - targets.rest[pos])[skin], axis=0)   # MakeHuman frame → ours
     rigid: dict[str, Similarity] = {}
     for part, helper in targets.eye_helpers.items():
-        if part not in model.parts:
-            continue
-        rest_h = targets.rest[helper] + offset
-        move = similarity(rest_h, rest_h + D_kept[helper])
-        rigid[part] = move
+        if part in model.parts:
+            rest_h = targets.rest[helper] + offset
+            rigid[part] = similarity(rest_h, rest_h + D_kept[helper])
+    D = keep_rest_lip_gap(model, D)
+    rigid = keep_eyelid_clearance(model, D, rigid)
+    for part, move in rigid.items():
         idx = model.part_vertices(part)
         D[idx] = move.point(model.vertices[idx]) - model.vertices[idx]
         made[idx] = False
@@ -92,6 +99,8 @@ def make_identity_head(identity: Identity, base: Model | None = None) -> Model:
     head = carry_rig_over(base, base.vertices + D, rigid)
     if identity != Identity():
         refit_closure(head)
+        refit_eyelid_angles(base, head)
+        keep_fields_off_the_eyes(head)
     head.identity = identity
     head.name = identity_name(identity)
     head.description = (f"{base.description} Identity: "
@@ -101,7 +110,7 @@ def make_identity_head(identity: Identity, base: Model | None = None) -> Model:
 
 def identity_name(identity: Identity) -> str:
     """A short model name for an identity, e.g. ``person-sex1-age60``."""
-    parts = [f"{k.split('-')[0]}{v:g}" for k, v in list(identity.values.items())[:4]]
+    parts = [f"{k.split('-')[0]}{v:.3g}" for k, v in list(identity.values.items())[:4]]
     return "-".join(["person", *parts]) if parts else "default-head"
 
 

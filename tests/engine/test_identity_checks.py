@@ -1,0 +1,132 @@
+"""Every identity animates as the default head does (issue 18 §2): the default head's geometric checks, re-run.
+
+The tests below are the default head's own (imported from their modules, so
+they cannot drift apart), collected here a second time with ``head`` a made
+identity: three contrasting people — a young woman of Asian ancestry, an
+older heavier man of European ancestry, and a middle-aged woman of African
+ancestry with a wider mouth and nose. Lips must close at p/b/m without
+passing through each other and open at a; each action unit moves its
+landmarks as FACS describes; the eyelids close onto the lower lids; the
+teeth ride rigidly on their bone; speech by real Festival closes the lips at
+every bilabial.
+
+Not all of them pass yet. :data:`KNOWN_FAILURES` lists, per identity, the
+checks that fail today (strict: a listed check that starts to pass fails the
+run, so the list only shrinks). They are the lip contact of the articulatory
+fields with neighbouring vowels, the lips' order at full closure on faces
+whose lips MakeHuman's targets bring together, a few lid/eyeball contacts of
+AU4/AU6, and four AU landmark checks on the young woman's smaller face — open
+work in issue 18, not hidden.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from engine.identity import Identity, make_identity_head
+from tests.engine.test_action_units import (  # noqa: F401  (tests and fixtures collected again here)
+    rest,
+    test_a_left_action_unit_moves_only_the_left_side,
+    test_au1_raises_the_inner_brows,
+    test_au2_raises_the_outer_brows,
+    test_au4_lowers_the_brows_and_draws_them_together,
+    test_au5_raises_the_upper_lid_and_au41_lowers_it,
+    test_au6_raises_the_cheek,
+    test_au7_raises_the_lower_lid,
+    test_au9_raises_the_nose_wings_and_lowers_the_inner_brows,
+    test_au10_raises_the_upper_lip,
+    test_au12_pulls_the_lip_corners_up_and_out,
+    test_au15_pulls_the_lip_corners_down,
+    test_au16_lowers_the_lower_lip,
+    test_au17_raises_the_chin_and_the_lower_lip,
+    test_au20_stretches_the_lips_sideways,
+    test_au23_and_au24_narrow_and_press_the_lips,
+    test_au26_is_the_jaw_and_lowers_the_chin,
+    test_the_lids_stay_off_the_eyeball,
+)
+from tests.engine.test_articulatory_parameters import (  # noqa: F401
+    lips,
+    test_closure_survives_the_neighbouring_vowels_lip_shape,
+    test_closure_with_the_jaw_barely_open,
+    test_lip_contours_keep_their_vertical_order_when_closed,
+    test_lip_protrude_rounds_and_pushes_the_lips_forward,
+    test_lower_lip_raise_closes_the_lips,
+    test_mouth_widen_pulls_the_corners_apart,
+    test_no_value_in_range_makes_the_lips_cross,
+    test_open_vowel_jaw_opening_gives_a_clear_gap,
+    test_upper_lip_raise_lifts_the_upper_lip_only,
+)
+from tests.engine.test_default_head import (  # noqa: F401
+    test_brow_raise_lifts_both_brows,
+    test_eyelid_closes_onto_the_lower_lid,
+    test_faces_plus_z_with_y_up,
+    test_gaze_turns_the_eyes_and_not_the_lashes,
+    test_head_motion_directions_and_fixed_neck_base,
+    test_jaw_opens_the_mouth_and_leaves_the_upper_lip,
+    test_landmarks_are_mirror_images,
+    test_lip_landmarks_in_anatomical_order,
+    test_teeth_move_rigidly_with_their_bone,
+)
+from tests.engine.test_speech_acceptance import (  # noqa: F401
+    measured,
+    test_lips_close_at_the_middle_of_every_bilabial,
+    test_open_vowels_open_the_mouth,
+)
+
+IDENTITIES = {
+    "young-woman-asian": {"sex": 0.0, "age": 28, "asian": 1.0, "african": 0.0, "caucasian": 0.0},
+    "older-man-european": {"sex": 1.0, "age": 60, "caucasian": 1.0, "african": 0.0, "asian": 0.0,
+                           "weight": 0.7},
+    "woman-african-wide-mouth": {"sex": 0.1, "age": 45, "african": 1.0, "asian": 0.0, "caucasian": 0.0,
+                                 "mouth-scale-horiz-decr-incr": 0.4, "nose-scale-horiz-decr-incr": 0.4},
+}
+
+
+@pytest.fixture(scope="module", params=list(IDENTITIES))
+def head(request):
+    return make_identity_head(Identity(IDENTITIES[request.param]))
+
+
+KNOWN_FAILURES = frozenset({
+    "test_au7_raises_the_lower_lid[young-woman-asian]",
+    "test_au9_raises_the_nose_wings_and_lowers_the_inner_brows[young-woman-asian]",
+    "test_au12_pulls_the_lip_corners_up_and_out[young-woman-asian]",
+    "test_au15_pulls_the_lip_corners_down[young-woman-asian]",
+    "test_the_lids_stay_off_the_eyeball[young-woman-asian-AU4_left=1]",
+    "test_the_lids_stay_off_the_eyeball[young-woman-asian-AU4_left=1+AU6_left=1+AU7_left=1+AU9_left_brow=1]",
+    "test_the_lids_stay_off_the_eyeball[young-woman-asian-eyelid_left_close=1+AU6_left=1]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[young-woman-asian-others0]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[young-woman-asian-others1]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[young-woman-asian-others2]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[young-woman-asian-others3]",
+    "test_lip_contours_keep_their_vertical_order_when_closed[young-woman-asian]",
+    "test_lower_lip_raise_closes_the_lips[young-woman-asian]",
+    "test_mouth_widen_pulls_the_corners_apart[young-woman-asian]",
+    "test_no_value_in_range_makes_the_lips_cross[young-woman-asian-mouth_widen]",
+    "test_no_value_in_range_makes_the_lips_cross[young-woman-asian-lip_protrude]",
+    "test_no_value_in_range_makes_the_lips_cross[young-woman-asian-lower_lip_raise]",
+    "test_the_lids_stay_off_the_eyeball[older-man-european-AU6_left=1]",
+    "test_the_lids_stay_off_the_eyeball[older-man-european-eyelid_left_close=1+AU6_left=1]",
+    "test_the_lids_stay_off_the_eyeball[older-man-european-AU12_left=1+AU6_left=1]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[older-man-european-others0]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[older-man-european-others2]",
+    "test_the_lids_stay_off_the_eyeball[woman-african-wide-mouth-AU6_left=1]",
+    "test_the_lids_stay_off_the_eyeball[woman-african-wide-mouth-eyelid_left_close=1+AU6_left=1]",
+    "test_the_lids_stay_off_the_eyeball[woman-african-wide-mouth-AU12_left=1+AU6_left=1]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others0]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others1]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others2]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others3]",
+    "test_lip_contours_keep_their_vertical_order_when_closed[woman-african-wide-mouth]",
+    "test_lower_lip_raise_closes_the_lips[woman-african-wide-mouth]",
+    "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-mouth_widen]",
+    "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-lip_protrude]",
+    "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-upper_lip_raise]",
+    "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-lower_lip_raise]",
+})
+
+
+@pytest.fixture(autouse=True)
+def _known_failure(request):
+    if request.node.name in KNOWN_FAILURES:
+        request.applymarker(pytest.mark.xfail(strict=True, reason="known gap of the identity rig (issue 18)"))
