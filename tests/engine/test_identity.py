@@ -145,7 +145,7 @@ def test_a_model_file_with_a_bad_identity_record_is_refused(older_man, tmp_path)
     path.write_text(text)
     from engine.errors import ModelFileError
 
-    with pytest.raises(ModelFileError, match="person.xml"):
+    with pytest.raises(ModelFileError, match=r"person\.xml"):
         load_model(path)
 
 
@@ -156,7 +156,7 @@ def test_a_damaged_targets_file_is_refused_naming_it(tmp_path):
         offsets = f["target_offsets"][()]
         offsets[-1] += 7
         f["target_offsets"][...] = offsets
-    with pytest.raises(IdentityError, match="identity-targets.h5"):
+    with pytest.raises(IdentityError, match=r"identity-targets\.h5"):
         IdentityTargets(bad)
 
 
