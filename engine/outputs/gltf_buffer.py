@@ -46,6 +46,14 @@ class GltfBuffer:
         self.accessors.append(accessor)
         return len(self.accessors) - 1
 
+    def add_bytes(self, data: bytes) -> int:
+        """A bufferView of raw bytes with no accessor (an embedded image); returns the view's index."""
+        self.views.append({"buffer": 0, "byteOffset": self.length, "byteLength": len(data)})
+        pad = -len(data) % 4
+        self.chunks.append(data + b"\0" * pad)
+        self.length += len(data) + pad
+        return len(self.views) - 1
+
     def data(self) -> bytes:
         return b"".join(self.chunks)
 

@@ -2,7 +2,9 @@
 
 The file holds one mesh with one primitive per part (skin, eyes, teeth, …),
 each with a material in the part's colour, vertex colours where a part is not
-one colour (``COLOR_0``), smooth normals and triangles. Every morph target is
+one colour (``COLOR_0``), smooth normals and triangles. A textured part is one
+primitive per image it shows, with ``TEXCOORD_0`` and a material whose
+``baseColorTexture`` is the image, embedded as PNG in the binary buffer. Every morph target is
 a per-vertex displacement: for a parameter, ``model.deform({name: value}) −
 rest`` at one chosen value (:func:`target_value`); for a pose from a file of
 displacement fields (the ARKit-52 set of the default head), the pose itself.
@@ -324,6 +326,7 @@ def gltf_document(model: Model, targets: Iterable[MorphTarget] = (), target_norm
     buf = GltfBuffer()
     primitives: list[dict[str, object]] = []
     materials: list[dict[str, object]] = []
+    embedded_images = _embedded_images(model, layout, buf)
     for k, part in enumerate(layout.parts):
         start, stop = layout.slices[k]
         used = layout.used(k)
@@ -332,15 +335,23 @@ def gltf_document(model: Model, targets: Iterable[MorphTarget] = (), target_norm
         if rgb is not None and np.all(rgb == rgb[0]):
             red, green, blue = (int(c) for c in rgb[0])
             colour, rgb = f"#{red:02x}{green:02x}{blue:02x}", None
-        base = [1.0, 1.0, 1.0] if rgb is not None else _srgb_to_linear(_hex_rgb(colour)).tolist()
-        materials.append({"name": part, "doubleSided": True,
-                          "pbrMetallicRoughness": {"baseColorFactor": [round(c, 6) for c in base] + [1.0],
-                                                   "metallicFactor": 0.0,
-                                                   "roughnessFactor": round(float(np.sqrt(2 / (power + 2))), 4)}})
+        uv, image = layout.uv[k], layout.image[k]
+        if uv is not None:
+            rgb = None
+        base = [1.0, 1.0, 1.0] if rgb is not None or uv is not None else _srgb_to_linear(_hex_rgb(colour)).tolist()
+        pbr: dict[str, object] = {"baseColorFactor": [round(c, 6) for c in base] + [1.0], "metallicFactor": 0.0,
+                                  "roughnessFactor": round(float(np.sqrt(2 / (power + 2))), 4)}
+        if uv is not None:
+            pbr["baseColorTexture"] = {"index": embedded_images[image][0], "texCoord": 0}
+        material_name = part if uv is None or model.texture is None else f"{part}.{model.texture.images[image].name}"
+        materials.append({"name": material_name, "doubleSided": True, "pbrMetallicRoughness": pbr})
         attributes = {"POSITION": buf.add((points[start:stop] * METRES_PER_MM).astype(np.float32), _ARRAY_BUFFER),
                       "NORMAL": buf.add(normals[start:stop].astype(np.float32), _ARRAY_BUFFER)}
         if rgb is not None:
             attributes["COLOR_0"] = buf.add(_srgb_to_linear(rgb / 255.0).astype(np.float32), _ARRAY_BUFFER)
+        if uv is not None:          # glTF's v runs down from the image's top; ours up from its bottom
+            flipped = np.column_stack([uv[:, 0], 1.0 - uv[:, 1]]).astype(np.float32)
+            attributes["TEXCOORD_0"] = buf.add(flipped, _ARRAY_BUFFER, bounds=False)
         attributes[MODEL_VERTEX] = buf.add(used.astype(np.float32), _ARRAY_BUFFER)
         if rig is not None:
             attributes["JOINTS_0"] = buf.add(rig.joints[used], _ARRAY_BUFFER, bounds=False)
@@ -390,7 +401,32 @@ def gltf_document(model: Model, targets: Iterable[MorphTarget] = (), target_norm
     }
     if skins:
         document["skins"] = skins
+    if embedded_images and model.texture is not None:
+        # one glTF image and texture per model image shown, in the order of first use
+        document["samplers"] = [{"magFilter": _LINEAR, "minFilter": _LINEAR_MIPMAP_LINEAR,
+                                 "wrapS": _REPEAT, "wrapT": _REPEAT}]
+        document["images"] = [{"name": model.texture.images[i].name, "mimeType": "image/png", "bufferView": view}
+                              for i, (_, view) in embedded_images.items()]
+        document["textures"] = [{"sampler": 0, "source": texture} for texture, _ in embedded_images.values()]
     return document, data
+
+
+_LINEAR, _LINEAR_MIPMAP_LINEAR, _REPEAT = 9729, 9987, 10497
+
+
+def _embedded_images(model: Model, layout: PartLayout, buf: GltfBuffer) -> dict[int, tuple[int, int]]:
+    """Model image index → (glTF texture index, bufferView of its PNG) for every image a mesh shows,
+    the PNGs added to ``buf``."""
+    from engine.formats.texture_images import png_bytes
+
+    shown: dict[int, tuple[int, int]] = {}
+    if model.texture is None:
+        return shown
+    for k, uv in enumerate(layout.uv):
+        image = layout.image[k]
+        if uv is not None and image not in shown:
+            shown[image] = (len(shown), buf.add_bytes(png_bytes(model.texture.images[image].pixels)))
+    return shown
 
 
 def _triangles(layout: PartLayout, k: int) -> np.ndarray:
