@@ -267,7 +267,7 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
         if uv is not None and model.texture is not None:
             image = layout.image[k]
             if image not in textures:
-                textures[image] = _vtk_texture(model.texture.images[image].pixels)
+                textures[image] = _vtk_texture(model.texture.images[image].pixels, 2 * max(width, height))
             mapper.ScalarVisibilityOff()
             actor.SetTexture(textures[image])
             prop.SetColor(1.0, 1.0, 1.0)              # the image's colours, lit
@@ -311,14 +311,28 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
     return window, meshes
 
 
-def _vtk_texture(pixels: np.ndarray) -> Any:
-    """A VTK texture of (height, width, 3|4) uint8 sRGB pixels (row 0 at the top), repeated outside 0..1,
-    interpolated and mipmapped (a face seen small is not speckled)."""
+def _vtk_texture(pixels: np.ndarray, largest: int) -> Any:
+    """A VTK texture of (height, width, 3|4) uint8 sRGB pixels (row 0 at the top), repeated outside 0..1
+    and interpolated (bilinear).
+
+    An image with a side longer than ``largest`` pixels (twice the picture's
+    longer side) is first reduced to it with a box filter, once: a texture
+    seen smaller than that would sparkle without it. VTK's mipmaps would do
+    the same per pixel, but on a software OpenGL (Mesa llvmpipe) they double
+    the frame time (benchmarks/bench_textured_render.py).
+    """
     from vtkmodules.util.numpy_support import numpy_to_vtk
     from vtkmodules.vtkCommonDataModel import vtkImageData
     from vtkmodules.vtkRenderingCore import vtkTexture
 
     height, width, channels = pixels.shape
+    if max(height, width) > largest:
+        from PIL import Image
+
+        scale = largest / max(height, width)
+        size = (max(1, round(width * scale)), max(1, round(height * scale)))
+        pixels = np.asarray(Image.fromarray(pixels).resize(size, Image.Resampling.BOX), dtype=np.uint8)
+        height, width = pixels.shape[:2]
     image = vtkImageData()
     image.SetDimensions(width, height, 1)
     data = numpy_to_vtk(np.ascontiguousarray(pixels[::-1].reshape(-1, channels)), deep=True)   # VTK: bottom row first
@@ -327,7 +341,6 @@ def _vtk_texture(pixels: np.ndarray) -> Any:
     texture = vtkTexture()
     texture.SetInputData(image)
     texture.InterpolateOn()
-    texture.MipmapOn()
     texture.RepeatOn()
     texture.SetColorModeToDirectScalars()
     return texture
