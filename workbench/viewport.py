@@ -17,6 +17,13 @@ or, while a parameter is selected and the heat map is on, the parameter's
 weight on the blue → red ramp of :func:`engine.painting.heat_colors`. Tools
 may show colours of their own with :meth:`Viewport.show_colors` and change a
 few vertices fast with :meth:`Viewport.update_colors` (a brush dab).
+
+A textured model (``model.texture``) is drawn as one mesh per part and image
+(:func:`~workbench.viewport_parts.part_pieces`: a point for each distinct
+vertex and (u, v), so seams stay sharp; the points of one vertex share its
+normal). Its textured meshes show their image while the ordinary colours are
+shown, and the vertex colours instead while a heat map or a tool's colours
+are, so painting and weights look as on any model.
 """
 
 from __future__ import annotations
@@ -27,12 +34,13 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 from pyvistaqt import QtInteractor
 
 import engine
+from engine.outputs.render import vtk_texture
 from engine.painting import heat_colors
 
 from .colors import base_vertex_colors
 from .document import ModelDocument
 from .view_state import ViewState
-from .viewport_parts import VERTEX_COLORS, PartView, split_by_part
+from .viewport_parts import VERTEX_COLORS, PartView, part_pieces
 from .viewport_picking import SurfacePick, cell_weights, new_cell_picker, pick_surface
 from .viewport_points import PointOverlays
 
@@ -45,6 +53,7 @@ VIEWS: dict[str, tuple[float, float, float]] = {
 }
 BACKGROUND_BOTTOM = "#5d6670"
 BACKGROUND_TOP = "#c9ced4"
+TEXTURE_SIDE = 4096       # images larger than this are reduced once before they are shown
 
 
 class Viewport(QWidget):
@@ -58,7 +67,8 @@ class Viewport(QWidget):
         self._view = "front"
         self._base_colors = np.zeros((0, 3), dtype=np.uint8)
         self._overlay: np.ndarray | None = None      # colours a tool asked for, else None
-        self._local_of: dict[str, np.ndarray] | None = None   # per part: model index → mesh point (-1)
+        # per mesh: its points sorted by model vertex (order, sorted vertex indices), for finding a vertex's points
+        self._local_of: dict[str, tuple[np.ndarray, np.ndarray]] | None = None
         self._multi_samples: int | None = None     # saved while set_fast_rendering(True)
         # auto_update=False: we render after each change ourselves; pyvistaqt's
         # default would also re-render five times a second for nothing.
@@ -91,14 +101,27 @@ class Viewport(QWidget):
     # -- public ----------------------------------------------------------
     @property
     def part_names(self) -> list[str]:
-        return list(self._parts)
+        return list(dict.fromkeys(view.part for view in self._parts.values()))
 
     def part_mesh(self, part: str) -> pv.PolyData:
-        """The mesh the part's actor draws (points in mm, the part's vertices only)."""
-        return self._parts[part].mesh
+        """The mesh the part's actor draws (points in mm, the part's vertices only); for a textured part,
+        its first mesh (or give the key ``"part@image"``)."""
+        return self._view_of(part).mesh
 
     def part_actor(self, part: str):
-        return self._parts[part].actor
+        return self._view_of(part).actor
+
+    def part_keys(self) -> list[str]:
+        """The meshes drawn: a part's name, or ``"part@image"`` for its polygons showing an image."""
+        return list(self._parts)
+
+    def _view_of(self, key: str) -> PartView:
+        if key in self._parts:
+            return self._parts[key]
+        for view in self._parts.values():
+            if view.part == key:
+                return view
+        raise KeyError(key)
 
     def displayed_points(self) -> np.ndarray:
         """Vertex positions (N, 3, mm) as the render pipeline holds them, in model order.
@@ -241,24 +264,26 @@ class Viewport(QWidget):
         vertices, weights = cell_weights(view, cell_id, hit.point)
         return hit, vertices, weights
 
-    def _local_lookup(self) -> dict[str, np.ndarray]:
+    def _local_lookup(self) -> dict[str, tuple[np.ndarray, np.ndarray]]:
         if self._local_of is None:
-            n = self._document.model.n_vertices
             self._local_of = {}
-            for part, view in self._parts.items():
-                lookup = np.full(n, -1, dtype=np.int64)
-                lookup[view.vertex_indices] = np.arange(len(view.vertex_indices))
-                self._local_of[part] = lookup
+            for key, view in self._parts.items():
+                order = np.argsort(view.vertex_indices, kind="stable")
+                self._local_of[key] = (order, view.vertex_indices[order])
         return self._local_of
 
     def _locate(self, indices: np.ndarray):
-        """Per part holding some of ``indices``: (view, mesh point indices, rows of ``indices``)."""
+        """Per mesh holding some of ``indices``: (view, mesh point indices, rows of ``indices``); a vertex
+        drawn as several points (a texture seam) gives a row for each."""
         lookup = self._local_lookup()
-        for part, view in self._parts.items():
-            local = lookup[part][indices]
-            rows = np.flatnonzero(local >= 0)
+        for key, view in self._parts.items():
+            order, ordered = lookup[key]
+            first = np.searchsorted(ordered, indices, side="left")
+            counts = np.searchsorted(ordered, indices, side="right") - first
+            rows = np.repeat(np.arange(len(indices)), counts)
             if len(rows):
-                yield view, local[rows], rows
+                starts = np.repeat(first - np.cumsum(counts) + counts, counts)
+                yield view, order[starts + np.arange(len(rows))], rows
 
     def pick(self, x: float, y: float) -> SurfacePick | None:
         """The visible surface under widget pixel (``x``, ``y``) (Qt coordinates, y down), or ``None``."""
@@ -322,7 +347,9 @@ class Viewport(QWidget):
         # Painted colours (eyebrows, iris, pupil) win over the part colour, as in engine.outputs.render.
         self._base_colors = base_vertex_colors(model)
         colors = self._current_colors()
-        for part, (indices, cells) in split_by_part(model).items():
+        textures: dict[int, object] = {}
+        for piece in part_pieces(model):
+            part, indices, cells = piece.part, piece.vertex_indices, piece.cells
             if len(cells) == 0:
                 continue
             mesh = pv.PolyData(np.ascontiguousarray(points[indices]), cells)
@@ -331,16 +358,23 @@ class Viewport(QWidget):
                 mesh, scalars=VERTEX_COLORS, rgb=True, show_scalar_bar=False, smooth_shading=False,
                 style="wireframe" if self._view_state.wireframe else "surface",
                 specular=0.25 if part != "skin" else 0.12, specular_power=20.0,
-                name=f"part:{part}", reset_camera=False, render=False)
+                name=f"part:{piece.key}", reset_camera=False, render=False)
             actor.prop.interpolation = "gouraud"
             actor.SetVisibility(self._view_state.is_part_visible(part))
             # The mapper reads the mesh itself: pyvista puts a scalars-selecting step in
             # between that re-runs (in Python, copying the mesh) on every colour change.
             mesh.point_data.active_scalars_name = VERTEX_COLORS
             actor.GetMapper().SetInputData(mesh)
-            view = PartView(indices, mesh, PartView.shading(mesh), actor)
+            view = PartView(indices, mesh, PartView.shading(mesh), actor, part=part)
+            if piece.uv is not None and model.texture is not None:
+                mesh.active_texture_coordinates = np.ascontiguousarray(piece.uv, dtype=np.float32)
+                if piece.image not in textures:
+                    textures[piece.image] = vtk_texture(model.texture.images[piece.image].pixels, TEXTURE_SIDE)
+                view.texture = textures[piece.image]
+                view.seam_groups = np.unique(indices, return_inverse=True)[1].reshape(-1)
             view.update_normals()
-            self._parts[part] = view
+            self._parts[piece.key] = view
+        self._show_textures(colors is self._base_colors)
 
     # -- listeners -------------------------------------------------------
     def _on_model_replaced(self, model: engine.Model) -> None:
@@ -375,7 +409,22 @@ class Viewport(QWidget):
         for view in self._parts.values():
             view.mesh.point_data[VERTEX_COLORS][:] = colors[view.vertex_indices]
             view.mesh.GetPointData().GetArray(VERTEX_COLORS).Modified()
+        self._show_textures(colors is self._base_colors)
         self._schedule_render()
+
+    def _show_textures(self, on: bool) -> None:
+        """Textured meshes show their image (``on``: the ordinary colours are shown) or their vertex colours."""
+        for view in self._parts.values():
+            if view.texture is None:
+                continue
+            mapper = view.actor.GetMapper()
+            mapper.SetScalarVisibility(not on)
+            view.actor.SetTexture(view.texture if on else None)
+            view.actor.prop.color = "white"
+
+    def textures_shown(self) -> list[str]:
+        """The keys of the meshes drawing an image now."""
+        return [key for key, view in self._parts.items() if view.actor.GetTexture() is not None]
 
     def _on_wireframe_changed(self, on: bool) -> None:
         for view in self._parts.values():
@@ -383,9 +432,10 @@ class Viewport(QWidget):
         self._schedule_render()
 
     def _on_part_visibility_changed(self, part: str, visible: bool) -> None:
-        view = self._parts.get(part)
-        if view is not None:
+        views = [view for view in self._parts.values() if view.part == part]
+        for view in views:
             view.actor.SetVisibility(visible)
+        if views:
             self._schedule_render()
 
     def _schedule_render(self) -> None:

@@ -1,7 +1,10 @@
 """The viewport's meshes, one per part of the model: points, polygons, colours, normals and a locator for picking.
 
 :func:`split_by_part` divides the model's polygons among its parts;
-:class:`PartView` holds what one part's actor draws and keeps its normals
+:func:`part_pieces` does the same for a textured model, one mesh per part
+and image, with a point for each distinct (vertex, u, v) so that texture seams
+stay sharp (the engine's :class:`~engine.outputs.part_layout.PartLayout`);
+:class:`PartView` holds what one mesh's actor draws and keeps its normals
 and its cell locator up to date when the points move. Lengths are mm.
 """
 
@@ -33,6 +36,9 @@ class PartView:
     locator: vtkStaticCellLocator | None = None    # for picking; rebuilt when the points have moved
     locator_points_time: int = -1
     local_normals: LocalNormals | None = None      # for moving a few points (live preview), built on first use
+    part: str = ""                                 # the model part drawn (several meshes for a textured part)
+    texture: object | None = None                  # the vtkTexture shown while no heat map or tool colours are
+    seam_groups: np.ndarray | None = None          # per point, its model vertex's row: points sharing a normal
 
     @classmethod
     def shading(cls, mesh: pv.PolyData) -> vtkPolyDataNormals:
@@ -52,7 +58,20 @@ class PartView:
         """Recompute the vertex normals after the points moved (the filter sees the shared points change)."""
         self.normals.GetInputDataObject(0, 0).Modified()
         self.normals.Update()
-        self.mesh.GetPointData().SetNormals(self.normals.GetOutput().GetPointData().GetNormals())
+        normals = self.normals.GetOutput().GetPointData().GetNormals()
+        self._join_seams(pv.convert_array(normals))
+        normals.Modified()
+        self.mesh.GetPointData().SetNormals(normals)
+
+    def _join_seams(self, values: np.ndarray) -> None:
+        """Give the points of one vertex (a texture seam) the mean of their normals, in place."""
+        if self.seam_groups is None:
+            return
+        summed = np.zeros((int(self.seam_groups.max(initial=-1)) + 1, 3))
+        np.add.at(summed, self.seam_groups, values)
+        length = np.linalg.norm(summed, axis=1, keepdims=True)
+        summed = np.divide(summed, length, out=np.zeros_like(summed), where=length > 0)
+        values[:] = summed[self.seam_groups]
 
     def update_normals_near(self, moved: np.ndarray) -> None:
         """Recompute only the normals that moving the mesh points ``moved`` changes (a live-preview dab)."""
@@ -61,6 +80,7 @@ class PartView:
         array = self.mesh.GetPointData().GetNormals()
         normals = pv.convert_array(array)
         self.local_normals.update(np.asarray(self.mesh.points, dtype=float), normals, moved)
+        self._join_seams(normals)
         array.Modified()
 
     def current_locator(self) -> vtkStaticCellLocator:
@@ -107,3 +127,33 @@ def split_by_part(model: engine.Model) -> dict[str, tuple[np.ndarray, np.ndarray
         cells[~counts] = lookup[used]
         out[model.parts[p]] = (indices, cells)
     return out
+
+
+@dataclass
+class Piece:
+    """One mesh to draw: its key in the viewport, its part, its points' model vertices, its polygons
+    over them, and for a textured mesh its (u, v) per point and image index (else ``None``, −1)."""
+
+    key: str
+    part: str
+    vertex_indices: np.ndarray
+    cells: np.ndarray
+    uv: np.ndarray | None = None
+    image: int = -1
+
+
+def part_pieces(model: engine.Model) -> list[Piece]:
+    """The meshes the viewport draws: one per part (:func:`split_by_part`), or for a textured model one
+    per part and image (``key`` ``"part"`` for the polygons without an image, ``"part@image"`` for the
+    others)."""
+    if model.texture is None:
+        return [Piece(part, part, indices, cells) for part, (indices, cells) in split_by_part(model).items()]
+    from engine.outputs.part_layout import PartLayout
+
+    layout = PartLayout(model)
+    pieces = []
+    for k, part in enumerate(layout.parts):
+        image = layout.image[k]
+        key = part if layout.uv[k] is None else f"{part}@{model.texture.images[image].name}"
+        pieces.append(Piece(key, part, layout.used(k), layout.cells[k], layout.uv[k], image))
+    return pieces

@@ -65,7 +65,7 @@ def pick_surface(picker: vtkCellPicker, plotter, parts: dict[str, PartView], x: 
     drawn = view.mesh.points[ids]
     nearest = ids[int(np.argmin(np.linalg.norm(drawn - point, axis=1)))]
     normal = np.array(picker.GetPickNormal())
-    return SurfacePick(point, int(view.vertex_indices[nearest]), part, normal), view, cell_id
+    return SurfacePick(point, int(view.vertex_indices[nearest]), view.part or part, normal), view, cell_id
 
 
 def cell_weights(view: PartView, cell_id: int, point) -> tuple[np.ndarray, np.ndarray]:

@@ -267,7 +267,7 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
         if uv is not None and model.texture is not None:
             image = layout.image[k]
             if image not in textures:
-                textures[image] = _vtk_texture(model.texture.images[image].pixels, 2 * max(width, height))
+                textures[image] = vtk_texture(model.texture.images[image].pixels, 2 * max(width, height))
             mapper.ScalarVisibilityOff()
             actor.SetTexture(textures[image])
             prop.SetColor(1.0, 1.0, 1.0)              # the image's colours, lit
@@ -311,7 +311,7 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
     return window, meshes
 
 
-def _vtk_texture(pixels: np.ndarray, largest: int) -> Any:
+def vtk_texture(pixels: np.ndarray, largest: int) -> Any:
     """A VTK texture of (height, width, 3|4) uint8 sRGB pixels (row 0 at the top), repeated outside 0..1
     and interpolated (bilinear).
 
