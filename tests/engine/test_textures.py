@@ -324,6 +324,30 @@ def test_broken_image_bytes_are_refused_naming_the_file(data):
     assert str(err.value).startswith("face.png: ")
 
 
+_SAMPLE_PNG = png_bytes(red_blue(16, 8, alpha=True))
+
+
+@settings(max_examples=FUZZ_EXAMPLES, deadline=None)
+@given(flips=st.lists(st.tuples(st.integers(0, len(_SAMPLE_PNG) - 1), st.integers(0, 255)), max_size=8),
+       cut=st.integers(0, len(_SAMPLE_PNG)), junk=st.binary(max_size=64))
+def test_fuzzed_image_bytes_decode_or_are_refused_naming_the_file(flips, cut, junk):
+    """A PNG with bytes changed, cut short or followed by junk decodes to pixels or is refused with
+    MeshImportError naming the file: never another exception."""
+    data = bytearray(_SAMPLE_PNG)
+    for at, value in flips:
+        data[at] = value
+    data = bytes(data[:cut]) + junk
+    refused: MeshImportError | None = None
+    try:
+        pixels = decode_image(data, "fuzz.png")
+    except MeshImportError as exc:
+        refused = exc
+    if refused is not None:
+        assert str(refused).startswith("fuzz.png: ")
+        return
+    assert pixels.dtype == np.uint8 and pixels.ndim == 3 and pixels.shape[2] in (3, 4)
+
+
 def test_an_image_too_large_is_refused_before_it_is_decoded():
     import io
 
