@@ -274,6 +274,19 @@ def test_a_posed_textured_model_keeps_its_image_on_the_moved_surface():
     assert left[0] > 150 and right[2] > 150
 
 
+def test_video_frames_keep_the_image_from_pose_to_pose():
+    """FrameRenderer (say's video, the expression gallery) refills points and normals every frame: the
+    image stays on the surface, frame after frame, with and without multisampling."""
+    from engine.outputs.render import FrameRenderer
+
+    model = textured_plane()
+    for antialias in (True, False):
+        with FrameRenderer(model, size=(200, 200), antialias=antialias) as renderer:
+            for lift in (0.0, 1.0, 0.0):
+                left, right = halves(renderer.render(model.deform(lift=lift)))
+                assert left[0] > 150 > left[2] and right[2] > 150 > right[0]
+
+
 def test_an_image_seam_stays_sharp():
     """Two quads sharing an edge, each showing a different half of the image (a seam at the shared
     vertices): the left quad is all red, the right one all blue."""
