@@ -39,6 +39,8 @@ class ModelDocument(QObject):
     model_replaced(object)
         A different model is now open (after :meth:`open` or
         :meth:`replace_model`); every parameter is back at its default.
+        Also after :meth:`apply_replace_model` (an identity change, its undo
+        and redo), where each parameter the new model has keeps its value.
     values_changed(list)
         The listed parameters have new values; read them from :attr:`values`.
     path_changed(str)
@@ -207,6 +209,21 @@ class ModelDocument(QObject):
         undo = apply_weight_change(self._model, name, change)
         self._regions_edited([name])
         return undo
+
+    def apply_replace_model(self, model: engine.Model) -> engine.Model:
+        """Make ``model`` current as an undoable edit (a new identity's head); returns the model it replaced.
+
+        Unlike :meth:`replace_model` the undo stack and the file stay: the
+        command keeps the old model and puts it back on undo. The pose is
+        kept for every parameter ``model`` has (clamped to its range).
+        """
+        old = self._model
+        self._model = model
+        self._values = {p.name: min(max(self._values.get(p.name, p.default), p.minimum), p.maximum)
+                        for p in model.parameters}
+        self._edited()
+        self.model_replaced.emit(model)
+        return old
 
     def _tree_edit_done(self, undo: TreeState) -> TreeState:
         """Announce a tree edit whose undo state is ``undo`` (its parameters are the tree before)."""

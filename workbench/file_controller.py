@@ -201,6 +201,15 @@ class FileController:
         path, _ = QFileDialog.getSaveFileName(self.window, "Save model as", start, MODEL_FILTER)
         return bool(path) and self.save_model(path)
 
+    def save_identity_as_dialog(self) -> bool:
+        """Ask where to save the head with its identity (the Identity panel's button), proposing the
+        identity's name (``person-sex1-age60.xml``); ``False`` if cancelled or failed."""
+        model = self.document.model
+        name = model.name if getattr(model, "identity", None) is not None else "person"
+        start = str(Path(self.start_dir()) / f"{name}.xml")
+        path, _ = QFileDialog.getSaveFileName(self.window, "Save identity as", start, MODEL_FILTER)
+        return bool(path) and self.save_model(path)
+
     def save_model(self, path: str | Path) -> bool:
         try:
             written = self.document.save(path)

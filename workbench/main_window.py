@@ -16,7 +16,7 @@ from PySide6.QtWidgets import QDockWidget, QMainWindow, QStyle, QToolBar, QWidge
 import engine
 
 from . import actions as workbench_actions
-from . import features, garbage_collection, settings
+from . import features, garbage_collection, identity_panel, settings
 from .dock_scroller import scroll_dock_content
 from .document import ModelDocument
 from .file_controller import TITLE, FileController
@@ -97,6 +97,7 @@ class MainWindow(QMainWindow):
 
         self.setStatusBar(ModelStatusBar(document, self))
         features.install_all(self)      # the tools: their docks exist before the layout is restored
+        identity_panel.install(self)
         for dock in self.findChildren(QDockWidget):
             scroll_dock_content(dock)   # no dock's content may push the window off the screen
         self.layouts = LayoutManager(self)

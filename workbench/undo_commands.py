@@ -279,3 +279,26 @@ class WeightsChangedCommand(ModelEditCommand):
         self.change = self.change.followed_by(other.change)
         self._undo = other._undo.followed_by(self._undo)
         return True
+
+
+class ReplaceModelCommand(ModelEditCommand):
+    """The whole model replaced by another (a head made for a new identity), the old one kept for undo.
+
+    ``base`` is what the new model was made from (the model identities of
+    this line are made from), kept with the command so the next identity
+    change can be made from it too (:mod:`workbench.identity_panel_heads`).
+    """
+
+    def __init__(self, document: ModelDocument, model: engine.Model, text: str, base: engine.Model | None = None):
+        super().__init__(document, text)
+        self.made = model
+        self.base = base
+        self.replaced: engine.Model | None = None
+
+    def apply(self) -> None:
+        self.replaced = self.document.apply_replace_model(self.made)
+
+    def revert(self) -> None:
+        if self.replaced is None:
+            raise RuntimeError("undo before the edit was made")
+        self.document.apply_replace_model(self.replaced)
