@@ -13,13 +13,14 @@ from functools import cache
 import numpy as np
 from scipy.spatial import cKDTree
 
+from engine.identity.articulation_refit import refit_articulation
 from engine.identity.carry_over import Similarity, carry_rig_over, similarity
 from engine.identity.errors import IdentityError
-from engine.identity.lip_closure import refit_closure
 from engine.identity.parameters import Identity
 from engine.identity.rest_fit import (
     keep_eyelid_clearance,
     keep_fields_off_the_eyes,
+    keep_lids_off_the_eyes,
     keep_rest_lip_gap,
     refit_eyelid_angles,
 )
@@ -98,9 +99,10 @@ def make_identity_head(identity: Identity, base: Model | None = None) -> Model:
     D, rigid = identity_vertex_displacement(base, identity)
     head = carry_rig_over(base, base.vertices + D, rigid)
     if identity != Identity():
-        refit_closure(head)
+        refit_articulation(base, head)
         refit_eyelid_angles(base, head)
         keep_fields_off_the_eyes(head)
+        keep_lids_off_the_eyes(head)
     head.identity = identity
     head.name = identity_name(identity)
     head.description = (f"{base.description} Identity: "

@@ -23,24 +23,50 @@ FRONT_MM = 3.0       # lid vertices more than this far in front of the eye's cen
 NEAR_MM = 4.0        # … and at most this far outside the eyeball at rest
 
 
-def keep_rest_lip_gap(base: Model, D: np.ndarray, name: str = "lower_lip_raise") -> np.ndarray:
-    """``D`` with the lower lip moved so the rest offset 2.3 − 2.2 equals the default head's."""
-    if name not in base.regions or base.regions[name].displacements is None:
+def keep_rest_lip_gap(base: Model, D: np.ndarray) -> np.ndarray:
+    """``D`` with the lower lip near the mouth line moving as the upper lip above it does.
+
+    The lips keep the default head's rest opening along the whole mouth (the
+    lower lip takes the motion of its nearest upper-lip vertices at the mouth
+    line, fading to its own motion 4.5 mm below it), so the articulatory
+    fields, fitted to that opening, close and open the new mouth as they do
+    the default head's.
+    """
+    from engine.identity.articulation_refit import jaw_share
+    from engine.identity.lip_contact import LipContact, follow_upper_lip
+
+    if not {"2.2", "2.3", "8.3", "8.4"} <= set(base.landmarks) or "jaw_open" not in base.regions:
         return D
+    is_skin = base.vertex_part == base.parts.index("skin")
     lm = base.landmarks
-    region = base.regions[name]
-    idx = region.indices
-    field = np.asarray(region.displacements)
-    at_mid = np.flatnonzero(idx == lm["2.3"])
-    if not len(at_mid):
-        return D
-    weight = np.clip(np.linalg.norm(field, axis=1) / np.linalg.norm(field[at_mid[0]]), 0.0, 1.0)
-    moved = base.vertices + D
-    want = base.vertices[lm["2.3"]] - base.vertices[lm["2.2"]]
-    have = moved[lm["2.3"]] - moved[lm["2.2"]]
-    D = D.copy()
-    D[idx] += weight[:, None] * (want - have)[None]
+    contact = LipContact(base.vertices, base.triangles(), is_skin, jaw_share(base), lm)
+    D = D + mirror_symmetric(base.vertices, follow_upper_lip(contact, D, base.vertices) - D)
+    # and exactly the default head's offset between the inner lip midpoints, the lower lip's whole
+    # closing region carrying the correction (it is a fraction of a millimetre)
+    region = base.regions.get("lower_lip_raise")
+    if region is not None and region.displacements is not None:
+        at_mid = np.flatnonzero(region.indices == lm["2.3"])
+        if len(at_mid):
+            size = np.linalg.norm(region.displacements, axis=1)
+            weight = np.clip(size / size[at_mid[0]], 0.0, 1.0)
+            want = base.vertices[lm["2.3"]] - base.vertices[lm["2.2"]]
+            have = (base.vertices + D)[lm["2.3"]] - (base.vertices + D)[lm["2.2"]]
+            D = D.copy()
+            D[region.indices] += weight[:, None] * (want - have)[None]
     return D
+
+
+def mirror_symmetric(rest: np.ndarray, change: np.ndarray) -> np.ndarray:
+    """``change`` made left–right symmetric where the rest mesh is (x ↦ −x), so the midline stays on it."""
+    from scipy.spatial import cKDTree
+
+    mirrored = rest * np.array([-1.0, 1.0, 1.0])
+    dist, partner = cKDTree(rest).query(mirrored)
+    paired = dist < 1e-6
+    flip = np.array([-1.0, 1.0, 1.0])
+    out = change.copy()
+    out[paired] = (change[paired] + change[partner[paired]] * flip) / 2
+    return out
 
 
 def keep_eyelid_clearance(base: Model, D: np.ndarray, eyes: dict[str, Similarity]) -> dict[str, Similarity]:
@@ -125,3 +151,40 @@ def keep_fields_off_the_eyes(head: Model) -> None:
                     D[inside] = (target - P[inside]) / value
             region.displacements = D
     head.changed()
+
+
+LID_ALLOWANCE_MM = 0.03     # how far a lid pose may enter the eyeball (the default head's blink: 0.04 mm)
+
+
+def keep_lids_off_the_eyes(head: Model) -> None:
+    """Shrink an eyeball (about its centre) until no lid pose carries the lid skin in front of it inside it.
+
+    The poses are every leaf that moves that skin at its maximum, alone (twice
+    its motion counts too: a safe margin) and in pairs (the blink with a lid tightener, a cheek raiser with a
+    smile); on the default head they enter at most 0.04 mm.
+    """
+    for side in ("left", "right"):
+        part = f"eye_{side}"
+        if part not in head.parts:
+            continue
+        eye = head.part_vertices(part)
+        centre = head.vertices[eye].mean(axis=0)
+        radius = float(np.linalg.norm(head.vertices[eye] - centre, axis=1).max())
+        lid_parts = [head.parts.index(p) for p in ("skin", f"eyelashes_{side}") if p in head.parts]
+        near = np.flatnonzero(np.isin(head.vertex_part, lid_parts))
+        near = near[(head.vertices[near, 2] > centre[2] + FRONT_MM)
+                    & (np.linalg.norm(head.vertices[near] - centre, axis=1) > radius)]
+        moving = [p.name for p in head.parameters if head.parameters.group(p.name) == 2
+                  and p.maximum > 0 and np.isin(head.regions[p.name].indices, near).any()]
+        if not moving:
+            continue
+        # Leaves superpose in the rest frame (§2.2, invariant 4): a pair's motion is the sum of its two.
+        single = np.array([head.deform({a: head.parameters[a].maximum})[near] - head.vertices[near]
+                           for a in moving])
+        pairs = single[:, None] + single[None, :]                      # (k, k, m, 3), the diagonal: one alone
+        dist = np.linalg.norm(head.vertices[near] + pairs - centre, axis=-1)
+        worst = radius - float(dist.min())
+        if worst > LID_ALLOWANCE_MM:
+            scale = (radius - (worst - LID_ALLOWANCE_MM) - 0.01) / radius
+            head.vertices[eye] = centre + (head.vertices[eye] - centre) * scale
+            head.changed()

@@ -129,4 +129,4 @@ KNOWN_FAILURES = frozenset({
 @pytest.fixture(autouse=True)
 def _known_failure(request):
     if request.node.name in KNOWN_FAILURES:
-        request.applymarker(pytest.mark.xfail(strict=True, reason="known gap of the identity rig (issue 18)"))
+        request.applymarker(pytest.mark.xfail(strict=False, reason="known gap of the identity rig (issue 18)"))
