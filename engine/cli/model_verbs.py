@@ -145,8 +145,17 @@ def model_summary(model: Model) -> dict[str, Any]:
         p = tree[name]
         parameters.append({"name": p.name, "type": p.kind, "group": tree.group(name), "parent": p.parent,
                            "min": p.minimum, "max": p.maximum, "default": p.default})
-    return {"parameters": parameters, "landmarks": {k: int(v) for k, v in model.landmarks.items()},
-            "vertices": int(model.n_vertices)}
+    summary: dict[str, Any] = {"parameters": parameters,
+                               "landmarks": {k: int(v) for k, v in model.landmarks.items()},
+                               "vertices": int(model.n_vertices)}
+    if model.texture is not None:       # only textured models have the key
+        texture = model.texture
+        summary["texture"] = {"corners": len(texture.corner_uv),
+                              "textured_polygons": int(texture.textured_faces().sum()),
+                              "images": [{"name": i.name, "width": int(i.pixels.shape[1]),
+                                          "height": int(i.pixels.shape[0]), "channels": i.channels}
+                                         for i in texture.images]}
+    return summary
 
 
 def model_report(model: Model) -> str:
@@ -176,4 +185,9 @@ def model_report(model: Model) -> str:
     lines.append("parts: " + ", ".join(f"{part} ({counts[i]} vertices)" for i, part in enumerate(model.parts)))
     ids = sorted(model.landmarks, key=landmark_sort_key)
     lines.append(f"landmarks: {len(ids)}" + (f" ({', '.join(ids)})" if ids else ""))
+    if model.texture is not None:
+        texture = model.texture
+        images = ", ".join(f"{i.name} ({i.pixels.shape[1]}×{i.pixels.shape[0]})" for i in texture.images)
+        lines.append(f"texture: {int(texture.textured_faces().sum())} of {n_polygons} polygons show an image; "
+                     f"images: {images or 'none'}")
     return "\n".join(lines)

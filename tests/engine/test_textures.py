@@ -387,6 +387,16 @@ def test_pose_verb_writes_obj_with_mtl_and_png_that_read_back(tmp_path):
     np.testing.assert_array_equal(back.texture.images[0].pixels, model.texture.images[0].pixels)
 
 
+def test_info_verb_tells_the_texture(tmp_path):
+    import json
+
+    save_model(textured_plane(), tmp_path / "plane.xml")
+    text = run_cli("info", "-m", tmp_path / "plane.xml")
+    assert "texture: 1 of 2 polygons show an image; images: red_blue (16×8), spare (4×4)" in text.stdout
+    summary = json.loads(run_cli("info", "-m", tmp_path / "plane.xml", "--json").stdout)
+    assert summary["texture"]["images"][1] == {"name": "spare", "width": 4, "height": 4, "channels": 4}
+
+
 def test_pose_of_an_untextured_model_writes_no_mtl(tmp_path):
     model = textured_plane()
     model.texture = None
