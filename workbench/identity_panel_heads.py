@@ -4,7 +4,8 @@
 and its viewport. While a slider is dragged, :meth:`IdentityHeads.preview`
 asks for the head of an identity; at the next turn of the event loop the
 latest one asked for is drawn (:func:`engine.identity.identity_vertices`,
-a few ms, plus the pose the document shows), so a fast drag draws no stale
+a few ms, plus the pose the document shows; drawn without multisampling
+until the release, as a brush stroke is), so a fast drag draws no stale
 frames. On release, :meth:`IdentityHeads.request` makes the whole head
 (:func:`engine.identity.make_identity_head`, 0.3–0.8 s: the rig carried over)
 on a worker thread and pushes it as one :class:`ReplaceModelCommand`: one
@@ -184,6 +185,7 @@ class IdentityHeads(QObject):
         """Drop a preview that will not become a head: the viewport shows the document again."""
         self._preview_timer.stop()
         self._wanted_preview = None
+        self.viewport.set_fast_rendering(False)
         if self._shown_preview is not None:
             self._shown_preview = None
             vertices = self.document.vertices()
@@ -212,6 +214,7 @@ class IdentityHeads(QObject):
         shown = self._shown_preview if self._shown_preview is not None else document.vertices()
         moved = np.flatnonzero(np.any(vertices != shown, axis=1))
         if len(moved):
+            self.viewport.set_fast_rendering(True)      # no multisampling while dragging, as a brush stroke
             self.viewport.update_points(moved, vertices[moved])
         self._shown_preview = vertices
         self.preview_ms.append(1000.0 * (time.perf_counter() - started))
@@ -228,6 +231,7 @@ class IdentityHeads(QObject):
         holds too) and is made once the head being made now is in.
         """
         self._pending = (identity, text)
+        self.viewport.set_fast_rendering(False)
         if self._build is None:
             self._start_next()
 

@@ -230,7 +230,10 @@ class Viewport(QWidget):
             array = pv.convert_array(points.GetData())
             array[local] = positions[rows]
             points.Modified()
-            view.update_normals_near(local)
+            if 2 * len(local) > view.mesh.n_points:
+                view.update_normals()           # most of the part moved (an identity preview): the whole-part
+            else:                               # filter is faster than the local update
+                view.update_normals_near(local)
         self._schedule_render()
 
     def set_fast_rendering(self, on: bool) -> None:
