@@ -27,6 +27,7 @@ from engine.model import InfluenceRegion, Model
 CLEARANCE = 0.15        # mm left between the lips where they meet, as on the default head
 CLOSURE = "lower_lip_raise"
 KEPT_APART = ("mouth_widen", "lip_protrude", "upper_lip_raise")
+SECTIONS = 31           # sagittal sections checked across the mouth (the derivation checks 61)
 
 
 def jaw_share(model: Model) -> np.ndarray:
@@ -61,7 +62,7 @@ def refit_articulation(base: Model, head: Model) -> bool:
     region = np.clip(_dense_field(base, CLOSURE)[:, 2] / base_forward, 0.0, 1.0)   # z = region · forward
     forward = float(head.vertices[lm["2.2"], 2] - head.vertices[lm["2.3"], 2])
     try:
-        closure, _ = fit_closure(contact, region, forward, CLEARANCE, iterations=3, steps=12)
+        closure, _ = fit_closure(contact, region, forward, CLEARANCE, nodes=13, iterations=3, steps=12)
         adjacency = vertex_adjacency(head.polygons(), n)
         lower_side = is_skin & ~contact.upper_vertex
         companions = [np.zeros_like(closure), closure]
@@ -70,7 +71,8 @@ def refit_articulation(base: Model, head: Model) -> bool:
             F = _dense_field(head, name)
             if name == "lip_protrude":
                 F = follow_upper_lip(contact, F, head.vertices + closure)
-            fields[name], _ = keep_lips_apart(contact, F, CLEARANCE, companions, adjacency, lower_side)
+            fields[name], _ = keep_lips_apart(contact, F, CLEARANCE, companions, adjacency, lower_side,
+                                              sections=SECTIONS)
     except LipContactError:
         return False
     for name, field in fields.items():

@@ -92,12 +92,17 @@ class LipContact:
 
     def _cut(self, P: np.ndarray, x: float) -> tuple[np.ndarray, np.ndarray]:
         """Segments (k, 2, 2) in (z, y) where the plane X = x cuts the mouth triangles, and their triangles."""
+        segments, keep, _ = self.cut_with(P, x, np.zeros(len(P)))
+        return segments, keep
+
+    def cut_with(self, P: np.ndarray, x: float, values: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """As :meth:`_cut`, and a per-vertex ``values`` interpolated to the segments' ends (k, 2)."""
         tx = P[self.triangles, 0]
         near = np.flatnonzero((tx.min(axis=1) < x) & (tx.max(axis=1) >= x))   # only these can be cut
-        pts = P[self.triangles[near]]
+        pts = np.concatenate([P[self.triangles[near]], values[self.triangles[near]][..., None]], axis=2)
         d = pts[:, :, 0] - x
         below = d < 0
-        segments = np.zeros((len(pts), 2, 2))
+        segments = np.zeros((len(pts), 2, 3))
         count = np.zeros(len(pts), dtype=int)
         for a, b in ((0, 1), (1, 2), (2, 0)):
             crossing = below[:, a] != below[:, b]
@@ -105,11 +110,11 @@ class LipContact:
             q = pts[:, a] + t[:, None] * (pts[:, b] - pts[:, a])
             for slot in (0, 1):
                 put = crossing & (count == slot)
-                segments[put, slot] = q[put][:, [2, 1]]
+                segments[put, slot] = q[put][:, [2, 1, 3]]
                 count[put] += 1
                 crossing &= ~put
         keep = np.flatnonzero(count == 2)
-        return segments[keep], near[keep]
+        return segments[keep, :, :2], near[keep], segments[keep, :, 2]
 
     def section(self, P: np.ndarray, x: float) -> tuple[np.ndarray, np.ndarray]:
         """Upper-lip and lower-lip outlines in the sagittal plane X = x, as (z, y) segments."""
@@ -259,15 +264,30 @@ def fit_closure(contact: LipContact, region: np.ndarray, forward: float, clearan
         return region[:, None] * T
 
     def clears(P: np.ndarray, x: float) -> Callable[[float], bool]:
-        return lambda v: contact.section_clear(P + v * up, x + 1e-4, clearance)
+        """Whether the section at ``x`` is clear with the lower lip lifted by v (cut once, then only lifted)."""
+        segments, k, lift_at = contact.cut_with(P, x, up[:, 1])
+        upper = contact.upper_triangle[k]
+        U, L0, U_lift, L_lift = segments[upper], segments[~upper], lift_at[upper], lift_at[~upper]
+
+        def holds(v: float) -> bool:
+            Uv = U.copy()
+            Uv[..., 1] += v * U_lift
+            Lv = L0.copy()
+            Lv[..., 1] += v * L_lift
+            return contact.crossings(Uv, Lv) == 0 and contact.distance(Uv, Lv) >= clearance
+        return holds
 
     lift = np.zeros(nodes)
     for _ in range(iterations):
         P = rest + field(lift)
-        extra = [_largest(clears(P, x), -6.0, 6.0, steps) for x in xs]
+        extra = [_largest(clears(P, x + 1e-4), -6.0, 6.0, steps) for x in xs]
         lift = lift + smooth_nodes(extra)
     # one common downward shift, if needed, so that the sections between the nodes clear as well
-    shift = _smallest(lambda s: contact.clear(rest + field(lift, s), clearance), 0.0, 3.0)
+    # (the shift lowers the region as a lift of −s does: each checked section is cut once)
+    P = rest + field(lift)
+    half = contact.half_width(P)
+    checks = [clears(P, x) for x in np.linspace(-contact.span, contact.span, CHECK_SECTIONS) * half + 1e-4]
+    shift = _smallest(lambda s: all(holds(-s) for holds in checks), 0.0, 3.0)
     return field(lift, shift), lift
 
 
@@ -287,7 +307,7 @@ def follow_upper_lip(contact: LipContact, D: np.ndarray, closed: np.ndarray, dep
 
 def keep_lips_apart(contact: LipContact, D: np.ndarray, clearance: float, companions: Sequence[np.ndarray],
                     adjacency: sparse.csr_matrix, lower_side: np.ndarray,
-                    rounds: int = 20) -> tuple[np.ndarray, float]:
+                    rounds: int = 20, sections: int = CHECK_SECTIONS) -> tuple[np.ndarray, float]:
     """``D`` with the lower lip lowered wherever ``D`` (alone, and added to each companion field)
     would push it into the upper lip; the lowering spreads over three rings of neighbours."""
     rest = contact.rest
@@ -298,7 +318,7 @@ def keep_lips_apart(contact: LipContact, D: np.ndarray, clearance: float, compan
         owed = np.zeros(len(rest))
         for extra in companions:
             owed = np.maximum(owed, contact.overlap(rest + out + extra, clearance))
-        if owed.max() < 1e-3 and all(contact.clear(rest + out + extra, 0.0) for extra in companions):
+        if owed.max() < 1e-3 and all(contact.clear(rest + out + extra, 0.0, sections) for extra in companions):
             return out, float(lowered.max())
         step = owed + 0.02 * (owed > 0)
         for _ in range(3):

