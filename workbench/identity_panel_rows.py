@@ -15,6 +15,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QSignalBlocker, Qt, Signal
+from PySide6.QtGui import QWheelEvent
 from PySide6.QtWidgets import (
     QDoubleSpinBox,
     QGridLayout,
@@ -34,6 +35,27 @@ if TYPE_CHECKING:
 
 GROUP_TITLES = {"macro": "Sex, age, ancestry, build"}
 DIRECTION_WORDS = {"decr", "incr", "in", "out", "down", "up", "backward", "forward", "less", "more"}
+
+
+class WheelSafeSlider(QSlider):
+    """A slider the mouse wheel moves only once it has focus: wheeling down the panel scrolls it instead
+    of reshaping the face at every row the pointer passes."""
+
+    def wheelEvent(self, event: QWheelEvent) -> None:
+        if self.hasFocus():
+            super().wheelEvent(event)
+        else:
+            event.ignore()
+
+
+class WheelSafeSpinBox(QDoubleSpinBox):
+    """A value box the mouse wheel changes only once it has focus (as :class:`WheelSafeSlider`)."""
+
+    def wheelEvent(self, event: QWheelEvent) -> None:
+        if self.hasFocus():
+            super().wheelEvent(event)
+        else:
+            event.ignore()
 
 
 def short_label(parameter: IdentityParameter) -> str:
@@ -62,14 +84,16 @@ class IdentitySlider:
         self.label.setToolTip(tip)
         self.step, self.decimals = slider_step(parameter.maximum - parameter.minimum)
         self.steps = max(1, round((parameter.maximum - parameter.minimum) / self.step))
-        self.slider = QSlider(Qt.Orientation.Horizontal)
+        self.slider = WheelSafeSlider(Qt.Orientation.Horizontal)
+        self.slider.setFocusPolicy(Qt.FocusPolicy.StrongFocus)      # a click or Tab gives it the wheel
         self.slider.setObjectName(f"identity:{parameter.name}")
         self.slider.setRange(0, self.steps)
         self.slider.setSingleStep(max(1, self.steps // 100))
         self.slider.setPageStep(max(1, self.steps // 10))
         self.slider.setMinimumWidth(90)
         self.slider.setToolTip(tip)
-        self.spin = QDoubleSpinBox()
+        self.spin = WheelSafeSpinBox()
+        self.spin.setFocusPolicy(Qt.FocusPolicy.StrongFocus)
         self.spin.setDecimals(self.decimals)
         self.spin.setRange(parameter.minimum, parameter.maximum)
         self.spin.setSingleStep(self.step * 10)

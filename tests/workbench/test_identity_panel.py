@@ -286,3 +286,30 @@ def test_screenshot_of_the_identity_panel_on_a_laptop_screen(head_window, qtbot,
     assert right <= viewport.width(), "the rows are cut off on the right: no room for the reset buttons"
     assert row.slider.width() >= 80
     assert window.viewport.width() >= 0.3 * window.width()                  # and the face is still there
+
+
+def test_the_mouse_wheel_passes_a_value_it_is_not_meant_for_on_to_the_scrolling_panel(head_window, qtbot):
+    from PySide6.QtCore import QPointF
+    from PySide6.QtGui import QWheelEvent
+    from PySide6.QtWidgets import QApplication
+
+    panel = open_panel(head_window, qtbot)
+    row = panel.rows["muscle"]
+
+    def wheel(widget) -> QWheelEvent:
+        event = QWheelEvent(QPointF(widget.rect().center()), QPointF(widget.mapToGlobal(widget.rect().center())),
+                            QPoint(0, 0), QPoint(0, -120), Qt.MouseButton.NoButton, Qt.KeyboardModifier.NoModifier,
+                            Qt.ScrollPhase.NoScrollPhase, False)
+        QApplication.sendEvent(widget, event)
+        return event
+
+    for widget in (row.slider, row.spin):                      # the pointer passes over them while scrolling
+        assert not wheel(widget).isAccepted()                  # ignored: Qt hands it to the scroll area
+        assert row.value() == 0.5 and not panel.heads.busy and not panel.heads.preview_ms
+    head_window.activateWindow()
+    qtbot.waitUntil(head_window.isActiveWindow)
+    row.slider.setFocus()                                      # clicked or tabbed to: now the wheel is its own
+    qtbot.waitUntil(row.slider.hasFocus)
+    assert wheel(row.slider).isAccepted() and row.value() < 0.5
+    wait_for_head(qtbot, panel)
+    assert head_window.document.model.identity.value("muscle") == row.value()
