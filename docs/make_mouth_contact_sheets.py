@@ -23,7 +23,7 @@ of a view is seen from the same place. Writes to ``docs/images/``:
     the left eye at rest, AU5, AU7, AU6 + AU7 and a half blink (the lashes
     on the lids).
 
-About 15 s on two cores.
+About 30 s on two cores.
 """
 
 from __future__ import annotations
