@@ -253,6 +253,10 @@ def fit_closure(contact: LipContact, region: np.ndarray, forward: float, clearan
     rest = contact.rest
     xs = np.linspace(0, contact.span * contact.half_width(rest), nodes)
     x_abs = np.abs(rest[:, 0])
+    if contact.touching_from is not None:
+        # beyond the span the lips already touch: the closure fades out there, forward motion too
+        fade = (x_abs - xs[-1]) / max(contact.touching_from + 2.0 - xs[-1], 1e-6)
+        region = region * (1.0 - smoothstep(fade))
     up = region[:, None] * np.array([0.0, 1.0, 0.0])
     # Where the lips touch at rest (a narrower mouth opening), the lift fades to nothing there.
     ends = ([], []) if contact.touching_from is None else ([contact.touching_from], [0.0])

@@ -201,3 +201,36 @@ def test_cli_makes_and_morphs_identities(tmp_path):
 def test_cli_refuses_bad_input_with_one_line(tmp_path, args, words):
     line = assert_user_error(run("identity", *args, cwd=tmp_path))
     assert words in line
+
+
+@pytest.mark.slow
+def test_an_identity_from_the_cli_speaks_with_closed_bilabials_and_open_vowels(tmp_path):
+    """`identity -o` then `say -m` (real Festival): the lips meet at p, b, m and part at a, as on the default head."""
+    import csv
+
+    person = tmp_path / "person.xml"
+    assert run("identity", "--set", "sex=0", "--set", "age=35", "--set", "african=1", "--set", "asian=0",
+               "--set", "caucasian=0", "-o", person).returncode == 0
+    tracks, phones = tmp_path / "tracks.csv", tmp_path / "phones.csv"
+    result = run("say", "-m", person, "Pappa osti mummolle paljon omenoita ja marjapuuroa.",
+                 "--tracks", tracks, "--phones", phones, "--fps", "200", "--quiet")   # 5 ms rows: short phones too
+    assert result.returncode == 0, result.stderr
+    head = load_model(person)
+    with open(tracks, newline="") as f:
+        rows = list(csv.DictReader(f))
+    times = np.array([float(r["time_ms"]) for r in rows])
+    names = [n for n in rows[0] if n != "time_ms"]
+    values = np.array([[float(r[n]) for n in names] for r in rows])
+    with open(phones, newline="") as f:
+        labelled = [(r["phone"], (float(r["start_ms"]) + float(r["end_ms"])) / 2) for r in csv.DictReader(f)]
+
+    def gap(at_ms):
+        row = np.array([np.interp(at_ms, times, values[:, k]) for k in range(len(names))])
+        lm = head.landmark_positions(dict(zip(names, row, strict=True)))
+        return float(np.linalg.norm(lm["2.2"] - lm["2.3"]))
+
+    closed = [gap(t) for p, t in labelled if p in ("p", "b", "m")]
+    opened = [gap(t) for p, t in labelled if p.rstrip(":") == "a"]
+    assert len(closed) >= 5 and len(opened) >= 4
+    assert max(closed) <= 1.0, f"lip gap at a bilabial: {max(closed):.2f} mm"
+    assert np.mean(opened) >= 6.0, f"mean lip gap at a: {np.mean(opened):.2f} mm"
