@@ -161,7 +161,9 @@ class IdentityPanel(QWidget):
         if why_not is not None:
             self._say(why_not, "error")
         elif identity is not None and identity.values:
-            self._say(f"{len(identity.values)} values differ from the default head.", "info")
+            shares = ", ".join(f"{100 * share:.0f}% {race}" for race, share in identity.ancestry().items())
+            self._say(f"{len(identity.values)} values differ from the default head. Ancestry, normalised: "
+                      f"{shares}.", "info")
         else:
             self._say("The default head's identity. Drag a slider to reshape the face.", "info")
 
