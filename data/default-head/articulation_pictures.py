@@ -105,9 +105,9 @@ def sheet(rows, column_labels, row_labels, scale=0.5, pad=6, label_height=26, la
 def sections_picture(model, states, xs=(0.0, 6.0, 12.0, 17.0), cell=(330, 200), window=(22.0, 13.0), pad=6):
     """Sagittal sections through the lips (forward = right, up = up), one row per state, one column per x.
 
-    Upper lip blue, lower lip red, as ``lip_contact.LipContact`` tells them apart; the same
+    Upper lip blue, lower lip red, as ``engine.identity.lip_contact.LipContact`` tells them apart; the same
     scale in every cell, each window following the front of the lips."""
-    from lip_contact import LipContact
+    from engine.identity.lip_contact import LipContact
 
     n = model.n_vertices
     jaw = model.regions["jaw_open"].dense(n)

