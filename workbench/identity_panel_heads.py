@@ -28,6 +28,7 @@ Models without the default head's mesh get no identities (:meth:`IdentityHeads.u
 from __future__ import annotations
 
 import time
+from collections import deque
 from collections.abc import Callable
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
@@ -126,7 +127,7 @@ class IdentityHeads(QObject):
         self.viewport = viewport
         #: Asked before a change would drop edits; gets the reason, returns whether to go on. Tests replace it.
         self.ask_discard: Callable[[str], bool] = lambda _reason: True
-        self.preview_ms: list[float] = []       # time of each preview drawn (identity vertices + viewport), ms
+        self.preview_ms: deque[float] = deque(maxlen=1000)   # time of each preview drawn (vertices + viewport), ms
         self._wanted_preview: Identity | None = None
         self._shown_preview: np.ndarray | None = None
         self._pending: tuple[Identity, str] | None = None
@@ -256,13 +257,13 @@ class IdentityHeads(QObject):
         self.busy_changed.emit(True)
         self._poll_timer.start()
 
-    def wait(self, seconds: float = 60.0) -> None:
-        """Block until the head being made is ready and applied (scripts and benchmarks; the GUI freezes)."""
-        deadline = time.monotonic() + seconds
-        while self.busy and time.monotonic() < deadline:
-            if self._build is not None:
-                self._build.future.exception(timeout=max(deadline - time.monotonic(), 0.0))
-            self._poll()
+    def stop(self) -> None:
+        """Make no more heads (the window is closing): a head being made is thrown away when it comes."""
+        self._preview_timer.stop()
+        self._poll_timer.stop()
+        self._wanted_preview = None
+        self._pending = None
+        self._build = None
 
     def _poll(self) -> None:
         build = self._build

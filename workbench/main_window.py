@@ -158,6 +158,7 @@ class MainWindow(QMainWindow):
         self._closed = True
         self.save_layout()
         self.autosaver.stop()
+        self.identity_panel.heads.stop()         # a head still being made must not reach a closed viewport
         self.autosaver.session.close()           # a clean shutdown leaves no recovery copy
         self.document.undo_stack.clear()         # the commands go with the window
         self.viewport.close_plotter()

@@ -112,6 +112,20 @@ def test_a_drag_reshapes_the_face_live_and_its_release_is_one_undo_step(head_win
     assert_drawn(window, made.vertices)
 
 
+def test_closing_the_window_while_a_head_is_being_made_drops_it(head_window, qtbot):
+    window = head_window
+    panel = open_panel(window, qtbot)
+    heads = panel.heads
+    panel.rows["age"].spin.setValue(40.0)
+    assert heads.busy
+    future = heads._build.future
+    assert window.close()                                     # nothing unsaved yet: no question
+    qtbot.waitUntil(future.done, timeout=HEAD_TIMEOUT_MS)
+    qtbot.wait(3 * 20)                                        # a few poll intervals: nothing may arrive
+    assert not heads.busy and window.document.undo_stack.count() == 0
+    assert window.document.model.identity is None
+
+
 def test_the_preview_wears_the_pose_the_document_shows(head_window, qtbot):
     window = head_window
     panel = open_panel(window, qtbot)
