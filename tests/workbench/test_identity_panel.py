@@ -328,3 +328,33 @@ def test_the_mouse_wheel_passes_a_value_it_is_not_meant_for_on_to_the_scrolling_
     assert wheel(row.slider).isAccepted() and row.value() < 0.5
     wait_for_head(qtbot, panel)
     assert head_window.document.model.identity.value("muscle") == row.value()
+
+
+def test_undoing_past_an_identity_change_undoes_earlier_edits_on_the_model_they_were_made_on(head, qtbot):
+    """The document keeps its undo stack across a replaced model: each command edits ``document.model``,
+    which undo has put back by the time an earlier command is undone."""
+    from engine.identity import make_identity_head
+    from workbench.document import ModelDocument
+
+    default = head.copy()
+    document = ModelDocument(default)
+    replaced: list[object] = []
+    document.model_replaced.connect(replaced.append)
+    document.set_value("jaw_open", 0.4)
+    name = "jaw_open"
+    original = default.regions[name].weights.copy()
+    document.push(WeightsChangedCommand(document, name, default.regions[name].indices, original * 0.5))
+    made = make_identity_head(Identity({"age": 70.0}), default.copy())
+    document.push(ReplaceModelCommand(document, made, "Identity: age 25 → 70", default))
+    assert document.model is made and replaced == [made] and document.undo_stack.count() == 2
+    assert document.value("jaw_open") == 0.4                     # the pose stays
+    np.testing.assert_allclose(document.vertices(), made.deform(document.values))
+    document.undo_stack.undo()
+    assert document.model is default and replaced == [made, default]
+    np.testing.assert_array_equal(default.regions[name].weights, original * 0.5)
+    document.undo_stack.undo()                                  # the paint, on the model it was made on
+    np.testing.assert_array_equal(default.regions[name].weights, original)
+    document.undo_stack.redo()
+    document.undo_stack.redo()
+    assert document.model is made and made.identity.values == {"age": 70.0}
+    np.testing.assert_array_equal(default.regions[name].weights, original * 0.5)
