@@ -49,7 +49,8 @@ from engine.errors import UserError
 from engine.formats.text_files import read_bounded_text
 
 FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise",
-                 "audio_text", "align_phone", "expression_b", "morph", "audio", "labels")
+                 "audio_text", "align_phone", "expression_b", "morph", "audio", "labels", "identity", "identity_b",
+                 "identity_morph")
 KINDS = ("mp4", "wav", "png", "silent-mp4", "phones", "tracks")
 NOISES = ("white", "speech-shaped")
 MAX_STIMULI = 100_000
@@ -152,7 +153,11 @@ def parse_design(text: str, path: str | Path = "<design>") -> Design:
                               "a recorded voice needs both factors: audio (the WAV) and labels")
         if "audio" in row and ("voice" in row or "audio_text" in row):
             raise where.error("audio", "a recorded voice cannot also have a Festival voice or audio_text")
-        for factor in ("model", "noise", "audio", "labels"):
+        if "identity_b" in row and "identity_morph" not in row:
+            raise where.error("identity_b", "an identity continuum needs identity_morph (0–100 %) with identity_b")
+        if "identity_morph" in row and "identity_b" not in row:
+            raise where.error("identity_morph", "identity_morph needs identity_b (the identity at 100 %)")
+        for factor in ("model", "noise", "audio", "labels", "identity", "identity_b"):
             value = row.get(factor)
             if isinstance(value, str) and (factor != "noise" or value not in NOISES):
                 extra[value] = (path.parent / value).resolve()
@@ -230,7 +235,19 @@ def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
     elif name == "model":
         need(isinstance(value, str), "must be a model file name (relative to the design)")
         need((folder / value).is_file(), f"no such model file ({(folder / value)})")
-    elif name in ("intensity", "morph"):
+    elif name in ("identity", "identity_b"):
+        need(isinstance(value, dict | str), "must be a table of identity parameters ({sex = 1, age = 60}) or a "
+                                            "model file with an identity (relative to the design)")
+        if isinstance(value, str):
+            need((folder / value).is_file(), f"no such model file ({folder / value})")
+        else:
+            from engine.identity import Identity, IdentityError
+
+            try:
+                Identity(value)
+            except IdentityError as exc:
+                need(False, exc.message)
+    elif name in ("intensity", "morph", "identity_morph"):
         need(number and 0 <= value <= 100, "must be a number from 0 to 100 (%)")
     elif name in ("audio", "labels"):
         need(isinstance(value, str), f"must be a file name (relative to the design): the recording's "

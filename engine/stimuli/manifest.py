@@ -102,7 +102,7 @@ def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: lis
     rows = []
     for record in records:
         row: dict[str, Any] = {"id": record["id"]}
-        row.update({name: record["levels"].get(name, "") for name in factors})
+        row.update({name: level_text(record["levels"].get(name, "")) for name in factors})
         for kind in kinds:
             row[f"file_{kind}"] = record["files"][kind]["name"]
             row[f"sha256_{kind}"] = record["files"][kind]["sha256"]
@@ -126,7 +126,7 @@ def _condition_rows(records: list[dict[str, Any]], factors: list[str], kinds: li
     rows = []
     for record in records:
         row: dict[str, Any] = {"stimulus": record["files"][main]["name"], "id": record["id"]}
-        row.update({name: record["levels"].get(name, "") for name in factors})
+        row.update({name: level_text(record["levels"].get(name, "")) for name in factors})
         row.update({f"file_{kind.replace('-', '_')}": record["files"][kind]["name"] for kind in kinds})
         row["speech_onset_ms"] = _ms(record["speech_onset_ms"])
         rows.append(row)
@@ -236,3 +236,10 @@ def _festival_version() -> str | None:
 
 
 __all__ = ["CHECKS", "CONDITIONS", "FIXED_FACTORS", "MANIFEST", "PROVENANCE", "provenance", "write_set_files"]
+
+
+def level_text(level: Any) -> str | Any:
+    """A level as a table cell: an identity table as ``sex=1;age=60`` (readable in R, pandas and PsychoPy)."""
+    if isinstance(level, dict):
+        return ";".join(f"{k}={v:g}" if isinstance(v, int | float) else f"{k}={v}" for k, v in level.items())
+    return level

@@ -68,6 +68,10 @@ def test_crossing_lists_and_blocks():
     ('[factors\ntext = ["a."]\n', 1, "not a TOML file"),
     ('seed = -1\n[factors]\ntext = ["a."]\n', 1, "seed must be a whole number"),
     ('[output]\nfps = 30\n', 1, "no [factors] table"),
+    ('[factors]\ntext = ["a."]\nidentity = [{age = 120}]\n', 3, "'age' = 120 is outside its range [1, 90]"),
+    ('[factors]\ntext = ["a."]\nidentity = [{nose = 1}]\n', 3, "unknown identity parameter 'nose'"),
+    ('[factors]\ntext = ["a."]\nidentity = [3]\n', 3, "must be a table of identity parameters"),
+    ('[factors]\ntext = ["a."]\nidentity_b = [{sex = 1}]\n', 3, "needs identity_morph"),
 ])
 def test_a_bad_design_names_file_line_and_key(tmp_path, text, line, message):
     design = tmp_path / "bad.toml"
@@ -75,6 +79,15 @@ def test_a_bad_design_names_file_line_and_key(tmp_path, text, line, message):
     error = assert_user_error(run("stimuli", design, "-o", tmp_path / "out"))
     assert error.startswith(f"error: {design}:{line}: ") and message in error, error
     assert not (tmp_path / "out").exists()                               # nothing is written
+
+
+def test_identity_levels_are_tables_and_the_manifest_writes_them_readably():
+    design = load_design(EXAMPLES / "identity_continuum.toml")
+    assert [s.levels["identity_morph"] for s in design.stimuli] == [0, 25, 50, 75, 100]
+    assert design.stimuli[0].levels["identity_b"] == {"sex": 1.0, "age": 60}
+    from engine.stimuli.manifest import level_text
+
+    assert level_text({"sex": 1.0, "age": 60}) == "sex=1;age=60"
 
 
 def test_dry_run_lists_and_estimates(tmp_path):
