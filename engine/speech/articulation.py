@@ -130,6 +130,31 @@ class ArticulationTable:
         return ArticulationTable(self.parameters, rows, self.exponent, self.file, lines, self.phoneset,
                                  dict(self.settings), frozenset(derived))
 
+    def with_blended_row(self, phone: str, toward: str, share: float) -> ArticulationTable:
+        """A copy where ``phone`` (and its long form) articulates ``share`` of the way to ``toward``:
+        every target's value and dominance blended linearly (a viseme continuum, e.g. p → t).
+
+        >>> finnish = load_articulation()
+        >>> p, t = finnish.target("p", "lower_lip_raise"), finnish.target("t", "lower_lip_raise")
+        >>> finnish.with_blended_row("p", "t", 0.5).target("p", "lower_lip_raise") == (p + t) / 2
+        True
+        """
+        if not 0.0 <= share <= 1.0:
+            raise LibraryError(f"a viseme blend share must be in [0, 1], not {share:g}", file=self.file)
+        start, end = self.row(phone), self.row(toward)
+
+        def blend(a: Target, b: Target) -> Target:
+            return Target((1 - share) * a.value + share * b.value, (1 - share) * a.dominance + share * b.dominance,
+                          (1 - share) * a.anticipation + share * b.anticipation,
+                          (1 - share) * a.carryover + share * b.carryover, a.enforced or b.enforced)
+
+        rows = dict(self.rows)
+        for name in (phone, phone + LONG_MARK):
+            if name in rows or name == phone:
+                rows[name] = [blend(a, b) for a, b in zip(start, end, strict=True)]
+        return ArticulationTable(self.parameters, rows, self.exponent, self.file, dict(self.lines), self.phoneset,
+                                 dict(self.settings), self.derived)
+
     def check(self, model: Model) -> None:
         """Every parameter of the table exists on ``model`` (else a LibraryError at ``$parameters``)."""
         for name in self.parameters:

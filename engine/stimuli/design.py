@@ -50,7 +50,7 @@ from engine.formats.text_files import read_bounded_text
 
 FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise",
                  "audio_text", "align_phone", "expression_b", "morph", "audio", "labels", "identity", "identity_b",
-                 "identity_morph")
+                 "identity_morph", "viseme", "viseme_b", "viseme_morph")
 KINDS = ("mp4", "wav", "png", "silent-mp4", "phones", "tracks")
 NOISES = ("white", "speech-shaped")
 MAX_STIMULI = 100_000
@@ -153,6 +153,11 @@ def parse_design(text: str, path: str | Path = "<design>") -> Design:
                               "a recorded voice needs both factors: audio (the WAV) and labels")
         if "audio" in row and ("voice" in row or "audio_text" in row):
             raise where.error("audio", "a recorded voice cannot also have a Festival voice or audio_text")
+        visemes = [k for k in ("viseme", "viseme_b", "viseme_morph") if k in row]
+        if visemes and len(visemes) != 3:
+            missing = next(k for k in ("viseme", "viseme_b", "viseme_morph") if k not in row)
+            raise where.error(visemes[0], f"a viseme continuum needs viseme, viseme_b and viseme_morph ({missing} "
+                                          "is missing)")
         if "identity_b" in row and "identity_morph" not in row:
             raise where.error("identity_b", "an identity continuum needs identity_morph (0–100 %) with identity_b")
         if "identity_morph" in row and "identity_b" not in row:
@@ -230,7 +235,7 @@ def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
             raise where.error(name, f"'{name}' level {value!r}: {what}")
 
     number = isinstance(value, int | float) and not isinstance(value, bool)
-    if name in ("text", "voice", "expression", "audio_text", "align_phone", "expression_b"):
+    if name in ("text", "voice", "expression", "audio_text", "align_phone", "expression_b", "viseme", "viseme_b"):
         need(isinstance(value, str) and value.strip() != "", "must be a non-empty string")
     elif name == "model":
         need(isinstance(value, str), "must be a model file name (relative to the design)")
@@ -247,7 +252,7 @@ def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
                 Identity(value)
             except IdentityError as exc:
                 need(False, exc.message)
-    elif name in ("intensity", "morph", "identity_morph"):
+    elif name in ("intensity", "morph", "identity_morph", "viseme_morph"):
         need(number and 0 <= value <= 100, "must be a number from 0 to 100 (%)")
     elif name in ("audio", "labels"):
         need(isinstance(value, str), f"must be a file name (relative to the design): the recording's "

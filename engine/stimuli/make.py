@@ -68,6 +68,13 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     else:
         speech = speak(str(levels.get("text", "")), model, voice=levels.get("voice"), library=_library(),
                        name=name)
+    if "viseme" in levels:              # a viseme continuum: one phone articulated part of the way to another
+        from engine.speech.articulation import table_for
+        from engine.speech.say import animate
+
+        table = table_for(speech.utterance).with_blended_row(str(levels["viseme"]), str(levels["viseme_b"]),
+                                                              float(levels["viseme_morph"]) / 100.0)
+        speech = animate(speech.script, speech.utterance, model, _library(), table)
     timeline, apex_ms = _with_expression(speech, model, levels)
     utterance, alignment = speech.utterance, 0.0
     if "audio_text" in levels:          # incongruent (McGurk): heard one utterance, seen another

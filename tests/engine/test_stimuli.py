@@ -7,6 +7,7 @@ worker processes on 127.0.0.1.
 from __future__ import annotations
 
 import csv
+import itertools
 import json
 import os
 import signal
@@ -72,6 +73,7 @@ def test_crossing_lists_and_blocks():
     ('[factors]\ntext = ["a."]\nidentity = [{nose = 1}]\n', 3, "unknown identity parameter 'nose'"),
     ('[factors]\ntext = ["a."]\nidentity = [3]\n', 3, "must be a table of identity parameters"),
     ('[factors]\ntext = ["a."]\nidentity_b = [{sex = 1}]\n', 3, "needs identity_morph"),
+    ('[factors]\ntext = ["a."]\nviseme = ["p"]\nviseme_b = ["t"]\n', 3, "viseme_morph is missing"),
 ])
 def test_a_bad_design_names_file_line_and_key(tmp_path, text, line, message):
     design = tmp_path / "bad.toml"
@@ -88,6 +90,28 @@ def test_identity_levels_are_tables_and_the_manifest_writes_them_readably():
     from engine.stimuli.manifest import level_text
 
     assert level_text({"sex": 1.0, "age": 60}) == "sex=1;age=60"
+
+
+@needs_festival
+@pytest.mark.slow
+def test_a_viseme_continuum_opens_the_lips_step_by_step(tmp_path, head):
+    """p → t in five steps: at the middle of the p the inner lip gap grows from closed to a t's opening."""
+    out = tmp_path / "set"
+    assert run("stimuli", EXAMPLES / "viseme_continuum.toml", "-o", out, "--workers", "2").returncode == 0
+    gaps = []
+    for row in rows(out / "manifest.csv"):
+        phones = rows(out / row["file_phones"])
+        p = next(ph for ph in phones if ph["phone"] == "p")
+        middle = (float(p["start_ms"]) + float(p["end_ms"])) / 2
+        tracks = rows(out / row["file_tracks"])
+        times = np.array([float(r["time_ms"]) for r in tracks])
+        names = [n for n in tracks[0] if n != "time_ms"]
+        values = {n: float(np.interp(middle, times, [float(r[n]) for r in tracks])) for n in names}
+        lm = head.landmark_positions(values)
+        gaps.append(float(np.linalg.norm(lm["2.2"] - lm["2.3"])))
+    assert gaps[0] <= 1.2, f"the p at 0 % is closed ({gaps[0]:.2f} mm)"
+    assert all(b > a for a, b in itertools.pairwise(gaps)), gaps
+    assert gaps[-1] >= gaps[0] + 2.0, gaps
 
 
 def test_dry_run_lists_and_estimates(tmp_path):
