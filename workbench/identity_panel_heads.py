@@ -5,8 +5,8 @@ and its viewport. While a slider is dragged, :meth:`IdentityHeads.preview`
 asks for the head of an identity; at the next turn of the event loop the
 latest one asked for is drawn (:func:`engine.identity.identity_vertices`,
 a few ms, plus the pose the document shows; drawn without multisampling
-until the release, as a brush stroke is), so a fast drag draws no stale
-frames. On release, :meth:`IdentityHeads.request` makes the whole head
+until the head is made, as a brush stroke is until its release), so a fast
+drag draws no stale frames. On release, :meth:`IdentityHeads.request` makes the whole head
 (:func:`engine.identity.make_identity_head`, 0.3–0.8 s: the rig carried over)
 on a worker thread and pushes it as one :class:`ReplaceModelCommand`: one
 undo step per drag, and undo puts the old head back.
@@ -232,7 +232,6 @@ class IdentityHeads(QObject):
         holds too) and is made once the head being made now is in.
         """
         self._pending = (identity, text)
-        self.viewport.set_fast_rendering(False)
         if self._build is None:
             self._start_next()
 
@@ -285,5 +284,6 @@ class IdentityHeads(QObject):
     def _finish(self) -> None:
         self._poll_timer.stop()
         if self._build is None and self._pending is None:
+            self.viewport.set_fast_rendering(False)     # the head is in: drawn with anti-aliasing again
             self.busy_changed.emit(False)
             self.settled.emit()
