@@ -42,11 +42,16 @@ def run_stimuli(args: argparse.Namespace) -> int:
             mark = "made" if stimulus.id in done else "to make"
             levels = ", ".join(f"{k}={v!r}" for k, v in stimulus.levels.items())
             print(f"{stimulus.id}  {mark:8s} {levels}")
-        todo = len(design.stimuli) - len(done)
+        todo = [s for s in design.stimuli if s.id not in done]
         workers = 1 if args.scheduler else (args.workers or default_workers())
-        seconds = todo * _seconds_per_stimulus(design) / max(1, min(workers, todo or 1))
-        print(f"{len(design.stimuli)} stimuli, {todo} to make, about {_duration(seconds)} with "
-              f"{'the cluster' if args.scheduler else f'{workers} worker(s)'}; kinds: "
+        from engine.stimuli.estimate import estimate
+
+        found = estimate(design, todo, workers)
+        timing = (f"about {_duration(found.seconds)} with "
+                  f"{'the cluster' if args.scheduler else f'{workers} worker(s)'} (stimulus {found.sample_id} "
+                  f"made here in {found.sample_seconds:.1f} s, the others scaled by their length)"
+                  if found is not None else "nothing to make")
+        print(f"{len(design.stimuli)} stimuli, {len(todo)} to make, {timing}; kinds: "
               f"{', '.join(design.output.kinds)}")
         return 0
     printer = progress_printer("stimuli", unit="stimuli")
@@ -61,13 +66,6 @@ def run_stimuli(args: argparse.Namespace) -> int:
                       file=sys.stderr)
         return 1
     return 0
-
-
-def _seconds_per_stimulus(design: Any) -> float:
-    """A rough cost of one stimulus on this kind of machine: 4 s of speech rendered at the set's size."""
-    width, height = design.output.size
-    video = sum(kind in design.output.kinds for kind in ("mp4", "silent-mp4"))
-    return 1.0 + video * 4.0 * design.output.fps * (width * height) / (640 * 480) / 60.0
 
 
 def _duration(seconds: float) -> str:

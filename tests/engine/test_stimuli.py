@@ -83,6 +83,14 @@ def test_a_bad_design_names_file_line_and_key(tmp_path, text, line, message):
     assert not (tmp_path / "out").exists()                               # nothing is written
 
 
+def test_the_estimate_scales_with_the_length_spoken():
+    from engine.stimuli.estimate import relative_length
+
+    design = parse_design('[factors]\ntext = ["Aa.", "Pappa osti mummolle paljon uusia omenoita."]\n', "d.toml")
+    short, long = (relative_length(design, s) for s in design.stimuli)
+    assert long > 3 * short
+
+
 def test_identity_levels_are_tables_and_the_manifest_writes_them_readably():
     design = load_design(EXAMPLES / "identity_continuum.toml")
     assert [s.levels["identity_morph"] for s in design.stimuli] == [0, 25, 50, 75, 100]
@@ -114,12 +122,14 @@ def test_a_viseme_continuum_opens_the_lips_step_by_step(tmp_path, head):
     assert gaps[-1] >= gaps[0] + 2.0, gaps
 
 
+@needs_festival
 def test_dry_run_lists_and_estimates(tmp_path):
+    """The estimate comes from one stimulus made here (in a temporary folder), scaled to the others."""
     result = run("stimuli", EXAMPLES / "minimal.toml", "-o", tmp_path / "out", "--dry-run")
     assert result.returncode == 0, result.stderr
     lines = result.stdout.splitlines()
     assert lines[0].startswith("0001  to make") and "av_offset_ms=-200" in lines[0]
-    assert lines[-1].startswith("6 stimuli, 6 to make, about ")
+    assert lines[-1].startswith("6 stimuli, 6 to make, about ") and "stimulus 0001 made here in" in lines[-1]
     assert not (tmp_path / "out").exists()
 
 

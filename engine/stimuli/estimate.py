@@ -1,0 +1,64 @@
+"""How long a stimulus set will take here: one stimulus made for real, the rest scaled from it.
+
+``stimuli --dry-run`` makes the set's first stimulus still to make in a
+temporary folder (thrown away), times it, and scales that time to every
+other stimulus by its expected length: the characters of its text (or the
+duration of its recording), its video kinds and frame rate, the same for
+every stimulus of a design. The estimate is of this machine, with its load
+at the moment; the cost of making each identity's head (once per worker) is
+in the measured stimulus when it has one.
+"""
+
+from __future__ import annotations
+
+import tempfile
+import time
+import wave
+from dataclasses import dataclass
+from pathlib import Path
+
+from engine.script.inline_commands import parse_script
+from engine.stimuli.design import Design, Stimulus
+from engine.stimuli.make import make_stimulus
+
+SET_SECONDS = 3.0       # the set's own work: starting workers, checks, manifest, contact sheet
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """Seconds for the stimuli to make, on ``workers`` workers, and the measured stimulus they come from."""
+
+    seconds: float
+    sample_id: str
+    sample_seconds: float
+
+
+def relative_length(design: Design, stimulus: Stimulus) -> float:
+    """A stimulus's expected length in arbitrary units (characters spoken, or 15 per second recorded)."""
+    levels = stimulus.levels
+    if "audio" in levels:
+        try:
+            with wave.open(str(design.extra_files[levels["audio"]]), "rb") as w:
+                return 15.0 * w.getnframes() / max(w.getframerate(), 1)
+        except (OSError, wave.Error, EOFError):
+            return 30.0
+    texts = [str(levels.get(k, "")) for k in ("text", "audio_text") if k in levels]
+    spoken = max((len(parse_script(t).text.strip()) for t in texts), default=0)
+    return 8.0 + spoken + abs(float(levels.get("av_offset_ms", 0.0))) / 1000.0 * 15.0
+
+
+def estimate(design: Design, todo: list[Stimulus], workers: int) -> Estimate | None:
+    """Make the first of ``todo`` in a temporary folder and scale its time to all of them (None if none)."""
+    if not todo:
+        return None
+    sample = todo[0]
+    with tempfile.TemporaryDirectory(prefix="ap-estimate-") as folder:
+        start = time.perf_counter()
+        make_stimulus(design, sample, Path(folder))
+        took = time.perf_counter() - start
+    unit = took / relative_length(design, sample)
+    workers = max(1, min(workers, len(todo)))
+    # each worker's first stimulus pays the start-up the sample paid here; then the rest share the workers
+    first = max(unit * relative_length(design, s) for s in todo[:workers])
+    rest = sum(unit * relative_length(design, s) for s in todo[workers:]) / workers
+    return Estimate(first + rest + SET_SECONDS, sample.id, took)
