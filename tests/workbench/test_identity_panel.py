@@ -358,3 +358,15 @@ def test_undoing_past_an_identity_change_undoes_earlier_edits_on_the_model_they_
     document.undo_stack.redo()
     assert document.model is made and made.identity.values == {"age": 70.0}
     np.testing.assert_array_equal(default.regions[name].weights, original * 0.5)
+
+
+def test_a_model_whose_identity_this_version_does_not_know_is_shown_as_such(head_window, qtbot):
+    from engine.model.identity_record import IdentityRecord
+
+    window = head_window
+    panel = open_panel(window, qtbot)
+    strange = window.document.model.copy()
+    strange.identity = IdentityRecord({"nose-made-up-decr-incr": 0.4}, "anny-9.9")   # e.g. newer shape data
+    window.document.replace_model(strange)
+    assert "cannot be shown" in panel.note.text() and "nose-made-up-decr-incr" in panel.note.text()
+    assert not any(box.isEnabled() for box in panel.groups.values()) and not panel.reset_all_button.isEnabled()
