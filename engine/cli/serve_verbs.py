@@ -1,0 +1,86 @@
+"""The ``serve`` verb: the head as a live service over WebSocket/JSON (``docs/serve.md``).
+
+Safe by default: it listens on 127.0.0.1; any address that is not loopback needs a token
+(``--token`` or the environment variable ``AP_SERVE_TOKEN``), and a client without it is refused.
+This version is headless only (``--headless``); the window, a detached Festival and LSL are to come.
+
+>>> check_listen_address("127.0.0.1", None)
+>>> check_listen_address("0.0.0.0", None)   # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+engine.errors.UserError: listening on 0.0.0.0 (not loopback) needs --token TOKEN: ...
+"""
+
+from __future__ import annotations
+
+import argparse
+import ipaddress
+import os
+from typing import Any
+
+from engine.cli.common import add_library_option, add_model_option
+from engine.errors import UserError
+
+TOKEN_VARIABLE = "AP_SERVE_TOKEN"
+LOOPBACK_NAMES = ("localhost",)
+
+
+def add_verbs(verbs: Any) -> None:
+    p = verbs.add_parser("serve", help="the live animator over WebSocket/JSON (headless in this version)")
+    add_model_option(p)
+    add_library_option(p)
+    p.add_argument("--host", default="127.0.0.1", metavar="H",
+                   help="address to listen on (default 127.0.0.1; any other needs --token)")
+    p.add_argument("--port", type=port_number, default=8765, metavar="P", help="port (default 8765; 0: any free one)")
+    p.add_argument("--headless", action="store_true",
+                   help="render nothing: parameter values and events only, on a 60 Hz frame clock (required "
+                        "in this version)")
+    p.add_argument("--token", default=None, metavar="TOKEN",
+                   help=f"clients must send 'Authorization: Bearer TOKEN' (default: ${TOKEN_VARIABLE}, if set)")
+    p.set_defaults(run=run_serve)
+
+
+def run_serve(args: argparse.Namespace) -> int:
+    """Check the options, load the model, serve until interrupted."""
+    import asyncio
+
+    from engine.cli.common import load_model_argument
+    from engine.commands import load_library
+
+    if not args.headless:
+        raise UserError("serve needs --headless in this version (the window mode is to come: docs/serve.md)")
+    token = args.token if args.token is not None else os.environ.get(TOKEN_VARIABLE) or None
+    if token is not None and (not token.strip() or any(ord(c) < 33 or ord(c) > 126 for c in token)):
+        raise UserError("--token must be printable ASCII without spaces")
+    check_listen_address(args.host, token)
+    model = load_model_argument(args.model)
+    library = load_library(args.library)
+    from engine.live.server import LiveServer
+
+    server = LiveServer(model, host=args.host, port=args.port, token=token, library=library)
+    asyncio.run(server.run(ready=lambda line: print(line, flush=True)))
+    return 0
+
+
+def check_listen_address(host: str, token: str | None) -> None:
+    """Refuse to listen beyond this computer without a token."""
+    if token is None and not is_loopback(host):
+        raise UserError(f"listening on {host} (not loopback) needs --token TOKEN: any computer that reaches it "
+                        "could drive the head")
+
+
+def is_loopback(host: str) -> bool:
+    """127.0.0.0/8, ::1 and 'localhost' are loopback; every other name or address counts as not."""
+    if host.lower() in LOOPBACK_NAMES:
+        return True
+    try:
+        return ipaddress.ip_address(host.strip("[]")).is_loopback
+    except ValueError:
+        return False
+
+
+def port_number(text: str) -> int:
+    """A TCP port, 0 … 65535."""
+    if not text.strip().isdigit() or not 0 <= int(text) <= 65535:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a port number (0 … 65535)")
+    return int(text)

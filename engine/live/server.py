@@ -1,0 +1,357 @@
+"""The live service: a frame clock at 60 Hz and a WebSocket server speaking the JSON protocol.
+
+One asyncio loop runs both. The frame clock is ``time.monotonic()``: frame ``n`` has the time
+``t = n · 1000 / fps`` ms and is due at ``epoch + n / fps`` seconds of ``time.monotonic()``;
+every frame advances the :class:`~engine.live.head.LiveHead`, and the events of that frame go to
+the connections they belong to, stamped with ``t``. When the loop falls behind it goes straight to
+the frame now due (no frame time is ever in the future). Festival runs in a worker thread, one
+utterance at a time, so frames keep coming while it synthesizes.
+
+Each connection's requests are answered in the order they came, one reply each; events and
+replies of a connection leave in the order they were made.
+
+>>> from engine import load_model
+>>> server = LiveServer(load_model(), host="127.0.0.1", port=0)
+>>> asyncio.run(server.run(ready=print))                  # doctest: +SKIP
+serving ws://127.0.0.1:43817 headless 60 Hz
+"""
+
+from __future__ import annotations
+
+import asyncio
+import hmac
+import json
+import math
+import signal
+import sys
+import time
+import traceback
+from collections.abc import Callable
+from contextlib import suppress
+from http import HTTPStatus
+from typing import Any
+
+from websockets.asyncio.server import ServerConnection, serve
+from websockets.exceptions import ConnectionClosed
+from websockets.http11 import Request as HttpRequest
+from websockets.http11 import Response as HttpResponse
+
+from engine.commands import Library, load_library, parse_commands_text, translate
+from engine.commands.command_files import Activation
+from engine.errors import UserError
+from engine.live.head import Event, LiveHead
+from engine.live.protocol import (
+    EVENT_TYPES,
+    MAX_AHEAD_MS,
+    MAX_FRAME_BYTES,
+    MAX_MESSAGE_BYTES,
+    MAX_TEXT_CHARS,
+    MAX_WAITING_UTTERANCES,
+    RATE_BURST,
+    RATE_PER_SECOND,
+    REQUEST_TYPES,
+    SCHEMA_VERSION,
+    Request,
+    RequestError,
+    RequestId,
+    check_values,
+    error_reply,
+    parse_request,
+)
+from engine.model.model import Model
+from engine.speech.synthesis import Synthesizer
+
+FPS = 60.0
+#: Messages waiting to be sent to one client; a client that reads slower than that is disconnected.
+MAX_OUTBOX = 50_000
+TOKEN_HEADER = "Authorization"
+
+
+class Client:
+    """One connection: its outbox (sent in order by a writer task), its rate budget, its waiting utterances."""
+
+    def __init__(self, connection: ServerConnection):
+        self.connection = connection
+        self.outbox: asyncio.Queue[str | None] = asyncio.Queue()
+        self.allowance = RATE_BURST
+        self.last_check = time.monotonic()
+        self.waiting_utterances: set[RequestId] = set()
+        self.cancelled: set[RequestId] = set()
+        self.closed = False
+        self.closing: asyncio.Future[None] | None = None
+
+    def send(self, message: dict[str, Any]) -> None:
+        if self.closed:
+            return
+        if self.outbox.qsize() >= MAX_OUTBOX:
+            self.closed = True
+            self.closing = asyncio.ensure_future(self.connection.close(1008, "the client does not read its messages"))
+            return
+        self.outbox.put_nowait(json.dumps(message, ensure_ascii=False, allow_nan=False))
+
+    def within_rate(self) -> bool:
+        now = time.monotonic()
+        self.allowance = min(RATE_BURST, self.allowance + (now - self.last_check) * RATE_PER_SECOND)
+        self.last_check = now
+        if self.allowance < 1.0:
+            return False
+        self.allowance -= 1.0
+        return True
+
+    async def write(self) -> None:
+        while True:
+            text = await self.outbox.get()
+            if text is None:
+                return
+            try:
+                await self.connection.send(text)
+            except ConnectionClosed:
+                return
+
+
+class LiveServer:
+    """The head of ``model`` served on ``host:port`` (port 0: any free port), headless."""
+
+    def __init__(self, model: Model, host: str = "127.0.0.1", port: int = 8765, token: str | None = None,
+                 library: Library | None = None, synthesizer: Synthesizer | None = None, fps: float = FPS):
+        self.model = model
+        self.host = host
+        self.port = port
+        self.token = token
+        self.library = load_library() if library is None else library
+        if synthesizer is None:
+            from engine.speech.festival import FestivalSynthesizer
+
+            synthesizer = FestivalSynthesizer()
+        self.synthesizer = synthesizer
+        self.fps = float(fps)
+        self.head = LiveHead(model)
+        self.epoch = time.monotonic()
+        self.epoch_unix = time.time()
+        self.frame = 0
+        self._synthesis_lock: asyncio.Lock | None = None
+        self._voices: list[str] | None = None
+        self._stopping: asyncio.Event | None = None
+        self._tasks: set[asyncio.Future[None]] = set()
+
+    # -- running -----------------------------------------------------------------------
+
+    async def run(self, ready: Callable[[str], None] | None = None) -> None:
+        """Serve until SIGINT/SIGTERM (or :meth:`close`); ``ready`` gets the line naming the bound address."""
+        self._synthesis_lock = asyncio.Lock()
+        self._stopping = asyncio.Event()
+        await asyncio.to_thread(self.voices)                   # Festival asked once, before any client waits
+        loop = asyncio.get_running_loop()
+        for signum in (signal.SIGINT, signal.SIGTERM):
+            with suppress(NotImplementedError, RuntimeError):
+                loop.add_signal_handler(signum, self._stopping.set)
+        async with serve(self._serve_client, self.host, self.port, max_size=MAX_FRAME_BYTES,
+                         process_request=self._check_token, origins=[None], server_header=None,
+                         ping_interval=20, ping_timeout=20) as server:
+            host, port = server.sockets[0].getsockname()[:2]
+            shown = f"[{host}]" if ":" in host else host
+            self.epoch = time.monotonic()
+            self.epoch_unix = time.time()
+            if ready is not None:
+                ready(f"serving ws://{shown}:{port} headless {self.fps:g} Hz")
+            clock = asyncio.ensure_future(self._frame_loop())
+            await self._stopping.wait()
+            clock.cancel()
+            with suppress(asyncio.CancelledError):
+                await clock
+
+    def close(self) -> None:
+        if self._stopping is not None:
+            self._stopping.set()
+
+    def frame_time(self, frame: int) -> float:
+        """Frame ``frame``'s time, ms on the frame clock."""
+        return frame * 1000.0 / self.fps
+
+    def next_frame_time(self, at: float | None = None) -> float:
+        """The time of the first frame still to come that is at or after ``at``."""
+        first = self.frame + 1
+        if at is not None:
+            first = max(first, math.ceil(at * self.fps / 1000.0 - 1e-9))
+        return self.frame_time(first)
+
+    async def _frame_loop(self) -> None:
+        while True:
+            due = self.epoch + (self.frame + 1) / self.fps
+            wait = due - time.monotonic()
+            if wait > 0:
+                await asyncio.sleep(wait)
+            now_frame = math.floor((time.monotonic() - self.epoch) * self.fps + 1e-9)
+            self.frame = max(self.frame + 1, now_frame)
+            self._deliver(self.head.advance(self.frame_time(self.frame)))
+
+    def _deliver(self, events: list[tuple[object, Event]]) -> None:
+        for owner, event in events:
+            if isinstance(owner, Client):
+                owner.send(event)
+
+    # -- connections ---------------------------------------------------------------------
+
+    def _check_token(self, connection: ServerConnection, request: HttpRequest) -> HttpResponse | None:
+        if self.token is None:
+            return None
+        given = request.headers.get(TOKEN_HEADER, "")
+        expected = f"Bearer {self.token}"
+        if hmac.compare_digest(given.encode("utf-8", "replace"), expected.encode("utf-8")):
+            return None
+        return connection.respond(HTTPStatus.UNAUTHORIZED, "a token is required: Authorization: Bearer TOKEN\n")
+
+    async def _serve_client(self, connection: ServerConnection) -> None:
+        client = Client(connection)
+        writer = asyncio.ensure_future(client.write())
+        try:
+            async for message in connection:
+                client.send(await self._answer(client, message))
+        except ConnectionClosed:
+            pass
+        finally:
+            client.closed = True
+            client.cancelled.update(client.waiting_utterances)
+            self.head.forget(client)
+            client.outbox.put_nowait(None)
+            with suppress(asyncio.CancelledError, ConnectionClosed):
+                await writer
+
+    async def _answer(self, client: Client, message: str | bytes) -> dict[str, Any]:
+        request_id: RequestId = None
+        try:
+            if not client.within_rate():
+                raise RequestError(f"too many requests: at most {RATE_PER_SECOND:g} a second")
+            request = parse_request(message)
+            request_id = request.id
+            return self._handle(client, request)
+        except RequestError as exc:
+            return error_reply(exc)
+        except UserError as exc:
+            return error_reply(RequestError(str(exc), request_id, file=None, line=None))
+        except Exception:                               # a bug of ours: said on stderr, the client told
+            print(f"internal error answering a request:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
+            return {"id": request_id, "ok": False, "error": "internal error in the server (see its log)"}
+
+    def _handle(self, client: Client, request: Request) -> dict[str, Any]:
+        fields = request.fields
+        reply: dict[str, Any] = {"id": request.id, "ok": True}
+        if request.type == "set":
+            check_values(fields["values"], self.head.ranges, request.id)
+            at = self._start(fields.get("at"), request.id)
+            self.head.add_set(at, request.id, client, fields["values"])
+            reply["t"] = at
+        elif request.type == "say":
+            self._accept_say(client, request, reply)
+        elif request.type == "command":
+            activations = self._commands(fields["xml"])
+            at = self._start(fields.get("at"), request.id)
+            performance = self.head.add_commands(at, request.id, client, activations)
+            reply.update(t=at, end_t=performance.end_t)
+        elif request.type == "stop":
+            target = fields.get("target")
+            if target is None:
+                client.cancelled.update(client.waiting_utterances)
+            elif target in client.waiting_utterances:
+                client.cancelled.add(target)
+            self._deliver(self.head.stop(target))
+        elif request.type == "state":
+            reply.update(self.state())
+        elif request.type == "capabilities":
+            reply.update(self.capabilities())
+        return reply
+
+    def _start(self, at: float | None, request_id: RequestId) -> float:
+        if at is not None and at > self.head.t + MAX_AHEAD_MS:
+            raise RequestError("\"at\" is more than 24 hours ahead", request_id)
+        return self.next_frame_time(at)
+
+    def _commands(self, xml: str) -> list[Activation]:
+        commands = parse_commands_text(xml, "<command>")
+        activations = translate(commands, self.library, self.model)
+        from engine.timeline.timeline import Timeline
+
+        Timeline(activations, self.model)                       # the same checks as every timeline
+        return activations
+
+    # -- say -------------------------------------------------------------------------------
+
+    def _accept_say(self, client: Client, request: Request, reply: dict[str, Any]) -> None:
+        from engine.script.inline_commands import parse_script
+        from engine.speech.festival import prepare_text
+        from engine.speech.say import check_commands
+
+        if len(client.waiting_utterances) >= MAX_WAITING_UTTERANCES:
+            raise RequestError(f"{MAX_WAITING_UTTERANCES} utterances are already waiting for the synthesizer",
+                               request.id)
+        if request.id in client.waiting_utterances:
+            raise RequestError("an utterance with this id is still waiting for the synthesizer", request.id)
+        text = request.fields["text"]
+        script = parse_script(text, "<text>")
+        if not script.text.strip():
+            raise RequestError("there is no text to speak (only commands?)", request.id, file="<text>", line=1)
+        prepare_text(text, "<text>")
+        check_commands(script, self.library, self.model)
+        at = self._start(request.fields.get("at"), request.id)
+        client.waiting_utterances.add(request.id)
+        task = asyncio.ensure_future(self._say(client, request, at))
+        self._tasks.add(task)
+        task.add_done_callback(self._tasks.discard)
+
+    async def _say(self, client: Client, request: Request, at: float) -> None:
+        from engine.speech.say import speak
+
+        assert self._synthesis_lock is not None
+        try:
+            async with self._synthesis_lock:
+                if request.id in client.cancelled or client.closed:
+                    return
+                speech = await asyncio.to_thread(speak, request.fields["text"], self.model, self.synthesizer,
+                                                 request.fields.get("voice"), self.library)
+        except UserError as exc:
+            client.send({"event": "failed", "id": request.id, "t": self.head.t, "error": " ".join(str(exc).split())})
+            return
+        except Exception:
+            print(f"internal error in say:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
+            client.send({"event": "failed", "id": request.id, "t": self.head.t,
+                         "error": "internal error in the server (see its log)"})
+            return
+        finally:
+            client.waiting_utterances.discard(request.id)
+        if request.id in client.cancelled:
+            client.cancelled.discard(request.id)
+            client.send({"event": "finished", "id": request.id, "t": self.head.t, "stopped": True})
+            return
+        if client.closed:
+            return
+        self.head.add_speech(self.next_frame_time(at), request.id, client, speech)
+
+    # -- state and capabilities ------------------------------------------------------------------
+
+    def clock(self) -> dict[str, Any]:
+        """The frame clock: frame n is at t = n·1000/fps ms = epoch_monotonic_s + t/1000 on ``time.monotonic()``."""
+        return {"fps": self.fps, "epoch_monotonic_s": self.epoch, "epoch_unix_s": self.epoch_unix}
+
+    def state(self) -> dict[str, Any]:
+        return {"t": self.head.t, "frame": self.frame, "values": self.head.values, "playing": self.head.playing(),
+                "clock": self.clock()}
+
+    def capabilities(self) -> dict[str, Any]:
+        tree = self.model.parameters
+        parameters = [{"name": name, "min": tree[name].minimum, "max": tree[name].maximum,
+                       "default": tree[name].default} for name in self.head.names]
+        return {"schema_version": SCHEMA_VERSION, "mode": "headless", "requests": list(REQUEST_TYPES),
+                "events": list(EVENT_TYPES), "parameters": parameters, "voices": self.voices(),
+                "commands": sorted(self.library.names()), "clock": self.clock(),
+                "limits": {"message_bytes": MAX_MESSAGE_BYTES, "frame_bytes": MAX_FRAME_BYTES,
+                           "text_chars": MAX_TEXT_CHARS, "requests_per_second": RATE_PER_SECOND,
+                           "waiting_utterances": MAX_WAITING_UTTERANCES}}
+
+    def voices(self) -> list[str]:
+        if self._voices is None:
+            lister = getattr(self.synthesizer, "voices", None)
+            try:
+                self._voices = list(lister()) if callable(lister) else []
+            except UserError:
+                self._voices = []
+        return list(self._voices)
