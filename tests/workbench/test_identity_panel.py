@@ -370,3 +370,22 @@ def test_a_model_whose_identity_this_version_does_not_know_is_shown_as_such(head
     window.document.replace_model(strange)
     assert "cannot be shown" in panel.note.text() and "nose-made-up-decr-incr" in panel.note.text()
     assert not any(box.isEnabled() for box in panel.groups.values()) and not panel.reset_all_button.isEnabled()
+
+
+def test_an_opened_identity_whose_rig_was_edited_is_asked_about(head_window, qtbot, tmp_path):
+    window = head_window
+    panel = open_panel(window, qtbot)
+    document = window.document
+    panel.rows["age"].spin.setValue(40.0)
+    wait_for_head(qtbot, panel)
+    region = document.model.regions["jaw_open"]
+    document.push(WeightsChangedCommand(document, "jaw_open", region.indices, region.weights * 0.25))
+    assert window.files.save_model(tmp_path / "edited.xml")
+    assert window.files.open_model(tmp_path / "edited.xml")
+    opened = document.model
+    asked: list[str] = []
+    panel.heads.ask_discard = lambda reason: (asked.append(reason), False)[1]
+    panel.rows["sex"].spin.setValue(1.0)
+    wait_for_head(qtbot, panel)
+    assert len(asked) == 1 and "differs from the default head's" in asked[0]
+    assert document.model is opened and panel.rows["sex"].value() == 0.5 and panel.rows["age"].value() == 40.0
