@@ -28,6 +28,7 @@ import time
 import traceback
 from collections.abc import Callable
 from contextlib import suppress
+from dataclasses import replace
 from http import HTTPStatus
 from typing import Any
 
@@ -37,7 +38,7 @@ from websockets.http11 import Request as HttpRequest
 from websockets.http11 import Response as HttpResponse
 
 from engine.commands import Library, load_library, parse_commands_text, translate
-from engine.commands.command_files import Activation
+from engine.commands.command_files import Activation, HighLevelCommand
 from engine.errors import UserError
 from engine.live.head import Event, LiveHead
 from engine.live.protocol import (
@@ -227,8 +228,9 @@ class LiveServer:
             return self._handle(client, request)
         except RequestError as exc:
             return error_reply(exc)
-        except UserError as exc:
-            return error_reply(RequestError(str(exc), request_id, file=None, line=None))
+        except UserError as exc:                        # from the engine: located in the text, XML or library
+            where = {"file": None, "line": None} if exc.file is not None else {}
+            return error_reply(RequestError(str(exc), request_id, **where))
         except Exception:                               # a bug of ours: said on stderr, the client told
             print(f"internal error answering a request:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
             return {"id": request_id, "ok": False, "error": "internal error in the server (see its log)"}
@@ -267,7 +269,8 @@ class LiveServer:
         return self.next_frame_time(at)
 
     def _commands(self, xml: str) -> list[Activation]:
-        commands = parse_commands_text(xml, "<command>")
+        commands = [replace(c, arguments={"at": 0.0, **c.arguments}) if isinstance(c, HighLevelCommand) else c
+                    for c in parse_commands_text(xml, "<command>")]       # no "at": at the request's start
         activations = translate(commands, self.library, self.model)
         from engine.timeline.timeline import Timeline
 

@@ -1,0 +1,153 @@
+"""A blocking Python client of the live service (``artificial-person serve``), for scripts and PsychoPy.
+
+Requests get ids of their own; :meth:`LiveClient.request` waits for the reply with that id and
+keeps every event that arrives meanwhile, so no event is lost; :meth:`LiveClient.events` then
+hands them out in the order they came. A refused request raises :class:`LiveError` with the
+server's one-line message.
+
+>>> with LiveClient("ws://127.0.0.1:8765") as head:                       # doctest: +SKIP
+...     say_id = head.say("Hyvää päivää <HeadNod/> mitä kuuluu?")
+...     for event in head.events_until(say_id, "finished"):
+...         print(event["event"], event.get("word", ""), event["t"])
+...     head.set({"head_turn": 20})
+...     head.to_local_monotonic(head.state()["t"])            # the frame clock on this computer's clock
+
+Frame times (``t``, ms) are on the server's frame clock; on the same computer
+:meth:`LiveClient.to_local_monotonic` turns them into ``time.monotonic()`` seconds (``docs/serve.md``).
+"""
+
+from __future__ import annotations
+
+import itertools
+import json
+import time
+from collections import deque
+from collections.abc import Iterator
+from contextlib import ExitStack
+from typing import Any
+
+from websockets.sync.client import ClientConnection, connect
+
+from engine.live.protocol import MAX_FRAME_BYTES
+
+
+class LiveError(Exception):
+    """The server refused a request (``str()`` is its message) or sent something that is not the protocol."""
+
+
+class LiveClient:
+    """A connection to the live service; ``token`` when the server was started with one."""
+
+    def __init__(self, url: str, token: str | None = None, timeout: float = 30.0):
+        headers = {"Authorization": f"Bearer {token}"} if token is not None else None
+        self.timeout = timeout
+        self._stack = ExitStack()                 # connect() is a context manager in every websockets since 14
+        self._connection: ClientConnection = self._stack.enter_context(
+            connect(url, additional_headers=headers, open_timeout=timeout, max_size=MAX_FRAME_BYTES))
+        self._ids = itertools.count(1)
+        self._events: deque[dict[str, Any]] = deque()
+        self._clock: dict[str, Any] | None = None
+
+    def __enter__(self) -> LiveClient:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def close(self) -> None:
+        self._stack.close()
+
+    # -- requests -----------------------------------------------------------------------------
+
+    def request(self, kind: str, **fields: Any) -> dict[str, Any]:
+        """Send one request and return its reply (``ok`` true), or raise :class:`LiveError`."""
+        request_id = f"c{next(self._ids)}"
+        self.send_raw(json.dumps({"type": kind, "id": request_id, **fields}))
+        reply = self.reply_to(request_id)
+        if not reply.get("ok"):
+            raise LiveError(str(reply.get("error")))
+        return reply
+
+    def send_raw(self, text: str | bytes) -> None:
+        """Send a message as it is (tests use it for malformed ones)."""
+        self._connection.send(text)
+
+    def reply_to(self, request_id: object) -> dict[str, Any]:
+        """Wait for the reply that carries ``request_id``; events that come first are kept for :meth:`events`."""
+        deadline = time.monotonic() + self.timeout
+        while True:
+            message = self._receive(deadline)
+            if "event" in message:
+                self._events.append(message)
+            elif message.get("id") == request_id:
+                return message
+            else:
+                raise LiveError(f"a reply to another request came first: {message}")
+
+    def say(self, text: str, voice: str | None = None, at: float | None = None) -> str:
+        """Speak ``text`` (inline commands allowed); returns the request id its events carry."""
+        fields: dict[str, Any] = {"text": text}
+        if voice is not None:
+            fields["voice"] = voice
+        if at is not None:
+            fields["at"] = at
+        return str(self.request("say", **fields)["id"])
+
+    def set(self, values: dict[str, float], at: float | None = None) -> dict[str, Any]:
+        """New parameter values from the next frame (or the first at ``at``); the reply says that frame's ``t``."""
+        return self.request("set", values=values, **({} if at is None else {"at": at}))
+
+    def command(self, xml: str, at: float | None = None) -> dict[str, Any]:
+        """High-level commands (``<commands>…</commands>``, §2.3) from the next frame or ``at``."""
+        return self.request("command", xml=xml, **({} if at is None else {"at": at}))
+
+    def stop(self, target: str | None = None) -> dict[str, Any]:
+        return self.request("stop", **({} if target is None else {"target": target}))
+
+    def state(self) -> dict[str, Any]:
+        reply = self.request("state")
+        self._clock = reply["clock"]
+        return reply
+
+    def capabilities(self) -> dict[str, Any]:
+        reply = self.request("capabilities")
+        self._clock = reply["clock"]
+        return reply
+
+    # -- events -------------------------------------------------------------------------------------
+
+    def next_event(self, timeout: float | None = None) -> dict[str, Any]:
+        """The next event (kept ones first), waiting at most ``timeout`` seconds (default: the client's)."""
+        if self._events:
+            return self._events.popleft()
+        deadline = time.monotonic() + (self.timeout if timeout is None else timeout)
+        while True:
+            message = self._receive(deadline)
+            if "event" in message:
+                return message
+            raise LiveError(f"a reply nobody waits for: {message}")
+
+    def events_until(self, request_id: str, event: str = "finished") -> Iterator[dict[str, Any]]:
+        """Every event until (and with) ``event`` of ``request_id`` (events of other requests included)."""
+        while True:
+            message = self.next_event()
+            yield message
+            if message.get("id") == request_id and message.get("event") in (event, "failed"):
+                return
+
+    def to_local_monotonic(self, t: float) -> float:
+        """A frame-clock time as ``time.monotonic()`` seconds of the server's computer (= this one's on loopback)."""
+        if self._clock is None:
+            self.state()
+        assert self._clock is not None
+        return float(self._clock["epoch_monotonic_s"]) + t / 1000.0
+
+    def _receive(self, deadline: float) -> dict[str, Any]:
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            raise TimeoutError("no answer from the server in time")
+        text = self._connection.recv(timeout=remaining)
+        message = json.loads(text)
+        if not isinstance(message, dict):
+            raise LiveError(f"not a protocol message: {text!r}")
+        return message

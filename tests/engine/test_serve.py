@@ -1,0 +1,331 @@
+"""The live service (issue 21), end to end: the real server in a subprocess, real loopback sockets, real Festival.
+
+Every socket here is on 127.0.0.1: the one test about other addresses checks the refusal, which comes
+before anything is bound.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import select
+import shutil
+import subprocess
+import sys
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+from hypothesis import given
+from hypothesis import strategies as st
+from websockets.exceptions import InvalidStatus
+
+from engine.live.client import LiveClient, LiveError
+from engine.live.protocol import EVENT_TYPES, MAX_MESSAGE_BYTES, REQUEST_TYPES, SCHEMA_VERSION
+from tests.engine.fuzz_support import FUZZ
+
+PROJECT_ROOT = Path(__file__).resolve().parents[2]
+FRAME_MS = 1000.0 / 60.0
+SENTENCE = "Hyvää päivää mitä kuuluu"
+needs_festival = pytest.mark.skipif(shutil.which("festival") is None, reason="Festival is not installed")
+#: A located one-line error: ``<message>:1: …``, ``<text>:1: column 3: …``, ``path/x.lib:12: …``.
+LOCATED = re.compile(r"^\S+:\d+: \S")
+
+
+@dataclass
+class Served:
+    url: str
+    process: subprocess.Popen
+    stderr_path: Path
+
+    def stderr(self) -> str:
+        return self.stderr_path.read_text(encoding="utf-8", errors="replace")
+
+
+def start_server(tmp: Path, *options: str) -> Served:
+    """``artificial-person serve --headless --port 0`` in a subprocess; its first line names the bound address."""
+    stderr_path = tmp / "serve-stderr.txt"
+    with stderr_path.open("wb") as stderr:
+        process = subprocess.Popen([sys.executable, "-m", "engine", "serve", "--headless", "--port", "0", *options],
+                                   cwd=PROJECT_ROOT, stdout=subprocess.PIPE, stderr=stderr)
+    assert process.stdout is not None
+    ready, _, _ = select.select([process.stdout], [], [], 120)
+    line = process.stdout.readline().decode() if ready else ""
+    match = re.search(r"ws://127\.0\.0\.1:\d+", line)
+    if match is None:
+        process.kill()
+        process.wait()
+        pytest.fail(f"the server did not start: {line!r} {stderr_path.read_text()}")
+    return Served(match.group(0), process, stderr_path)
+
+
+def stop_server(served: Served) -> None:
+    served.process.terminate()
+    try:
+        served.process.wait(timeout=30)
+    except subprocess.TimeoutExpired:
+        served.process.kill()
+        served.process.wait()
+    assert served.process.stdout is not None
+    served.process.stdout.close()
+
+
+@pytest.fixture(scope="module")
+def server(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Served]:
+    served = start_server(tmp_path_factory.mktemp("serve"))
+    yield served
+    stop_server(served)
+    assert "Traceback" not in served.stderr()
+
+
+@pytest.fixture
+def client(server: Served) -> Iterator[LiveClient]:
+    with LiveClient(server.url) as head:
+        yield head
+
+
+def events_of(head: LiveClient, request_id: str) -> list[dict]:
+    return [e for e in head.events_until(request_id, "finished") if e.get("id") == request_id]
+
+
+# -- say -------------------------------------------------------------------------------------------------
+
+@needs_festival
+def test_say_gives_speech_start_each_word_in_order_and_finished_on_the_frame_clock(client):
+    from engine.speech.festival import FestivalSynthesizer
+
+    say_id = client.say(SENTENCE)
+    events = events_of(client, say_id)
+    kinds = [e["event"] for e in events]
+    assert kinds[0] == "speech_start" and kinds[-1] == "finished"
+    assert set(kinds) <= {"speech_start", "word", "phone", "finished"}
+    start = events[0]
+    assert start["sample"] == 0 and start["sample_rate"] > 0
+    assert start["t"] == pytest.approx(round(start["t"] / FRAME_MS) * FRAME_MS)     # a frame of the clock
+    words = [e for e in events if e["event"] == "word"]
+    assert [w["word"] for w in words] == SENTENCE.split()
+    assert [w["index"] for w in words] == list(range(len(words)))
+    # The same text synthesized here: the server's words start where Festival puts them.
+    utterance = FestivalSynthesizer().synthesize(SENTENCE)
+    assert [w["onset_ms"] for w in words] == pytest.approx([w.start_ms for w in utterance.words], abs=1e-6)
+    rate = start["sample_rate"]
+    for word in words:
+        assert word["onset_t"] == pytest.approx(start["t"] + word["onset_ms"])
+        assert 0 <= word["t"] - word["onset_t"] < FRAME_MS             # the first frame at or after the onset
+        assert word["sample"] == round(word["onset_ms"] * rate / 1000)
+    times = [e["t"] for e in events]
+    assert times == sorted(times)
+    phones = [e for e in events if e["event"] == "phone"]
+    assert [p["phone"] for p in phones] == [p.label for p in utterance.phones]
+    assert events[-1]["t"] - start["t"] >= start["duration_ms"] - FRAME_MS
+    assert events[-1]["sample"] == len(utterance.samples)
+
+
+@needs_festival
+def test_say_moves_the_jaw_while_it_speaks_and_state_shows_it(client):
+    say_id = client.say(SENTENCE)
+    opened = []
+    for event in client.events_until(say_id, "finished"):
+        if event.get("event") == "word":
+            state = client.state()
+            opened.append(abs(state["values"]["jaw_open"]))
+            assert any(p["id"] == say_id for p in state["playing"])
+    assert max(opened) > 0
+    assert client.state()["playing"] == []
+
+
+def test_a_bad_inline_command_is_refused_naming_the_text(client):
+    with pytest.raises(LiveError, match=r"^<text>:1: "):
+        client.say('Hyvää <HeadNod amplitude="lots"/> päivää')
+    assert client.state()["ok"]
+
+
+# -- set, command, state -----------------------------------------------------------------------------------
+
+def test_set_shows_in_state_from_the_frame_the_reply_names(client):
+    before = client.state()
+    assert before["values"]["head_turn"] != 0.5
+    reply = client.set({"head_turn": 0.5})
+    assert reply["t"] > before["t"]
+    while True:
+        state = client.state()
+        if state["t"] >= reply["t"]:
+            assert state["values"]["head_turn"] == 0.5
+            break
+        assert state["values"]["head_turn"] == before["values"]["head_turn"]
+    applied = client.next_event()
+    assert applied == {"event": "applied", "id": reply["id"], "t": reply["t"]}
+    client.set({"head_turn": 0})
+
+
+def test_set_at_a_later_time_waits_for_that_frame(client):
+    now = client.state()["t"]
+    reply = client.set({"brow_raise": 0.25}, at=now + 200)
+    assert now + 200 <= reply["t"] < now + 200 + FRAME_MS
+    assert client.state()["values"]["brow_raise"] != 0.25
+    event = client.next_event()
+    assert event["event"] == "applied" and event["t"] == reply["t"]
+    assert client.state()["values"]["brow_raise"] == 0.25
+    client.set({"brow_raise": 0})
+
+
+def test_a_command_runs_on_the_frame_clock_with_its_events(client):
+    reply = client.command('<commands><HeadNod amplitude="60" count="2"/></commands>')
+    events = events_of(client, reply["id"])
+    kinds = [e["event"] for e in events]
+    assert kinds[0] == "command_start" and kinds[-1] == "finished" and "command_end" in kinds
+    assert events[0]["command"] == "HeadNod"
+    assert events[-1]["t"] >= reply["end_t"] > reply["t"]
+
+
+def test_capabilities_name_the_parameters_types_voices_and_schema(client):
+    caps = client.capabilities()
+    assert caps["schema_version"] == SCHEMA_VERSION
+    assert set(caps["requests"]) == set(REQUEST_TYPES)
+    names = {p["name"] for p in caps["parameters"]}
+    assert {"jaw_open", "head_turn"} <= names
+    assert all(p["min"] <= p["default"] <= p["max"] for p in caps["parameters"])
+    if shutil.which("festival"):
+        assert "suo_fi_lj_diphone" in caps["voices"]
+    assert caps["clock"]["fps"] == 60
+
+
+def test_the_shipped_schema_lists_every_request_and_event():
+    schema = json.loads((PROJECT_ROOT / "engine/live/schema/protocol-v1.json").read_text())
+    assert schema["version"] == SCHEMA_VERSION
+    assert set(REQUEST_TYPES) <= set(schema["$defs"])
+    assert schema["$defs"]["event"]["properties"]["event"]["enum"] == list(EVENT_TYPES)
+
+
+# -- what a client gets wrong ------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("message, expected", [
+    ("nonsense", r"^<message>:1: column 1: not JSON"),
+    ("[1, 2]", r"^<message>:1: a request is a JSON object"),
+    ('{"type": "dance", "id": 1}', r"unknown request type 'dance'"),
+    ('{"type": "state"}', r"has no \"id\""),
+    ('{"type": "set", "id": 2, "values": {"jaw": 1}}', r"unknown parameter 'jaw'"),
+    ('{"type": "set", "id": 3, "values": {"jaw_open": 1e9}}', r"outside its range"),
+    ('{"type": "set", "id": 4, "values": {"jaw_open": NaN}}', r"not JSON"),
+    ('{"type": "say", "id": 5, "text": 7}', r"\"text\" must be a string"),
+    ('{"type": "state", "id": 6, "extra": true}', r"has no field 'extra'"),
+    ('{"type": "command", "id": 7, "xml": "<commands><Nope/></commands>"}', r"^<command>:1: unknown command"),
+    ("x" * (MAX_MESSAGE_BYTES + 1), r"longer than 65536 bytes"),
+    (b"\x00\x01binary", r"binary messages are not requests"),
+])
+def test_a_bad_message_gets_an_error_reply_and_the_connection_stays_usable(client, message, expected):
+    client.send_raw(message)
+    reply = client._receive(deadline=time.monotonic() + 30)
+    assert reply["ok"] is False
+    assert re.search(expected, reply["error"]), reply["error"]
+    assert LOCATED.match(reply["error"]), reply["error"]
+    assert "\n" not in reply["error"]
+    assert client.state()["ok"] is True
+
+
+# -- safety ---------------------------------------------------------------------------------------------------
+
+def run_cli(*args: str) -> subprocess.CompletedProcess:
+    env = {k: v for k, v in os.environ.items() if k != "AP_SERVE_TOKEN"}
+    return subprocess.run([sys.executable, "-m", "engine", *args], cwd=PROJECT_ROOT, capture_output=True, text=True,
+                          timeout=120, check=False, env=env)
+
+
+@pytest.mark.parametrize("host", ["0.0.0.0", "192.0.2.7", "::", "example.org"])
+def test_an_address_beyond_loopback_needs_a_token_and_nothing_is_bound_without_one(host):
+    result = run_cli("serve", "--headless", "--host", host, "--port", "0")
+    assert result.returncode == 2
+    assert result.stderr.startswith(f"error: listening on {host} (not loopback) needs --token")
+    assert result.stderr.count("\n") == 1 and result.stdout == ""
+
+
+@pytest.mark.parametrize("args, expected", [
+    (["serve"], "needs --headless"),
+    (["serve", "--headless", "--window"], "unrecognized arguments: --window"),
+    (["serve", "--headless", "--festival", "h:1314"], "unrecognized arguments: --festival"),
+    (["serve", "--headless", "--lsl"], "unrecognized arguments: --lsl"),
+    (["serve", "--headless", "--port", "70000"], "not a port number"),
+])
+def test_what_this_version_does_not_do_is_refused(args, expected):
+    result = run_cli(*args)
+    assert result.returncode == 2 and expected in result.stderr and "Traceback" not in result.stderr
+
+
+def test_a_client_without_the_token_is_refused(tmp_path):
+    served = start_server(tmp_path, "--token", "s3cret-token")
+    try:
+        for token in (None, "wrong"):
+            with pytest.raises(InvalidStatus, match="401"):
+                LiveClient(served.url, token=token)
+        with LiveClient(served.url, token="s3cret-token") as head:
+            assert head.state()["ok"]
+    finally:
+        stop_server(served)
+    assert "Traceback" not in served.stderr()
+
+
+@needs_festival
+def test_a_client_gone_mid_utterance_leaves_the_server_ready(server):
+    with LiveClient(server.url) as first:
+        say_id = first.say(SENTENCE + " ja sitten vielä pitkä lause lisää")
+        while first.next_event()["event"] != "word":
+            pass
+    with LiveClient(server.url) as second:
+        assert second.state()["playing"] == []
+        say_id = second.say("Moi")
+        assert events_of(second, say_id)[-1]["event"] == "finished"
+
+
+# -- fuzzing -------------------------------------------------------------------------------------------------------
+
+JSON_LEAF = st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | st.text(max_size=30)
+JSON_VALUE = st.recursive(JSON_LEAF, lambda inner: st.lists(inner, max_size=4)
+                          | st.dictionaries(st.text(max_size=10), inner, max_size=4), max_leaves=12)
+FIELD_NAMES = st.sampled_from(["text", "values", "xml", "at", "voice", "target", "id", "type", "x"])
+PARAMETERS = st.sampled_from(["jaw_open", "head_turn", "head_nod", "brow_raise", "nope", ""])
+FIELD_VALUES = (JSON_VALUE
+                | st.dictionaries(PARAMETERS, st.floats(-1e4, 1e4) | JSON_LEAF, max_size=3)
+                | st.sampled_from(["<commands><HeadNod/></commands>", "<commands><Blink at='-5'/></commands>",
+                                   "<commands>", "moi <Blink/>", "<HeadNod amplitude='1e999'/> moi"]))
+REQUESTS = st.fixed_dictionaries(
+    {"type": st.sampled_from([*REQUEST_TYPES, "Say", "", "x" * 200]), "id": st.integers() | st.text(max_size=140)},
+    optional={"f": st.dictionaries(FIELD_NAMES, FIELD_VALUES, max_size=3)})
+MESSAGES = (REQUESTS.map(lambda r: json.dumps({**{k: v for k, v in r.items() if k != "f"}, **r.get("f", {})}))
+            | JSON_VALUE.map(json.dumps) | st.text(max_size=200) | st.binary(max_size=100))
+
+
+@needs_festival
+def test_fuzzed_messages_are_all_answered_without_a_traceback(tmp_path):
+    served = start_server(tmp_path)
+    tried = {"messages": 0, "refused": 0}
+    try:
+        with LiveClient(served.url) as head:
+            @FUZZ
+            @given(message=MESSAGES)
+            def answer(message):
+                if isinstance(message, str) and '"say"' in message:
+                    head.send_raw(json.dumps({"type": "stop", "id": "fuzz-stop"}))   # keep Festival's queue short
+                    head.reply_to("fuzz-stop")
+                head.send_raw(message)
+                tried["messages"] += 1
+                while True:
+                    reply = head._receive(deadline=time.monotonic() + 60)
+                    if "event" not in reply:
+                        break
+                assert isinstance(reply["ok"], bool)
+                if not reply["ok"]:
+                    tried["refused"] += 1
+                    assert isinstance(reply["error"], str) and LOCATED.match(reply["error"]), reply["error"]
+
+            answer()
+            head.stop()
+            assert head.state()["ok"]
+    finally:
+        stop_server(served)
+    print(f"fuzz: {tried['messages']} messages, {tried['refused']} refused")
+    assert served.process.returncode in (0, -15)
+    assert "Traceback" not in served.stderr()
+    assert "internal error" not in served.stderr()
