@@ -293,7 +293,22 @@ FIELD_VALUES = (JSON_VALUE
 REQUESTS = st.fixed_dictionaries(
     {"type": st.sampled_from([*REQUEST_TYPES, "Say", "", "x" * 200]), "id": st.integers() | st.text(max_size=140)},
     optional={"f": st.dictionaries(FIELD_NAMES, FIELD_VALUES, max_size=3)})
-MESSAGES = (REQUESTS.map(lambda r: json.dumps({**{k: v for k, v in r.items() if k != "f"}, **r.get("f", {})}))
+WORDS = st.lists(st.sampled_from(["moi", "hyvää", "päivää", "<Blink/>", "<HeadNod amplitude='60'/>", "2", "!", "<x"]),
+                 min_size=1, max_size=4).map(" ".join)
+WELL_FORMED = st.one_of(
+    st.fixed_dictionaries({"type": st.just("set"), "id": st.integers(0, 9),
+                           "values": st.dictionaries(PARAMETERS, st.floats(-2, 2), min_size=1, max_size=3)},
+                          optional={"at": st.floats(-1e3, 1e5)}),
+    st.fixed_dictionaries({"type": st.just("say"), "id": st.text(max_size=3), "text": WORDS},
+                          optional={"voice": st.sampled_from(["suo_fi_lj_diphone", "kal_diphone", "no_such"])}),
+    st.fixed_dictionaries({"type": st.just("command"), "id": st.integers(0, 9),
+                           "xml": st.sampled_from(["<commands><HeadNod/></commands>", "<commands/>",
+                                                   "<commands><Blink at='100'/><Smile/></commands>"])}),
+    st.fixed_dictionaries({"type": st.sampled_from(["stop", "state", "capabilities"]), "id": st.integers(0, 9)},
+                          optional={"target": st.integers(0, 9)}),
+).map(json.dumps)
+MESSAGES = (WELL_FORMED
+            | REQUESTS.map(lambda r: json.dumps({**{k: v for k, v in r.items() if k != "f"}, **r.get("f", {})}))
             | JSON_VALUE.map(json.dumps) | st.text(max_size=200) | st.binary(max_size=100))
 
 
