@@ -1,0 +1,127 @@
+"""The live service over loopback (issue 21), headless: how soon a request shows on the frame clock.
+
+    .venv/bin/python benchmarks/bench_serve.py [--sets 300] [--says 5] [--json out.json]
+
+* ``set`` → the frame that shows it: the client notes ``time.monotonic()`` before sending, the server
+  names the frame (``applied`` event, ``t``), and that frame's moment on the same clock is
+  ``epoch_monotonic_s + t/1000`` (server and client share the computer's monotonic clock). p50/p95,
+  in ms and in 60 Hz frames; also the time until the ``applied`` event is back at the client.
+* ``say`` → its first audio sample (``speech_start``: sample 0 is presented at that frame), beside
+  Festival's own time for the same text synthesized in this process (``FestivalSynthesizer``).
+* pipelined ``state`` requests answered per second on one connection.
+
+Real server in a subprocess (``artificial-person serve --headless --port 0``), real Festival.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+
+from engine.live.client import LiveClient  # noqa: E402
+
+FRAME_MS = 1000.0 / 60.0
+TEXTS = ["Hyvää päivää, mitä kuuluu?", "Moi.", "Tänään on kaunis ilma ja aurinko paistaa.",
+         "Katso vasemmalle.", "Kiitos, näkemiin."]
+
+
+def percentile(values: list[float], q: float) -> float:
+    ordered = sorted(values)
+    return ordered[min(len(ordered) - 1, round(q / 100.0 * (len(ordered) - 1)))]
+
+
+def start_server() -> tuple[subprocess.Popen, str]:
+    process = subprocess.Popen([sys.executable, "-m", "engine", "serve", "--headless", "--port", "0"], cwd=ROOT,
+                               stdout=subprocess.PIPE, text=True)
+    assert process.stdout is not None
+    line = process.stdout.readline()
+    match = re.search(r"ws://\S+", line)
+    if match is None:
+        process.kill()
+        raise SystemExit(f"the server did not start: {line!r}")
+    return process, match.group(0)
+
+
+def bench_set(head: LiveClient, count: int) -> dict[str, float]:
+    to_frame, to_event = [], []
+    for i in range(count):
+        sent = time.monotonic()
+        reply = head.set({"head_turn": 0.25 if i % 2 else -0.25})
+        event = head.next_event()
+        received = time.monotonic()
+        assert event["event"] == "applied" and event["id"] == reply["id"]
+        to_frame.append((head.to_local_monotonic(event["t"]) - sent) * 1000.0)
+        to_event.append((received - sent) * 1000.0)
+        time.sleep(0.003 * (i % 7))                       # requests land at different phases of the frame
+    return {"set_to_frame_p50_ms": percentile(to_frame, 50), "set_to_frame_p95_ms": percentile(to_frame, 95),
+            "set_to_frame_max_ms": max(to_frame), "set_to_applied_event_p50_ms": percentile(to_event, 50),
+            "set_to_applied_event_p95_ms": percentile(to_event, 95)}
+
+
+def bench_say(head: LiveClient, count: int) -> dict[str, float]:
+    from engine.speech.festival import FestivalSynthesizer
+
+    festival = FestivalSynthesizer()
+    served, own = [], []
+    for i in range(count):
+        text = TEXTS[i % len(TEXTS)]
+        started = time.monotonic()
+        festival.synthesize(text)
+        own.append((time.monotonic() - started) * 1000.0)
+        sent = time.monotonic()
+        say_id = head.say(text)
+        first_sample = None
+        for event in head.events_until(say_id, "finished"):
+            if event["event"] == "speech_start" and event["id"] == say_id:
+                first_sample = head.to_local_monotonic(event["t"])
+        assert first_sample is not None
+        served.append((first_sample - sent) * 1000.0)
+    return {"say_to_first_sample_median_ms": statistics.median(served),
+            "festival_alone_median_ms": statistics.median(own),
+            "say_added_median_ms": statistics.median(s - f for s, f in zip(served, own, strict=True)),
+            "say_added_max_ms": max(s - f for s, f in zip(served, own, strict=True))}
+
+
+def bench_pipelined_state(head: LiveClient, count: int) -> dict[str, float]:
+    started = time.monotonic()
+    for i in range(count):
+        head.send_raw(json.dumps({"type": "state", "id": f"p{i}"}))
+    for i in range(count):
+        assert head.reply_to(f"p{i}")["ok"]
+    return {"pipelined_state_per_s": count / (time.monotonic() - started)}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sets", type=int, default=300)
+    parser.add_argument("--says", type=int, default=5)
+    parser.add_argument("--json", default=None)
+    args = parser.parse_args()
+    process, url = start_server()
+    try:
+        with LiveClient(url) as head:
+            head.state()
+            results = bench_set(head, args.sets)
+            results.update(bench_say(head, args.says))
+            results.update(bench_pipelined_state(head, 1000))
+    finally:
+        process.terminate()
+        process.wait(timeout=30)
+    results["set_to_frame_p95_frames"] = results["set_to_frame_p95_ms"] / FRAME_MS
+    for name, value in results.items():
+        print(f"{name:34s} {value:10.2f}")
+    if args.json:
+        Path(args.json).write_text(json.dumps(results, indent=2) + "\n")
+
+
+if __name__ == "__main__":
+    main()
