@@ -273,8 +273,12 @@ def test_a_client_gone_mid_utterance_leaves_the_server_ready(server):
         say_id = first.say(SENTENCE + " ja sitten vielä pitkä lause lisää")
         while first.next_event()["event"] != "word":
             pass
+        [playing] = first.state()["playing"]
     with LiveClient(server.url) as second:
-        assert second.state()["playing"] == []
+        state = second.state()
+        while state["playing"] and state["t"] < playing["end_t"]:     # the close may take a frame to be seen
+            state = second.state()
+        assert state["playing"] == [] and state["t"] < playing["end_t"]   # ended by the disconnect, not by itself
         say_id = second.say("Moi")
         assert events_of(second, say_id)[-1]["event"] == "finished"
 
@@ -344,3 +348,21 @@ def test_fuzzed_messages_are_all_answered_without_a_traceback(tmp_path):
     assert served.process.returncode in (0, -15)
     assert "Traceback" not in served.stderr()
     assert "internal error" not in served.stderr()
+
+
+def test_a_browser_page_is_refused(server):
+    from websockets.sync.client import connect
+
+    with pytest.raises(InvalidStatus, match="403"), connect(server.url, origin="http://example.org"):
+        pass
+
+
+@needs_festival
+def test_stop_ends_an_utterance_at_once(client):
+    say_id = client.say(SENTENCE + " ja sitten vielä pitkä lause lisää")
+    while client.next_event()["event"] != "speech_start":
+        pass
+    client.stop(say_id)
+    finished = [e for e in client.events_until(say_id, "finished") if e.get("id") == say_id][-1]
+    assert finished["event"] == "finished" and finished["stopped"] is True
+    assert client.state()["playing"] == []
