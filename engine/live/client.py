@@ -1,4 +1,4 @@
-"""A blocking Python client of the live service (``artificial-person serve``), for scripts and PsychoPy.
+"""Python clients of the live service (``artificial-person serve``): blocking (scripts, PsychoPy) and asyncio.
 
 Requests get ids of their own; :meth:`LiveClient.request` waits for the reply with that id and
 keeps every event that arrives meanwhile, so no event is lost; :meth:`LiveClient.events` then
@@ -14,18 +14,29 @@ server's one-line message.
 
 Frame times (``t``, ms) are on the server's frame clock; on the same computer
 :meth:`LiveClient.to_local_monotonic` turns them into ``time.monotonic()`` seconds (``docs/serve.md``).
+
+:class:`AsyncLiveClient` has the same methods as coroutines:
+
+>>> async def experiment():                                                # doctest: +SKIP
+...     async with await AsyncLiveClient.open("ws://127.0.0.1:8765") as head:
+...         await head.set({"head_turn": 0.3})
+...         async for event in head.events_until(await head.say("Moi"), "finished"):
+...             print(event)
 """
 
 from __future__ import annotations
 
+import asyncio
 import itertools
 import json
 import time
 from collections import deque
-from collections.abc import Iterator
+from collections.abc import AsyncIterator, Iterator
 from contextlib import ExitStack
 from typing import Any
 
+from websockets.asyncio.client import ClientConnection as AsyncConnection
+from websockets.asyncio.client import connect as async_connect
 from websockets.sync.client import ClientConnection, connect
 
 from engine.live.protocol import MAX_FRAME_BYTES
@@ -146,8 +157,109 @@ class LiveClient:
         remaining = deadline - time.monotonic()
         if remaining <= 0:
             raise TimeoutError("no answer from the server in time")
-        text = self._connection.recv(timeout=remaining)
-        message = json.loads(text)
-        if not isinstance(message, dict):
-            raise LiveError(f"not a protocol message: {text!r}")
-        return message
+        return _message(self._connection.recv(timeout=remaining))
+
+
+class AsyncLiveClient:
+    """The asyncio client: :meth:`open` connects; the methods of :class:`LiveClient`, as coroutines."""
+
+    def __init__(self, connection: AsyncConnection, timeout: float = 30.0):
+        self._connection = connection
+        self.timeout = timeout
+        self._ids = itertools.count(1)
+        self._events: deque[dict[str, Any]] = deque()
+        self._clock: dict[str, Any] | None = None
+
+    @classmethod
+    async def open(cls, url: str, token: str | None = None, timeout: float = 30.0) -> AsyncLiveClient:
+        headers = {"Authorization": f"Bearer {token}"} if token is not None else None
+        connection = await async_connect(url, additional_headers=headers, open_timeout=timeout,
+                                         max_size=MAX_FRAME_BYTES)
+        return cls(connection, timeout)
+
+    async def __aenter__(self) -> AsyncLiveClient:
+        return self
+
+    async def __aexit__(self, *exc: object) -> None:
+        await self.close()
+
+    async def close(self) -> None:
+        await self._connection.close()
+
+    async def request(self, kind: str, **fields: Any) -> dict[str, Any]:
+        request_id = f"a{next(self._ids)}"
+        await self.send_raw(json.dumps({"type": kind, "id": request_id, **fields}))
+        reply = await self.reply_to(request_id)
+        if not reply.get("ok"):
+            raise LiveError(str(reply.get("error")))
+        if "clock" in reply:
+            self._clock = reply["clock"]
+        return reply
+
+    async def send_raw(self, text: str | bytes) -> None:
+        await self._connection.send(text)
+
+    async def reply_to(self, request_id: object) -> dict[str, Any]:
+        while True:
+            message = await self._receive()
+            if "event" in message:
+                self._events.append(message)
+            elif message.get("id") == request_id:
+                return message
+            else:
+                raise LiveError(f"a reply to another request came first: {message}")
+
+    async def say(self, text: str, voice: str | None = None, at: float | None = None) -> str:
+        fields: dict[str, Any] = {"text": text}
+        if voice is not None:
+            fields["voice"] = voice
+        if at is not None:
+            fields["at"] = at
+        return str((await self.request("say", **fields))["id"])
+
+    async def set(self, values: dict[str, float], at: float | None = None) -> dict[str, Any]:
+        return await self.request("set", values=values, **({} if at is None else {"at": at}))
+
+    async def command(self, xml: str, at: float | None = None) -> dict[str, Any]:
+        return await self.request("command", xml=xml, **({} if at is None else {"at": at}))
+
+    async def stop(self, target: str | None = None) -> dict[str, Any]:
+        return await self.request("stop", **({} if target is None else {"target": target}))
+
+    async def state(self) -> dict[str, Any]:
+        return await self.request("state")
+
+    async def capabilities(self) -> dict[str, Any]:
+        return await self.request("capabilities")
+
+    async def next_event(self) -> dict[str, Any]:
+        if self._events:
+            return self._events.popleft()
+        message = await self._receive()
+        if "event" in message:
+            return message
+        raise LiveError(f"a reply nobody waits for: {message}")
+
+    async def events_until(self, request_id: str, event: str = "finished") -> AsyncIterator[dict[str, Any]]:
+        while True:
+            message = await self.next_event()
+            yield message
+            if message.get("id") == request_id and message.get("event") in (event, "failed"):
+                return
+
+    async def to_local_monotonic(self, t: float) -> float:
+        if self._clock is None:
+            await self.state()
+        assert self._clock is not None
+        return float(self._clock["epoch_monotonic_s"]) + t / 1000.0
+
+    async def _receive(self) -> dict[str, Any]:
+        async with asyncio.timeout(self.timeout):
+            return _message(await self._connection.recv())
+
+
+def _message(text: str | bytes) -> dict[str, Any]:
+    message = json.loads(text)
+    if not isinstance(message, dict):
+        raise LiveError(f"not a protocol message: {text!r}")
+    return message

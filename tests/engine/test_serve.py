@@ -6,6 +6,7 @@ before anything is bound.
 
 from __future__ import annotations
 
+import asyncio
 import json
 import os
 import re
@@ -13,6 +14,7 @@ import select
 import shutil
 import subprocess
 import sys
+import threading
 import time
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -23,7 +25,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 from websockets.exceptions import InvalidStatus
 
-from engine.live.client import LiveClient, LiveError
+from engine.live.client import AsyncLiveClient, LiveClient, LiveError
 from engine.live.protocol import EVENT_TYPES, MAX_MESSAGE_BYTES, REQUEST_TYPES, SCHEMA_VERSION
 from tests.engine.fuzz_support import FUZZ
 
@@ -366,3 +368,61 @@ def test_stop_ends_an_utterance_at_once(client):
     finished = [e for e in client.events_until(say_id, "finished") if e.get("id") == say_id][-1]
     assert finished["event"] == "finished" and finished["stopped"] is True
     assert client.state()["playing"] == []
+
+
+@needs_festival
+def test_the_asyncio_client_says_and_sets(server):
+    async def run():
+        async with await AsyncLiveClient.open(server.url) as head:
+            reply = await head.set({"jaw_open": 0.2})
+            applied = await head.next_event()
+            assert applied["event"] == "applied" and applied["t"] == reply["t"]
+            say_id = await head.say("Moi")
+            kinds = [e["event"] async for e in head.events_until(say_id, "finished") if e.get("id") == say_id]
+            await head.set({"jaw_open": 0})
+            return kinds, await head.to_local_monotonic(0.0)
+
+    kinds, epoch = asyncio.run(run())
+    assert kinds[0] == "speech_start" and "word" in kinds and kinds[-1] == "finished"
+    assert epoch <= time.monotonic()                                   # the server's clock is this computer's
+
+
+def test_two_clients_sending_fast_get_every_reply_in_order(server):
+    count = 2000
+    results: dict[str, list] = {}
+
+    def drive(name: str) -> None:
+        with LiveClient(server.url) as head:
+            for i in range(count):
+                message = {"type": "set", "id": i, "values": {"head_tilt": (i % 10) / 20}} if i % 2 else \
+                    {"type": "state", "id": i}
+                head.send_raw(json.dumps(message))
+                if i % 100 == 99:
+                    time.sleep(0.1)                                    # about 1000 messages a second
+            replies = []
+            while len(replies) < count:
+                message = head._receive(deadline=time.monotonic() + 60)
+                if "event" not in message:
+                    replies.append(message)
+            results[name] = replies
+            head.set({"head_tilt": 0})
+
+    threads = [threading.Thread(target=drive, args=(name,)) for name in ("a", "b")]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    for replies in results.values():
+        assert [r["id"] for r in replies] == list(range(count))
+        assert all(r["ok"] for r in replies), [r for r in replies if not r["ok"]][:3]
+        state_times = [r["t"] for r in replies if "frame" in r]
+        assert state_times == sorted(state_times)
+
+
+def test_importing_the_engine_and_the_live_protocol_loads_no_network_library():
+    code = ("import sys, engine, engine.cli, engine.live, engine.live.protocol, engine.live.head;"
+            "import engine.cli.serve_verbs; engine.cli.build_parser();"
+            "print(sorted(m for m in sys.modules if m.startswith('websockets')))")
+    result = subprocess.run([sys.executable, "-c", code], cwd=PROJECT_ROOT, capture_output=True, text=True,
+                            timeout=120, check=True)
+    assert result.stdout.strip() == "[]"
