@@ -117,6 +117,7 @@ class LiveHead:
         timed.extend((phone.start_ms, 1, {"event": "phone", "phone": phone.label, "word": phone.word,
                                           "onset_ms": phone.start_ms, "sample": sample(phone.start_ms)})
                      for phone in utterance.phones)
+        timed.extend((offset, 2, event) for offset, event in command_events(speech.timeline.activations))
         timed.sort(key=lambda item: (item[0], item[1]))
         events += [(offset, event) for offset, _, event in timed]
         end = speech.end_ms
@@ -127,21 +128,10 @@ class LiveHead:
 
     def add_commands(self, start_t: float, request_id: RequestId, owner: object,
                      activations: list[Activation]) -> Performance:
-        """Translated commands placed at ``start_t``: command_start/command_end for each command, then finished."""
-        spans: dict[str, tuple[float, float, str]] = {}
-        for activation in activations:
-            key = activation.source or activation.command or activation.parameter
-            name = activation.command or activation.parameter
-            low, high, _ = spans.get(key, (activation.start, activation.end, name))
-            spans[key] = (min(low, activation.start), max(high, activation.end), name)
-        events: list[tuple[float, Event]] = []
-        for source, (low, high, name) in spans.items():
-            events.append((low, {"event": "command_start", "command": name, "source": source}))
-            events.append((high, {"event": "command_end", "command": name, "source": source}))
-        events.sort(key=lambda item: item[0])
+        """Translated commands placed at ``start_t``: command_start/apex/end for each command, then finished."""
         end = max((a.end for a in activations), default=0.0)
         return self._add(Performance(request_id, owner, "command", start_t, list(activations),
-                                     self._columns(activations), max(end, 0.0), events,
+                                     self._columns(activations), max(end, 0.0), command_events(activations),
                                      extra={"finished": {"event": "finished"}}))
 
     def stop(self, target: RequestId = None, owner: object = None,
@@ -211,3 +201,40 @@ class LiveHead:
 
     def _columns(self, activations: list[Activation]) -> list[int]:
         return [self._column[a.parameter] for a in activations]
+
+
+def command_events(activations: list[Activation]) -> list[tuple[float, Event]]:
+    """command_start, command_apex and command_end of every high-level command among ``activations``
+    (offsets in ms), in time order. A command is a run of consecutive activations with the same command
+    name and source (the translator emits each command's together); the articulation of speech is not
+    a command. The apex is the first key where one of its activations is farthest from zero.
+
+    >>> import numpy as np
+    >>> nod = [Activation("head_nod", np.array([0, 100, 300]), np.array([0, 0.2, 0]), command="HeadNod",
+    ...                   source="<command>:1")]
+    >>> [(t, e["event"]) for t, e in command_events(nod)]
+    [(0.0, 'command_start'), (100.0, 'command_apex'), (300.0, 'command_end')]
+    """
+    runs: list[list[Activation]] = []
+    for activation in activations:
+        if activation.command in (None, "speech"):
+            continue
+        if runs and (runs[-1][0].command, runs[-1][0].source) == (activation.command, activation.source):
+            runs[-1].append(activation)
+        else:
+            runs.append([activation])
+    events: list[tuple[float, Event]] = []
+    for index, run in enumerate(runs):
+        fields = {"command": run[0].command, "source": run[0].source or "", "index": index}
+        peak, apex = -1.0, run[0].start
+        for activation in run:
+            k = int(np.argmax(np.abs(activation.values)))
+            size = float(abs(activation.values[k]))
+            if size > peak or (size == peak and activation.times[k] < apex):
+                peak, apex = size, float(activation.times[k])
+        events += [(min(a.start for a in run), {"event": "command_start", **fields}),
+                   (apex, {"event": "command_apex", **fields}),
+                   (max(a.end for a in run), {"event": "command_end", **fields})]
+    order = {"command_start": 0, "command_apex": 1, "command_end": 2}
+    events.sort(key=lambda item: (item[0], order[item[1]["event"]]))
+    return events

@@ -57,7 +57,8 @@ REQUEST_FIELDS: dict[str, tuple[frozenset[str], frozenset[str]]] = {
 }
 REQUEST_TYPES = tuple(sorted(REQUEST_FIELDS))
 #: The events the server sends (``docs/serve.md``).
-EVENT_TYPES = ("applied", "speech_start", "word", "phone", "command_start", "command_end", "finished", "failed")
+EVENT_TYPES = ("applied", "speech_start", "word", "phone", "command_start", "command_apex", "command_end", "finished",
+               "failed")
 MESSAGE_NAME = "<message>"
 _VOICE_NAME = re.compile(r"[A-Za-z0-9_]{1,64}\Z")
 

@@ -180,6 +180,9 @@ def test_a_command_runs_on_the_frame_clock_with_its_events(client):
     kinds = [e["event"] for e in events]
     assert kinds[0] == "command_start" and kinds[-1] == "finished" and "command_end" in kinds
     assert events[0]["command"] == "HeadNod"
+    [apex] = [e for e in events if e["event"] == "command_apex"]
+    [end] = [e for e in events if e["event"] == "command_end"]
+    assert events[0]["onset_t"] < apex["onset_t"] < end["onset_t"]
     assert events[-1]["t"] >= reply["end_t"] > reply["t"]
 
 
@@ -426,3 +429,18 @@ def test_importing_the_engine_and_the_live_protocol_loads_no_network_library():
     result = subprocess.run([sys.executable, "-c", code], cwd=PROJECT_ROOT, capture_output=True, text=True,
                             timeout=120, check=True)
     assert result.stdout.strip() == "[]"
+
+
+@needs_festival
+def test_an_inline_command_starts_with_the_next_word_on_the_frame_clock(client):
+    say_id = client.say("Hyvää päivää <HeadNod amplitude='60'/> mitä kuuluu")
+    events = events_of(client, say_id)
+    words = {e["word"]: e for e in events if e["event"] == "word"}
+    [start] = [e for e in events if e["event"] == "command_start"]
+    [apex] = [e for e in events if e["event"] == "command_apex"]
+    [end] = [e for e in events if e["event"] == "command_end"]
+    assert start["command"] == "HeadNod" and start["source"] == "<text>:1"
+    assert start["onset_t"] == pytest.approx(words["mitä"]["onset_t"])
+    assert start["t"] == words["mitä"]["t"]
+    assert start["onset_t"] < apex["onset_t"] < end["onset_t"] <= events[-1]["t"]
+    assert 0 <= apex["t"] - apex["onset_t"] < FRAME_MS
