@@ -44,6 +44,8 @@ RATE_PER_SECOND = 2000.0
 RATE_BURST = 2000.0
 #: Utterances one connection may have waiting for the synthesizer.
 MAX_WAITING_UTTERANCES = 4
+#: Clients connected at once; one more gets HTTP 503 in the handshake.
+MAX_CLIENTS = 64
 #: Furthest ahead a request may place something (``at``), ms from now.
 MAX_AHEAD_MS = 24 * 3600 * 1000.0
 #: The message types and the optional/required fields of each (besides ``type`` and ``id``).

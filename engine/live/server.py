@@ -44,6 +44,7 @@ from engine.live.head import Event, LiveHead
 from engine.live.protocol import (
     EVENT_TYPES,
     MAX_AHEAD_MS,
+    MAX_CLIENTS,
     MAX_FRAME_BYTES,
     MAX_MESSAGE_BYTES,
     MAX_TEXT_CHARS,
@@ -134,6 +135,7 @@ class LiveServer:
         self._voices: list[str] | None = None
         self._stopping: asyncio.Event | None = None
         self._tasks: set[asyncio.Future[None]] = set()
+        self._clients: set[Client] = set()
 
     # -- running -----------------------------------------------------------------------
 
@@ -184,7 +186,11 @@ class LiveServer:
                 await asyncio.sleep(wait)
             now_frame = math.floor((time.monotonic() - self.epoch) * self.fps + 1e-9)
             self.frame = max(self.frame + 1, now_frame)
-            self._deliver(self.head.advance(self.frame_time(self.frame)))
+            try:
+                self._deliver(self.head.advance(self.frame_time(self.frame)))
+            except Exception:                             # a bug of ours: said, and the clock keeps going
+                print(f"internal error in frame {self.frame}:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
+                self._deliver(self.head.stop())
 
     def _deliver(self, events: list[tuple[object, Event]]) -> None:
         for owner, event in events:
@@ -194,6 +200,8 @@ class LiveServer:
     # -- connections ---------------------------------------------------------------------
 
     def _check_token(self, connection: ServerConnection, request: HttpRequest) -> HttpResponse | None:
+        if len(self._clients) >= MAX_CLIENTS:
+            return connection.respond(HTTPStatus.SERVICE_UNAVAILABLE, f"at most {MAX_CLIENTS} clients at a time\n")
         if self.token is None:
             return None
         given = request.headers.get(TOKEN_HEADER, "")
@@ -204,6 +212,7 @@ class LiveServer:
 
     async def _serve_client(self, connection: ServerConnection) -> None:
         client = Client(connection)
+        self._clients.add(client)
         writer = asyncio.ensure_future(client.write())
         try:
             async for message in connection:
@@ -212,6 +221,7 @@ class LiveServer:
             pass
         finally:
             client.closed = True
+            self._clients.discard(client)
             client.cancelled.update(client.waiting_utterances)
             self.head.forget(client)
             client.outbox.put_nowait(None)
@@ -348,7 +358,7 @@ class LiveServer:
                 "commands": sorted(self.library.names()), "clock": self.clock(),
                 "limits": {"message_bytes": MAX_MESSAGE_BYTES, "frame_bytes": MAX_FRAME_BYTES,
                            "text_chars": MAX_TEXT_CHARS, "requests_per_second": RATE_PER_SECOND,
-                           "waiting_utterances": MAX_WAITING_UTTERANCES}}
+                           "waiting_utterances": MAX_WAITING_UTTERANCES, "clients": MAX_CLIENTS}}
 
     def voices(self) -> list[str]:
         if self._voices is None:

@@ -26,7 +26,14 @@ from hypothesis import strategies as st
 from websockets.exceptions import InvalidStatus
 
 from engine.live.client import AsyncLiveClient, LiveClient, LiveError
-from engine.live.protocol import EVENT_TYPES, MAX_MESSAGE_BYTES, REQUEST_TYPES, SCHEMA_VERSION
+from engine.live.protocol import (
+    EVENT_TYPES,
+    MAX_CLIENTS,
+    MAX_FRAME_BYTES,
+    MAX_MESSAGE_BYTES,
+    REQUEST_TYPES,
+    SCHEMA_VERSION,
+)
 from tests.engine.fuzz_support import FUZZ
 
 PROJECT_ROOT = Path(__file__).resolve().parents[2]
@@ -444,3 +451,40 @@ def test_an_inline_command_starts_with_the_next_word_on_the_frame_clock(client):
     assert start["t"] == words["mitä"]["t"]
     assert start["onset_t"] < apex["onset_t"] < end["onset_t"] <= events[-1]["t"]
     assert 0 <= apex["t"] - apex["onset_t"] < FRAME_MS
+
+
+def test_a_frame_over_the_hard_limit_closes_only_that_connection(server):
+    from websockets.exceptions import ConnectionClosed
+
+    with LiveClient(server.url) as head:
+        head.send_raw("x" * (MAX_FRAME_BYTES + 1))
+        with pytest.raises(ConnectionClosed) as closed:
+            head.state()
+        assert closed.value.rcvd is not None and closed.value.rcvd.code == 1009
+    with LiveClient(server.url) as head:
+        assert head.state()["ok"]
+
+
+def open_clients(url: str, count: int, into: list) -> None:
+    for _ in range(count):
+        into.append(LiveClient(url))  # noqa: PERF401  (each kept even when a later one is refused)
+
+
+def test_more_clients_than_the_limit_are_refused_and_the_server_recovers(server):
+    clients: list[LiveClient] = []
+    try:
+        with pytest.raises(InvalidStatus, match="503"):
+            open_clients(server.url, MAX_CLIENTS + 1, clients)
+        assert len(clients) <= MAX_CLIENTS
+    finally:
+        for head in clients:
+            head.close()
+    for _ in range(1000):                            # the server sees the closes a moment later
+        try:
+            with LiveClient(server.url) as head:
+                assert head.state()["ok"]
+            break
+        except InvalidStatus:
+            continue
+    else:
+        pytest.fail("the server stayed full after every client left")
