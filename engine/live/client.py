@@ -37,6 +37,7 @@ from typing import Any
 
 from websockets.asyncio.client import ClientConnection as AsyncConnection
 from websockets.asyncio.client import connect as async_connect
+from websockets.exceptions import ConnectionClosed, InvalidHandshake, InvalidStatus
 from websockets.sync.client import ClientConnection, connect
 
 from engine.live.protocol import MAX_FRAME_BYTES
@@ -46,18 +47,49 @@ class LiveError(Exception):
     """The server refused a request (``str()`` is its message) or sent something that is not the protocol."""
 
 
+class ConnectionLost(LiveError):
+    """The connection broke during a request that is not sent twice (``say``, ``command``, ``stop``)."""
+
+
+#: Requests a reconnecting client sends again after a lost connection: doing them twice does no harm.
+RESENDABLE = frozenset({"state", "capabilities", "set"})
+
+
 class LiveClient:
     """A connection to the live service; ``token`` when the server was started with one."""
 
-    def __init__(self, url: str, token: str | None = None, timeout: float = 30.0):
-        headers = {"Authorization": f"Bearer {token}"} if token is not None else None
+    def __init__(self, url: str, token: str | None = None, timeout: float = 30.0, reconnect: bool = False):
+        self.url = url
         self.timeout = timeout
-        self._stack = ExitStack()                 # connect() is a context manager in every websockets since 14
-        self._connection: ClientConnection = self._stack.enter_context(
-            connect(url, additional_headers=headers, open_timeout=timeout, max_size=MAX_FRAME_BYTES))
+        self.auto_reconnect = reconnect
+        """On a lost connection, connect again (:meth:`reconnect`) and send the request again when that is
+        harmless (:data:`RESENDABLE`); other requests raise :class:`ConnectionLost`."""
+        self._headers = {"Authorization": f"Bearer {token}"} if token is not None else None
+        self._stack = ExitStack()
+        self._connection = self._connect()
         self._ids = itertools.count(1)
         self._events: deque[dict[str, Any]] = deque()
         self._clock: dict[str, Any] | None = None
+
+    def _connect(self) -> ClientConnection:
+        # connect() is a context manager in every websockets since 14 (and must be used as one since 17.1)
+        return self._stack.enter_context(connect(self.url, additional_headers=self._headers,
+                                                 open_timeout=self.timeout, max_size=MAX_FRAME_BYTES))
+
+    def reconnect(self, attempts: int = 100, wait: float = 0.1) -> None:
+        """Connect again (a restarted server): up to ``attempts`` tries ``wait`` seconds apart. The clock is
+        read again, since a new server has a new epoch; events not yet handed out are kept."""
+        self._stack.close()
+        self._stack = ExitStack()
+        for attempt in range(attempts):
+            try:
+                self._connection = self._connect()
+                break
+            except (OSError, InvalidStatus, InvalidHandshake):
+                if attempt == attempts - 1:
+                    raise
+                time.sleep(wait)
+        self._clock = None
 
     def __enter__(self) -> LiveClient:
         return self
@@ -72,6 +104,18 @@ class LiveClient:
 
     def request(self, kind: str, **fields: Any) -> dict[str, Any]:
         """Send one request and return its reply (``ok`` true), or raise :class:`LiveError`."""
+        try:
+            return self._request_once(kind, fields)
+        except (ConnectionClosed, OSError):
+            if not self.auto_reconnect:
+                raise
+            self.reconnect()
+            if kind in RESENDABLE:
+                return self._request_once(kind, fields)
+            raise ConnectionLost(f"the connection was lost during '{kind}'; connected again, but the request was "
+                                 "not sent again (the server may or may not have done it)") from None
+
+    def _request_once(self, kind: str, fields: dict[str, Any]) -> dict[str, Any]:
         request_id = f"c{next(self._ids)}"
         self.send_raw(json.dumps({"type": kind, "id": request_id, **fields}))
         reply = self.reply_to(request_id)

@@ -488,3 +488,35 @@ def test_more_clients_than_the_limit_are_refused_and_the_server_recovers(server)
             continue
     else:
         pytest.fail("the server stayed full after every client left")
+
+
+def test_a_reconnecting_client_carries_on_after_the_server_is_killed_and_restarted(tmp_path):
+    from engine.live.client import ConnectionLost
+
+    runs = [tmp_path / name for name in ("first", "second", "third")]
+    for run in runs:
+        run.mkdir()
+    servers = [start_server(runs[0])]
+    port = servers[0].url.rsplit(":", 1)[1]
+
+    def kill_and_restart() -> None:
+        servers[-1].process.kill()
+        stop_server(servers[-1])
+        servers.append(start_server(runs[len(servers)], "--port", port))
+
+    try:
+        with LiveClient(servers[0].url, reconnect=True) as head:
+            head.set({"jaw_open": 0.3})
+            epoch = head.state()["clock"]["epoch_monotonic_s"]
+            kill_and_restart()
+            state = head.state()                                   # sent again on the new connection
+            assert state["clock"]["epoch_monotonic_s"] > epoch and state["values"]["jaw_open"] == 0.0
+            assert head.set({"jaw_open": 0.3})["ok"]
+            kill_and_restart()
+            with pytest.raises(ConnectionLost, match="'command'"):
+                head.command("<commands><Blink/></commands>")
+            assert head.state()["ok"]
+    finally:
+        for served in servers:
+            stop_server(served)
+    assert not any("Traceback" in served.stderr() for served in servers)
