@@ -520,3 +520,31 @@ def test_a_reconnecting_client_carries_on_after_the_server_is_killed_and_restart
         for served in servers:
             stop_server(served)
     assert not any("Traceback" in served.stderr() for served in servers)
+
+
+@needs_festival
+def test_the_gaze_cue_example_logs_event_times_that_agree_with_the_frames_and_the_audio(server, tmp_path):
+    import csv
+    import io
+
+    log = tmp_path / "log.csv"
+    subprocess.run([sys.executable, "docs/examples/psychopy_gaze_cue.py", "--url", server.url, "--log", str(log)],
+                   cwd=PROJECT_ROOT, check=True, timeout=300, capture_output=True)
+    rows = list(csv.DictReader(io.StringIO(log.read_text(encoding="utf-8"))))
+    say = [r for r in rows if r["request"] == "say"]
+    assert say[0]["event"] == "speech_start" and say[-1]["event"] == "finished"
+    assert [r["word"] for r in say if r["event"] == "word"] == ["Katso", "tänne", "ja", "sitten", "vasemmalle"]
+    start_t, rate = float(say[0]["t"]), int(say[0]["sample_rate"])
+    for row in rows:
+        t = float(row["t"])
+        assert t == pytest.approx(round(t / FRAME_MS) * FRAME_MS)                    # a frame of the clock
+        assert 0 <= t - float(row["onset_t"]) < FRAME_MS                             # the first frame at its onset
+        assert float(row["received_monotonic_s"]) >= float(row["frame_monotonic_s"])  # never heard before shown
+        if row["request"] == "say" and row["sample"]:                                 # the audio clock agrees
+            assert float(row["onset_t"]) - start_t == pytest.approx(int(row["sample"]) * 1000 / rate, abs=0.05)
+    [nod] = [r for r in say if r["event"] == "command_start"]
+    [tanne] = [r for r in say if r["word"] == "tänne" and r["event"] == "word"]
+    assert nod["command"] == "HeadNod" and nod["t"] == tanne["t"]                    # nods at the word after it
+    left, ahead = (next(r for r in rows if r["request"] == name) for name in ("look_left", "look_ahead"))
+    assert float(left["onset_t"]) == float(say[-1]["t"]) + 500
+    assert float(ahead["t"]) - float(left["t"]) == pytest.approx(500, abs=FRAME_MS)
