@@ -22,6 +22,7 @@ only keeps it.
 
 from __future__ import annotations
 
+import bisect
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -97,8 +98,7 @@ class LiveHead:
 
     def add_set(self, at: float, request_id: RequestId, owner: object, values: dict[str, float]) -> None:
         """New base values from the first frame at or after ``at`` (names and ranges checked by the caller)."""
-        self.pending_sets.append(PendingSet(at, request_id, owner, dict(values)))
-        self.pending_sets.sort(key=lambda s: s.at)
+        bisect.insort_right(self.pending_sets, PendingSet(at, request_id, owner, dict(values)), key=lambda s: s.at)
 
     def add_speech(self, start_t: float, request_id: RequestId, owner: object, speech: Speech) -> Performance:
         """An utterance whose audio sample 0 is at ``start_t``: its timeline plus speech_start, word, phone events."""

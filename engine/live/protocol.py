@@ -46,6 +46,8 @@ RATE_BURST = 2000.0
 MAX_WAITING_UTTERANCES = 4
 #: Clients connected at once; one more gets HTTP 503 in the handshake.
 MAX_CLIENTS = 64
+#: Sets waiting for their frame, and performances running or waiting, on the head (all clients together).
+MAX_SCHEDULED = 10_000
 #: Furthest ahead a request may place something (``at``), ms from now.
 MAX_AHEAD_MS = 24 * 3600 * 1000.0
 #: The message types and the optional/required fields of each (besides ``type`` and ``id``).

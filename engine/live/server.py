@@ -47,6 +47,7 @@ from engine.live.protocol import (
     MAX_CLIENTS,
     MAX_FRAME_BYTES,
     MAX_MESSAGE_BYTES,
+    MAX_SCHEDULED,
     MAX_TEXT_CHARS,
     MAX_WAITING_UTTERANCES,
     RATE_BURST,
@@ -248,6 +249,10 @@ class LiveServer:
     def _handle(self, client: Client, request: Request) -> dict[str, Any]:
         fields = request.fields
         reply: dict[str, Any] = {"id": request.id, "ok": True}
+        if request.type in ("set", "say", "command") and (len(self.head.pending_sets) >= MAX_SCHEDULED
+                                                         or len(self.head.performances) >= MAX_SCHEDULED):
+            raise RequestError(f"{MAX_SCHEDULED} changes or performances are already waiting on the head; "
+                               "stop some first", request.id)
         if request.type == "set":
             check_values(fields["values"], self.head.ranges, request.id)
             at = self._start(fields.get("at"), request.id)
@@ -358,7 +363,8 @@ class LiveServer:
                 "commands": sorted(self.library.names()), "clock": self.clock(),
                 "limits": {"message_bytes": MAX_MESSAGE_BYTES, "frame_bytes": MAX_FRAME_BYTES,
                            "text_chars": MAX_TEXT_CHARS, "requests_per_second": RATE_PER_SECOND,
-                           "waiting_utterances": MAX_WAITING_UTTERANCES, "clients": MAX_CLIENTS}}
+                           "waiting_utterances": MAX_WAITING_UTTERANCES, "clients": MAX_CLIENTS,
+                           "scheduled": MAX_SCHEDULED}}
 
     def voices(self) -> list[str]:
         if self._voices is None:

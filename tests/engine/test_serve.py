@@ -227,6 +227,10 @@ def test_the_shipped_schema_lists_every_request_and_event():
     ('{"type": "command", "id": 7, "xml": "<commands><Nope/></commands>"}', r"^<command>:1: unknown command"),
     ("x" * (MAX_MESSAGE_BYTES + 1), r"longer than 65536 bytes"),
     (b"\x00\x01binary", r"binary messages are not requests"),
+    ("[" * 60000, r"not JSON"),
+    ('{"type": "set", "id": 8, "values": {"jaw_open": 1' + "0" * 400 + '}}', r"must be a number"),
+    ('{"type": "stop", "id": 9, "target": [1]}', r"\"target\" must be a string"),
+    ('{"type": "say", "id": 10, "text": "moi", "voice": "../../etc/passwd"}', r"\"voice\" is a Festival voice"),
 ])
 def test_a_bad_message_gets_an_error_reply_and_the_connection_stays_usable(client, message, expected):
     client.send_raw(message)
@@ -548,3 +552,20 @@ def test_the_gaze_cue_example_logs_event_times_that_agree_with_the_frames_and_th
     left, ahead = (next(r for r in rows if r["request"] == name) for name in ("look_left", "look_ahead"))
     assert float(left["onset_t"]) == float(say[-1]["t"]) + 500
     assert float(ahead["t"]) - float(left["t"]) == pytest.approx(500, abs=FRAME_MS)
+
+
+def test_what_waits_on_the_head_is_bounded_and_stop_clears_it(client):
+    from engine.live.protocol import MAX_SCHEDULED
+
+    far = client.state()["t"] + 3_600_000
+    for batch in range(MAX_SCHEDULED // 1000):
+        for i in range(1000):
+            client.send_raw(json.dumps({"type": "set", "id": f"w{batch}-{i}", "values": {"jaw_open": 0.1},
+                                        "at": far + i}))
+        for i in range(1000):
+            assert client.reply_to(f"w{batch}-{i}")["ok"]
+        time.sleep(0.5)                                   # within the rate limit (2000 a second)
+    with pytest.raises(LiveError, match="already waiting on the head"):
+        client.set({"jaw_open": 0.1}, at=far)
+    client.stop()
+    assert client.set({"jaw_open": 0.0})["ok"]
