@@ -317,6 +317,7 @@ class LiveServer:
         task.add_done_callback(self._tasks.discard)
 
     async def _say(self, client: Client, request: Request, at: float) -> None:
+        from engine.speech.festival import SynthesisCancelled
         from engine.speech.say import speak
 
         assert self._synthesis_lock is not None
@@ -324,8 +325,15 @@ class LiveServer:
             async with self._synthesis_lock:
                 if request.id in client.cancelled or client.closed:
                     return
+                if hasattr(self.synthesizer, "cancelled"):       # Festival is stopped when its client is gone
+                    self.synthesizer.cancelled = lambda: client.closed or request.id in client.cancelled
                 speech = await asyncio.to_thread(speak, request.fields["text"], self.model, self.synthesizer,
                                                  request.fields.get("voice"), self.library)
+        except SynthesisCancelled:
+            if not client.closed:
+                client.cancelled.discard(request.id)
+                client.send({"event": "finished", "id": request.id, "t": self.head.t, "stopped": True})
+            return
         except UserError as exc:
             client.send({"event": "failed", "id": request.id, "t": self.head.t, "error": " ".join(str(exc).split())})
             return

@@ -569,3 +569,14 @@ def test_what_waits_on_the_head_is_bounded_and_stop_clears_it(client):
         client.set({"jaw_open": 0.1}, at=far)
     client.stop()
     assert client.set({"jaw_open": 0.0})["ok"]
+
+
+@needs_festival
+def test_stopping_an_utterance_still_in_synthesis_ends_it_and_the_next_one_is_spoken(client):
+    long_id = client.say(" ".join(["Tämä on pitkä lause, jota ei koskaan kuulla."] * 30))
+    client.stop(long_id)
+    [ended] = [e for e in client.events_until(long_id, "finished") if e.get("id") == long_id]
+    assert ended["event"] == "finished" and ended["stopped"] is True
+    say_id = client.say("Moi")
+    kinds = [e["event"] for e in events_of(client, say_id)]
+    assert kinds[0] == "speech_start" and kinds[-1] == "finished"
