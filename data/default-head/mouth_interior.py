@@ -38,10 +38,9 @@ from collections import defaultdict
 
 import numpy as np
 from head_geometry import kabsch
-from scipy import sparse
-from scipy.sparse.csgraph import connected_components, dijkstra
 
 from engine.deform.transforms import apply, rotation_about_axis
+from engine.identity.mouth_bag import edge_loop, oral_cavity  # noqa: F401  (the derivation's names, one implementation)
 
 UPPER_TEETH_SHIFT_MM = (0.0, -2.0, -0.6)
 LOWER_TEETH_SHIFT_MM = (0.0, -0.3, -2.2)
@@ -56,60 +55,6 @@ TONGUE_SHADE_MM = (8.0, 40.0)  # the tongue darkens from this far behind the low
 
 def rgb(colour: str) -> np.ndarray:
     return np.array([int(colour[i:i + 2], 16) for i in (1, 3, 5)], dtype=float)
-
-
-def polygon_graph(polygons, n: int) -> sparse.csr_matrix:
-    """Edge-length graph over the polygons' own edges (not their triangulation's diagonals)."""
-    edges = np.array([(p[i], p[(i + 1) % len(p)]) for p in polygons for i in range(len(p))])
-    return sparse.coo_matrix((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), shape=(n, n)).tocsr()
-
-
-def edge_loop(polygons, start: int, first: int) -> list[int]:
-    """The quad edge loop from ``start`` through ``first``, walked straight on at every
-    four-valent vertex until it closes or meets a pole."""
-    faces_of, neighbours = defaultdict(list), defaultdict(set)
-    for f, p in enumerate(polygons):
-        for i in range(len(p)):
-            a, b = int(p[i]), int(p[(i + 1) % len(p)])
-            faces_of[a].append(f)
-            neighbours[a].add(b)
-            neighbours[b].add(a)
-    path = [int(start), int(first)]
-    while len(neighbours[path[-1]]) == 4:
-        u, v = path[-2], path[-1]
-        beside = {int(x) for f in faces_of[v] if u in polygons[f] for x in polygons[f]}
-        ahead = [w for w in neighbours[v] if w not in beside]
-        if len(ahead) != 1 or ahead[0] in path:
-            break
-        path.append(ahead[0])
-    return path
-
-
-def oral_cavity(vertices, polygons, is_skin, upper_lip_vertex: int) -> tuple[np.ndarray, np.ndarray]:
-    """The skin vertices of the mouth bag and each one's depth (mm, along the surface) behind the lip rim.
-
-    The rim is the edge loop through the upper lip's lowest midline vertex
-    (landmark 2.2) that runs around the mouth; cut along it, the skin falls
-    apart into the face (which holds the top of the head) and the bag.
-    """
-    n = len(vertices)
-    skin_polygons = [p for p in polygons if is_skin[p].all()]
-    graph = polygon_graph(skin_polygons, n)
-    graph = ((graph + graph.T) > 0).astype(float).tocoo()
-    length = np.linalg.norm(vertices[graph.row] - vertices[graph.col], axis=1)
-    distances = sparse.csr_matrix((length, (graph.row, graph.col)), shape=(n, n))
-    sideways = [int(v) for v in distances[upper_lip_vertex].indices if vertices[v, 0] > vertices[upper_lip_vertex, 0]]
-    rim = np.array(edge_loop(skin_polygons, upper_lip_vertex, sideways[0]))
-    keep = np.ones(n, bool)
-    keep[rim] = False
-    cut = distances.multiply(keep[:, None]).multiply(keep[None, :]).tocsr()
-    cut.eliminate_zeros()
-    _count, label = connected_components(cut, directed=False)
-    skin = np.flatnonzero(is_skin)
-    face = label[skin[np.argmax(vertices[skin, 1])]]
-    bag = np.flatnonzero(is_skin & keep & (label != face))
-    depth = dijkstra(distances, indices=rim, min_only=True)
-    return bag, depth[bag]
 
 
 def cavity_colors(depth: np.ndarray) -> np.ndarray:

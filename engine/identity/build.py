@@ -21,6 +21,7 @@ from engine.identity.rest_fit import (
     keep_eyelid_clearance,
     keep_fields_off_the_eyes,
     keep_lids_off_the_eyes,
+    keep_mouth_bag_inside,
     keep_rest_lip_gap,
     refit_eyelid_angles,
 )
@@ -72,7 +73,7 @@ def identity_vertex_displacement(model: Model, identity: Identity,
         if part in model.parts:
             rest_h = targets.rest[helper] + offset
             rigid[part] = similarity(rest_h, rest_h + D_kept[helper])
-    D = keep_rest_lip_gap(model, D)
+    D = keep_rest_lip_gap(model, keep_mouth_bag_inside(model, D))
     rigid = keep_eyelid_clearance(model, D, rigid)
     for part, move in rigid.items():
         idx = model.part_vertices(part)

@@ -57,6 +57,46 @@ def keep_rest_lip_gap(base: Model, D: np.ndarray) -> np.ndarray:
     return D
 
 
+def keep_mouth_bag_inside(base: Model, D: np.ndarray, neighbours: int = 8, behind_mm: float = 3.0) -> np.ndarray:
+    """``D`` with the skin inside the mouth moving as the face skin nearest it does.
+
+    MakeHuman's targets move the mouth's inner lining on their own; on a thin
+    face the cheeks come in further than the lining, and a smile pulls the
+    corners back through it (seen as red spots at the corners). Moved with the
+    skin around it, the lining keeps the default head's distance behind it.
+    The lips' own inner faces (within ``behind_mm`` of the rim) keep their motion.
+    """
+    from scipy.spatial import cKDTree
+
+    if "skin" not in base.parts or "2.2" not in base.landmarks:
+        return D
+    bag, depth = _mouth_bag(base)
+    is_skin = base.vertex_part == base.parts.index("skin")
+    outside = np.flatnonzero(is_skin & ~np.isin(np.arange(base.n_vertices), bag))
+    bag = bag[depth > behind_mm]
+    if not len(bag):
+        return D
+    dist, near = cKDTree(base.vertices[outside]).query(base.vertices[bag], k=neighbours)
+    w = 1.0 / np.maximum(dist, 1e-6) ** 2
+    D = D.copy()
+    D[bag] = np.einsum("mk,mkd->md", w / w.sum(axis=1, keepdims=True), D[outside[near]])
+    return D
+
+
+_BAGS: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
+
+
+def _mouth_bag(model: Model) -> tuple[np.ndarray, np.ndarray]:
+    from engine.identity.mouth_bag import oral_cavity
+
+    key = (id(model), model.revision)
+    if key not in _BAGS:
+        is_skin = model.vertex_part == model.parts.index("skin")
+        _BAGS.clear()
+        _BAGS[key] = oral_cavity(model.vertices, model.polygons(), is_skin, model.landmarks["2.2"])
+    return _BAGS[key]
+
+
 def eye_centre(model: Model, side: str) -> np.ndarray:
     """The centre of an eyeball: its gaze pivot where the model has one, else its vertices' mean."""
     name = f"eye_{side}_turn"

@@ -12,12 +12,11 @@ every bilabial.
 
 Not all of them pass yet. :data:`KNOWN_FAILURES` lists, per identity, the
 checks that fail today (strict: a listed check that starts to pass fails the
-run, so the list only shrinks): 9 of 216. They are the lips' contact when
-closure meets rounding or spreading (``lip_protrude``, ``mouth_widen``) on the
-older man and the wide mouth, the lips' order and the 1 mm closure with the
-jaw barely open on the wide mouth (1.002 mm), and two magnitudes on the
-smallest face (the nose wing in AU9 0.87 mm of 1, the corners' level in
-``mouth_widen``) — open work in issue 18, not hidden.
+run, so the list only shrinks): 2 of 216. On the wide mouth the closed lips
+are 0.71 mm apart in one section of the middle half (the check asks < 0.6),
+and on the smallest face AU9 lifts the nose wing 0.87 mm (the check asks
+> 1 mm, an absolute figure made for the default head's size) — open work in
+issue 18, not hidden.
 """
 
 from __future__ import annotations
@@ -90,14 +89,7 @@ def head(request):
 
 KNOWN_FAILURES = frozenset({
     "test_au9_raises_the_nose_wings_and_lowers_the_inner_brows[young-woman-asian]",
-    "test_mouth_widen_pulls_the_corners_apart[young-woman-asian]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[older-man-european-others2]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[older-man-european-others3]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others0]",
-    "test_closure_survives_the_neighbouring_vowels_lip_shape[woman-african-wide-mouth-others1]",
-    "test_closure_with_the_jaw_barely_open[woman-african-wide-mouth]",
-    "test_lip_contours_keep_their_vertical_order_when_closed[woman-african-wide-mouth]",
-    "test_no_value_in_range_makes_the_lips_cross[woman-african-wide-mouth-lip_protrude]",
+    "test_lower_lip_raise_closes_the_lips[woman-african-wide-mouth]",
 })
 
 
