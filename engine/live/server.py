@@ -232,9 +232,15 @@ class LiveServer:
     async def _answer(self, client: Client, message: str | bytes) -> dict[str, Any]:
         request_id: RequestId = None
         try:
-            if not client.within_rate():
-                raise RequestError(f"too many requests: at most {RATE_PER_SECOND:g} a second")
-            request = parse_request(message)
+            over_rate = not client.within_rate()
+            try:
+                request = parse_request(message)
+            except RequestError as exc:
+                if over_rate:                           # the same refusal, whatever else is wrong
+                    exc = RequestError(f"too many requests: at most {RATE_PER_SECOND:g} a second", exc.request_id)
+                raise exc from None
+            if over_rate:
+                raise RequestError(f"too many requests: at most {RATE_PER_SECOND:g} a second", request.id)
             request_id = request.id
             return self._handle(client, request)
         except RequestError as exc:

@@ -580,3 +580,15 @@ def test_stopping_an_utterance_still_in_synthesis_ends_it_and_the_next_one_is_sp
     say_id = client.say("Moi")
     kinds = [e["event"] for e in events_of(client, say_id)]
     assert kinds[0] == "speech_start" and kinds[-1] == "finished"
+
+
+def test_a_client_over_the_rate_limit_is_refused_per_request_and_served_again_later(client):
+    count = 6000                                          # three seconds' worth, sent as fast as the socket takes
+    for i in range(count):
+        client.send_raw(json.dumps({"type": "state", "id": i}))
+    replies = [client.reply_to(i) for i in range(count)]
+    refused = [r for r in replies if not r["ok"]]
+    assert refused and all(r["error"] == "<message>:1: too many requests: at most 2000 a second" for r in refused)
+    assert replies[0]["ok"]
+    time.sleep(1.0)                                       # the allowance refills
+    assert client.state()["ok"]
