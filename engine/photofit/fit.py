@@ -1,0 +1,74 @@
+"""A person's head from a front (and optionally a side) photograph: shape, rig and texture."""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from engine.formats.model_files import load_model
+from engine.identity import make_identity_head
+from engine.identity.carry_over import Similarity, carry_rig_over, similarity
+from engine.model import Model
+from engine.photofit.errors import PhotoFitError
+from engine.photofit.photos import read_photo
+from engine.photofit.points import PhotoPoints, read_points
+from engine.photofit.shape import ShapeFit, fit_shape
+from engine.photofit.texture import bake_texture
+
+
+@dataclass
+class PhotoFit:
+    head: Model
+    shape: ShapeFit
+    seconds: dict[str, float] = field(default_factory=dict)     # landmarks, shape, texture
+
+
+def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Model | None = None) -> PhotoFit:
+    """Fit the default head to ``photos`` (view → RGB pixels) and their landmarks (view → id → pixel)."""
+    base = base if base is not None else load_model()
+    seconds: dict[str, float] = {"landmarks": 0.0}
+    started = time.perf_counter()
+    shape = fit_shape(base, {v: p for v, p in points.items() if v in photos})
+    head = make_identity_head(shape.identity, base) if shape.identity.values else base.copy()
+    moved = head.vertices + shape.warp
+    rigid: dict[str, Similarity] = {}
+    for part in ("eye_left", "eye_right"):
+        if part in head.parts:
+            inside = head.vertex_part == head.parts.index(part)
+            rigid[part] = similarity(head.vertices[inside], moved[inside])
+    fitted = carry_rig_over(head, moved, rigid)
+    fitted.identity = head.identity
+    fitted.name = "person-from-photos"
+    fitted.description = f"{base.description} Fitted to photographs ({', '.join(photos)})."
+    seconds["shape"] = time.perf_counter() - started
+    started = time.perf_counter()
+    fitted.texture, _ = bake_texture(fitted, fitted.vertices, photos, shape.cameras)
+    fitted.changed()
+    seconds["texture"] = time.perf_counter() - started
+    return PhotoFit(fitted, shape, seconds)
+
+
+def fit_photo_files(front: str | Path, side: str | Path | None, landmarks: str | Path) -> PhotoFit:
+    """:func:`fit_photos` of files: the photographs (JPEG/PNG) and POINTS.json; errors name the file."""
+    started = time.perf_counter()
+    base = load_model()
+    points = read_points(landmarks, known=set(base.landmarks))
+    photos = {"front": read_photo(front)}
+    if side is not None:
+        photos["side"] = read_photo(side)
+    if "side" in points and side is None:
+        raise PhotoFitError("the landmark file has a 'side' view but no --side photograph was given", file=landmarks)
+    for view, photo in photos.items():
+        height, width = photo.shape[:2]
+        for key, (x, y) in points.get(view, {}).items():
+            if not (0 <= x <= width and 0 <= y <= height):
+                raise PhotoFitError(f"'{view}' landmark {key} at ({x:g}, {y:g}) is outside the {width}×{height} "
+                                    "photograph", file=landmarks)
+    read = time.perf_counter() - started
+    result = fit_photos(photos, points, base)
+    result.seconds["landmarks"] = read
+    return result

@@ -1,0 +1,108 @@
+"""POINTS.json: landmarks a user placed on the front (and side) photograph.
+
+The file is ``{"front": {"<MPEG-4 id>": [x, y], ...}, "side": {...}}`` in
+pixels of the photograph as stored (origin at the top left, x right, y
+down). Any subset of the model's landmarks is accepted; the front photograph
+needs at least :data:`REQUIRED_FRONT` (pupils, nose tip, mouth corners,
+chin). The side view is optional.
+
+>>> import json, tempfile, os
+>>> path = os.path.join(tempfile.mkdtemp(), "p.json")
+>>> front = {k: [100.0 + i, 50.0] for i, k in enumerate(REQUIRED_FRONT)}
+>>> with open(path, "w") as f:
+...     json.dump({"front": front}, f)
+>>> points = read_points(path, known={*REQUIRED_FRONT, "2.2"})
+>>> sorted(points), points["front"]["9.3"]
+(['front'], (102.0, 50.0))
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Collection
+from pathlib import Path
+
+from engine.photofit.errors import PhotoFitError
+
+#: What the front photograph must show: pupils, nose tip, mouth corners, chin.
+REQUIRED_FRONT = ("3.5", "3.6", "9.3", "8.3", "8.4", "2.1")
+VIEWS = ("front", "side")
+MAX_FILE_BYTES = 1 << 20
+MAX_COORDINATE = 1e6
+
+PhotoPoints = dict[str, dict[str, tuple[float, float]]]
+
+
+def read_points(path: str | Path, known: Collection[str]) -> PhotoPoints:
+    """The landmarks of ``path``: view → MPEG-4 id → (x, y) pixels; ``known`` the model's landmark ids.
+
+    Raises :class:`PhotoFitError` (one line, naming the file) for anything else.
+    """
+    path = Path(path)
+    try:
+        size = path.stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise PhotoFitError(f"the landmark file is {size} bytes; at most {MAX_FILE_BYTES} are read", file=path)
+        text = path.read_bytes().decode("utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise PhotoFitError(f"cannot read the landmark file: {getattr(exc, 'strerror', None) or exc}",
+                            file=path) from None
+    try:
+        data = json.loads(text, parse_constant=_refuse_constant)
+    except (ValueError, RecursionError) as exc:
+        line = getattr(exc, "lineno", None)
+        raise PhotoFitError(f"not valid JSON: {getattr(exc, 'msg', str(exc))[:200]}", file=path, line=line) from None
+    return parse_points(data, known, path)
+
+
+def parse_points(data: object, known: Collection[str], path: str | Path) -> PhotoPoints:
+    """Validate decoded POINTS.json ``data`` (see :func:`read_points`)."""
+    if not isinstance(data, dict):
+        raise PhotoFitError('the landmark file must hold an object {"front": {...}, "side": {...}}', file=path)
+    for view in data:
+        if view not in VIEWS:
+            raise PhotoFitError(f"unknown view {_short(view)} (use 'front' and, optionally, 'side')", file=path)
+    if "front" not in data:
+        raise PhotoFitError("the landmark file has no 'front' view", file=path)
+    out: PhotoPoints = {}
+    for view, points in data.items():
+        if not isinstance(points, dict):
+            raise PhotoFitError(f"'{view}' must be an object of landmark id → [x, y]", file=path)
+        parsed: dict[str, tuple[float, float]] = {}
+        for key, xy in points.items():
+            if key not in known:
+                raise PhotoFitError(f"'{view}': unknown landmark {_short(key)} (the model has "
+                                    f"{', '.join(sorted(known, key=_id_order))})", file=path)
+            if (not isinstance(xy, list) or len(xy) != 2
+                    or not all(isinstance(c, int | float) and not isinstance(c, bool) for c in xy)):
+                raise PhotoFitError(f"'{view}' landmark {key}: expected [x, y] pixels, got {_short(xy)}", file=path)
+            x, y = float(xy[0]), float(xy[1])
+            if not (math.isfinite(x) and math.isfinite(y)) or max(abs(x), abs(y)) > MAX_COORDINATE:
+                raise PhotoFitError(f"'{view}' landmark {key}: coordinates must be finite and within "
+                                    f"±{MAX_COORDINATE:g} pixels", file=path)
+            parsed[key] = (x, y)
+        out[view] = parsed
+    missing = [k for k in REQUIRED_FRONT if k not in out["front"]]
+    if missing:
+        raise PhotoFitError(f"the front view needs landmarks {', '.join(missing)} (pupils 3.5 3.6, nose tip 9.3, "
+                            "mouth corners 8.3 8.4, chin 2.1)", file=path)
+    if "side" in out and 0 < len(out["side"]) < 3:
+        raise PhotoFitError("the side view needs at least 3 landmarks (or leave it out)", file=path)
+    return out
+
+
+def _refuse_constant(name: str) -> float:
+    raise ValueError(f"{name} is not a number JSON allows")
+
+
+def _short(value: object) -> str:
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "..."
+
+
+def _id_order(key: str) -> tuple[int, ...]:
+    try:
+        return tuple(int(p) for p in key.split("."))
+    except ValueError:
+        return (1 << 30,)

@@ -1,0 +1,141 @@
+"""The shape fit: cameras and identity parameters by regularised least squares, then a residual warp.
+
+The landmark positions of an identity are close to linear in its parameters
+near the default head, so they are sampled once per parameter
+(:func:`landmark_basis`, one :func:`identity_vertices` each) and the
+optimiser works on that linear model; the cameras are fitted exactly (the
+rotation is non-linear). A prior keeps each parameter near its default, in
+units of :data:`PRIOR_SPREAD`. What the identity space cannot explain is
+taken up by a smooth warp (Gaussian radial basis functions of the landmarks'
+3-D residuals), eyes, teeth and tongue moving rigidly with it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from engine.identity import Identity, identity_parameter, identity_vertices
+from engine.model import Model
+from engine.photofit.camera import WeakPerspective, initial_vector
+
+#: The identity parameters fitted, and the step used to sample each one's effect.
+FITTED_PARAMETERS = ("sex", "age", "weight", "head-scale-horiz-decr-incr", "head-scale-vert-decr-incr",
+                     "nose-scale-horiz-decr-incr", "nose-scale-vert-decr-incr", "nose-trans-down-up",
+                     "nose-scale-depth-decr-incr", "mouth-scale-horiz-decr-incr", "mouth-trans-down-up",
+                     "eye-trans-down-up", "eye-trans-in-out", "eye-scale-decr-incr", "chin-height-decr-incr",
+                     "chin-width-decr-incr", "chin-prominent-decr-incr")
+#: How far (as a fraction of each parameter's range) the prior lets a parameter move at one unit of cost.
+PRIOR_SPREAD = 0.35
+PIXEL_NOISE = 2.0                     # px: the landmark placement error the reprojection residual is scaled by
+WARP_RADIUS = 22.0                    # mm: the Gaussian warp's width
+RIGID_PARTS = ("eye_left", "eye_right", "teeth_upper", "teeth_lower", "tongue")
+
+
+@dataclass
+class ShapeFit:
+    identity: Identity
+    cameras: dict[str, WeakPerspective]
+    vertices: np.ndarray              # identity vertices + residual warp, (N, 3) mm
+    warp: np.ndarray                  # the warp alone, (N, 3) mm
+    error_before_warp: float          # RMS landmark reprojection error, px
+    error: float                      # after the warp, px
+
+
+def landmark_basis(base: Model, ids: list[str]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Default values (P,), steps (P,), landmark rest positions (L, 3) and their change per unit (P, L, 3)."""
+    index = np.array([base.landmarks[k] for k in ids])
+    defaults, steps, basis = [], [], []
+    rest = base.vertices[index]
+    for name in FITTED_PARAMETERS:
+        p = identity_parameter(name)
+        step = 0.5 * (p.maximum - p.minimum) * 0.5
+        value = p.default + step if p.default + step <= p.maximum else p.default - step
+        moved = identity_vertices(Identity({name: value}), base)[index]
+        defaults.append(p.default)
+        steps.append(value - p.default)
+        basis.append((moved - rest) / (value - p.default))
+    return np.array(defaults), np.array(steps), rest, np.array(basis)
+
+
+def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]]]) -> ShapeFit:
+    """Fit ``base`` (the default head) to the landmarks of each view (view → id → pixel)."""
+    ids = sorted({k for view in points.values() for k in view})
+    defaults, _, rest, basis = landmark_basis(base, ids)
+    spans = np.array([identity_parameter(n).maximum - identity_parameter(n).minimum for n in FITTED_PARAMETERS])
+    lows = np.array([identity_parameter(n).minimum for n in FITTED_PARAMETERS])
+    highs = np.array([identity_parameter(n).maximum for n in FITTED_PARAMETERS])
+    views = [v for v in ("front", "side") if points.get(v)]
+    chosen = {v: (np.array([ids.index(k) for k in points[v]]), np.array(list(points[v].values()), dtype=float))
+              for v in views}
+    P = len(FITTED_PARAMETERS)
+
+    def landmarks(values: np.ndarray) -> np.ndarray:
+        return np.asarray(rest + np.einsum("p,pld->ld", values - defaults, basis))
+
+    def residuals(x: np.ndarray) -> np.ndarray:
+        values = x[:P]
+        shape = landmarks(values)
+        out = [(values - defaults) / (PRIOR_SPREAD * spans)]
+        for k, v in enumerate(views):
+            camera = WeakPerspective.from_vector(v, x[P + 6 * k:P + 6 * k + 6])
+            where, pixels = chosen[v]
+            out.append(((camera.project(shape[where]) - pixels) / PIXEL_NOISE).ravel())
+        return np.concatenate(out)
+
+    start = [defaults] + [initial_vector(v, rest[chosen[v][0]], chosen[v][1]) for v in views]
+    x0 = np.concatenate(start)
+    inf = np.full(6 * len(views), np.inf)
+    # cameras alone first (the identity at its default), then everything together
+    fixed = least_squares(lambda c: residuals(np.concatenate([defaults, c])), x0[P:], method="lm")
+    x0 = np.concatenate([defaults, fixed.x])
+    solved = least_squares(residuals, x0, bounds=(np.concatenate([lows, -inf]), np.concatenate([highs, inf])),
+                           x_scale=np.concatenate([spans * 0.1, np.ones(6 * len(views))]))
+    values = np.clip(solved.x[:P], lows, highs)
+    cameras = {v: WeakPerspective.from_vector(v, solved.x[P + 6 * k:P + 6 * k + 6]) for k, v in enumerate(views)}
+    identity = Identity({n: float(val) for n, val, d in zip(FITTED_PARAMETERS, values, defaults, strict=True)
+                         if abs(val - d) > 1e-6})
+    vertices = identity_vertices(identity, base)
+    index = np.array([base.landmarks[k] for k in ids])
+    before = _rms_error(vertices[index], cameras, chosen)
+    moves = _landmark_moves(vertices[index], cameras, chosen, len(ids))
+    warp = residual_warp(base, vertices, vertices[index], moves)
+    after = _rms_error(vertices[index] + warp[index], cameras, chosen)
+    return ShapeFit(identity, cameras, vertices + warp, warp, before, after)
+
+
+def _rms_error(shape: np.ndarray, cameras: Mapping[str, WeakPerspective],
+               chosen: Mapping[str, tuple[np.ndarray, np.ndarray]]) -> float:
+    errors = [np.linalg.norm(cameras[v].project(shape[w]) - px, axis=1) for v, (w, px) in chosen.items()]
+    return float(np.sqrt(np.mean(np.concatenate(errors) ** 2)))
+
+
+def _landmark_moves(shape: np.ndarray, cameras: Mapping[str, WeakPerspective],
+                    chosen: Mapping[str, tuple[np.ndarray, np.ndarray]], count: int) -> np.ndarray:
+    """(L, 3) the smallest 3-D move of each landmark that puts it on its pixel in every view that shows it."""
+    normal = np.zeros((count, 3, 3))
+    right = np.zeros((count, 3))
+    for v, (where, pixels) in chosen.items():
+        camera = cameras[v]
+        J = camera.scale * np.stack([camera.rotation[0], -camera.rotation[1]])      # (2, 3) px per mm
+        r = pixels - camera.project(shape[where])
+        normal[where] += J.T @ J
+        right[where] += r @ J
+    normal += 1e-6 * np.eye(3) * max(float(np.abs(normal).max()), 1.0)
+    return np.asarray(np.linalg.solve(normal, right[..., None])[..., 0])
+
+
+def residual_warp(base: Model, vertices: np.ndarray, centres: np.ndarray, moves: np.ndarray) -> np.ndarray:
+    """(N, 3) a smooth displacement that moves each centre by its move; rigid parts translate as a whole."""
+    gaussian = np.exp(-(np.linalg.norm(centres[:, None] - centres[None], axis=2) / WARP_RADIUS) ** 2)
+    weights = np.linalg.solve(gaussian + 1e-3 * np.eye(len(centres)), moves)
+    field = np.exp(-(np.linalg.norm(vertices[:, None] - centres[None], axis=2) / WARP_RADIUS) ** 2) @ weights
+    for part in RIGID_PARTS:
+        if part in base.parts:
+            inside = base.vertex_part == base.parts.index(part)
+            if inside.any():
+                field[inside] = field[inside].mean(axis=0)
+    return np.asarray(field)

@@ -1,0 +1,120 @@
+"""The photographs projected into the head's shared texture atlas.
+
+Every skin polygon's UV triangle is drawn into the atlas
+(:func:`engine.photofit.raster.rasterize`); each texel's 3-D point on the
+fitted head is projected into each photograph by its camera and sampled
+there. A photograph's weight at a texel is ``max(0, (n · v − g) / (1 − g))²`` (n the
+surface normal, v the direction towards its camera, g = :data:`GRAZING`) where the point is visible (not
+behind the head in that photograph's z-buffer), so the views blend smoothly
+where both see the skin. What no photograph sees fades to the mean colour of
+the skin that was seen. Eyes, teeth and tongue keep their colours.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from engine.model import Model
+from engine.model.cells import cell_sizes, cell_starts
+from engine.model.texture import ModelTexture, TextureImage
+from engine.photofit.camera import WeakPerspective
+from engine.photofit.raster import rasterize, sample_bilinear
+
+ATLAS_SIZE = 1024
+ZBUFFER_SIDE = 600                  # px: the longer side of the visibility buffer
+VISIBLE_SLACK = 2.0                 # mm a texel may lie behind the nearest surface and count as seen
+GRAZING = 0.25                      # n · v below which a photo is not used (its silhouette is unreliable)
+FILL_WEIGHT = 0.04                  # weight of the mean skin colour everywhere (what no photo sees becomes it)
+IMAGE_NAME = "photo"
+
+
+def skin_triangles(model: Model) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Fan triangles of the textured skin polygons: vertex indices (T, 3), corner indices (T, 3), polygon (T,)."""
+    sizes = cell_sizes(model.faces)
+    starts = cell_starts(sizes)
+    skin = model.parts.index("skin") if "skin" in model.parts else 0
+    tri_v, tri_c, tri_f = [], [], []
+    corner = 0
+    for f, (n, s) in enumerate(zip(sizes, starts, strict=True)):
+        verts = model.faces[s + 1:s + 1 + n]
+        if np.all(model.vertex_part[verts] == skin):
+            for k in range(1, n - 1):
+                tri_v.append((verts[0], verts[k], verts[k + 1]))
+                tri_c.append((corner, corner + k, corner + k + 1))
+                tri_f.append(f)
+        corner += n
+    return np.array(tri_v), np.array(tri_c), np.array(tri_f)
+
+
+def all_triangles(model: Model) -> np.ndarray:
+    sizes = cell_sizes(model.faces)
+    starts = cell_starts(sizes)
+    out = [(model.faces[s + 1], model.faces[s + 1 + k], model.faces[s + 2 + k])
+           for n, s in zip(sizes, starts, strict=True) for k in range(n - 2)]
+    return np.array(out)
+
+
+def vertex_normals(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
+    a, b, c = (vertices[triangles[:, k]] for k in range(3))
+    face = np.cross(b - a, c - a)
+    normals = np.zeros_like(vertices)
+    for k in range(3):
+        np.add.at(normals, triangles[:, k], face)
+    return normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-12)
+
+
+def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarray],
+                 cameras: Mapping[str, WeakPerspective], size: int = ATLAS_SIZE) -> tuple[ModelTexture, np.ndarray]:
+    """The model's texture with the photographs in its atlas, and the (size, size) weight the photos had."""
+    assert model.texture is not None, "the head must have texture coordinates"
+    tri_v, tri_c, tri_f = skin_triangles(model)
+    uv = model.texture.corner_uv[tri_c]                                    # (T, 3, 2)
+    in_atlas = np.all((uv >= 0) & (uv <= 1), axis=(1, 2))
+    tri_v, tri_c, tri_f, uv = tri_v[in_atlas], tri_c[in_atlas], tri_f[in_atlas], uv[in_atlas]
+    atlas_xy = np.stack([uv[..., 0] * size, (1 - uv[..., 1]) * size], axis=-1)
+    hit, bary, _ = rasterize(atlas_xy, size, size)
+    covered = hit >= 0
+    t, b = hit[covered], bary[covered]
+    points = np.einsum("nk,nkd->nd", b, vertices[tri_v[t]])
+    normals = vertex_normals(vertices, all_triangles(model))
+    normal = np.einsum("nk,nkd->nd", b, normals[tri_v[t]])
+    normal /= np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-12)
+    total = np.zeros(len(points))
+    colour = np.zeros((len(points), 3))
+    occluders = all_triangles(model)
+    for view, photo in photos.items():
+        camera = cameras[view]
+        weight = np.clip((normal @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
+        weight *= _visible(points, vertices, occluders, camera, photo.shape[:2])
+        colour += weight[:, None] * sample_bilinear(photo, camera.project(points))
+        total += weight
+    seen = total > 0.25
+    mean = (colour[seen].sum(0) / total[seen].sum()) if seen.any() else np.array([200.0, 160.0, 140.0])
+    texels = (colour + FILL_WEIGHT * mean) / (total + FILL_WEIGHT)[:, None]
+    atlas = np.empty((size, size, 3))
+    atlas[:] = mean
+    atlas[covered] = texels
+    weights = np.zeros((size, size))
+    weights[covered] = total
+    face_image = np.full(len(cell_sizes(model.faces)), -1, dtype=np.int64)
+    face_image[np.unique(tri_f)] = 0
+    image = TextureImage(IMAGE_NAME, np.clip(np.round(atlas), 0, 255).astype(np.uint8))
+    return ModelTexture(model.texture.corner_uv.copy(), [image], face_image), weights
+
+
+def _visible(points: np.ndarray, vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective,
+             shape: tuple[int, ...]) -> np.ndarray:
+    """(N,) 1 where a point is the nearest surface in the photograph, else 0 (a coarse z-buffer)."""
+    height, width = shape[0], shape[1]
+    factor = ZBUFFER_SIDE / max(height, width)
+    w, h = max(round(width * factor), 1), max(round(height * factor), 1)
+    projected = camera.project(vertices) * factor
+    depth = camera.depth(vertices)
+    _, _, zbuf = rasterize(projected[triangles], w, h, depth[triangles])
+    xy = camera.project(points) * factor
+    col = np.clip(xy[:, 0].astype(int), 0, w - 1)
+    row = np.clip(xy[:, 1].astype(int), 0, h - 1)
+    inside = (xy[:, 0] >= 0) & (xy[:, 0] < w) & (xy[:, 1] >= 0) & (xy[:, 1] < h)
+    return np.asarray(inside & (camera.depth(points) >= zbuf[row, col] - VISIBLE_SLACK), dtype=float)
