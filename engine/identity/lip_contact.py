@@ -140,15 +140,10 @@ class LipContact:
 
     @staticmethod
     def distance(A: np.ndarray, B: np.ndarray) -> float:
+        """The smallest distance between two outlines of (z, y) segments (inf if one is empty)."""
         if len(A) == 0 or len(B) == 0:
             return float(np.inf)
-
-        def point_to_segments(p: np.ndarray, S: np.ndarray) -> float:
-            a, ab = S[:, 0], S[:, 1] - S[:, 0]
-            t = np.einsum("pij,pij->pi", p[:, None] - a[None], ab[None]) / np.maximum((ab * ab).sum(-1), 1e-12)
-            t = np.clip(t, 0, 1)
-            return float(np.linalg.norm(p[:, None] - (a[None] + t[..., None] * ab[None]), axis=-1).min())
-        return float(min(point_to_segments(A.reshape(-1, 2), B), point_to_segments(B.reshape(-1, 2), A)))
+        return float(np.sqrt(min(_nearest_squared(A.reshape(-1, 2), B), _nearest_squared(B.reshape(-1, 2), A))))
 
     def section_clear(self, P: np.ndarray, x: float, clearance: float) -> bool:
         U, L = self.section(P, x)
@@ -209,6 +204,19 @@ class LipContact:
         for k in range(3):
             np.maximum.at(owed, tri[:, k], (depth * (self.SAMPLES[:, k] > 0)).max(axis=1))
         return owed
+
+
+def _nearest_squared(points: np.ndarray, segments: np.ndarray) -> float:
+    """The smallest squared distance from any of ``points`` to any of ``segments``."""
+    a = segments[:, 0]
+    ab = segments[:, 1] - a
+    apx = points[:, None, 0] - a[None, :, 0]
+    apy = points[:, None, 1] - a[None, :, 1]
+    den = np.maximum(ab[:, 0] * ab[:, 0] + ab[:, 1] * ab[:, 1], 1e-12)
+    t = np.clip((apx * ab[:, 0] + apy * ab[:, 1]) / den, 0.0, 1.0)
+    dx = apx - t * ab[:, 0]
+    dy = apy - t * ab[:, 1]
+    return float((dx * dx + dy * dy).min())
 
 
 def _largest(predicate: Callable[[float], bool], lo: float, hi: float, steps: int = 25) -> float:
