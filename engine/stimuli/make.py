@@ -221,8 +221,9 @@ def _check_video(paths: dict[str, Path], motion: np.ndarray, fps: float, video_s
         return {}
     from engine.outputs.video_probe import read_frames
 
-    frames = read_frames(paths[kind]).astype(np.float32)
-    moving_pixels = np.abs(np.diff(frames, axis=0)).mean(axis=(1, 2, 3))
+    # every other row and column is enough to see where the picture moves, at a quarter of the cost
+    frames = read_frames(paths[kind])[:, ::2, ::2].astype(np.int16)
+    moving_pixels = np.abs(frames[1:] - frames[:-1]).mean(axis=(1, 2, 3))
     moving_values = motion[1:]
     count = min(len(moving_pixels), len(moving_values))
     if count < 3 or not moving_values[:count].any() or not moving_pixels[:count].any():
