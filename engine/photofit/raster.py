@@ -2,8 +2,8 @@
 
 >>> import numpy as np
 >>> hit, bary, _ = rasterize(np.array([[[0, 0], [4, 0], [0, 4.0]]]), 4, 4)
->>> hit.tolist()[0], bool(np.allclose(bary[0, 0], [0.75, 0.125, 0.125]))
-([0, 0, 0, -1], True)
+>>> hit.tolist()[3], bool(np.allclose(bary[0, 0], [0.75, 0.125, 0.125]))
+([0, -1, -1, -1], True)
 """
 
 from __future__ import annotations

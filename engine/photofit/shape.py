@@ -32,6 +32,7 @@ FITTED_PARAMETERS = ("sex", "age", "weight", "head-scale-horiz-decr-incr", "head
 PRIOR_SPREAD = 0.35
 PIXEL_NOISE = 2.0                     # px: the landmark placement error the reprojection residual is scaled by
 WARP_RADIUS = 22.0                    # mm: the Gaussian warp's width
+WARP_SMOOTHING = 0.3                  # ridge on the warp's weights: close landmarks must not fold it
 RIGID_PARTS = ("eye_left", "eye_right", "teeth_upper", "teeth_lower", "tongue")
 
 
@@ -131,7 +132,7 @@ def _landmark_moves(shape: np.ndarray, cameras: Mapping[str, WeakPerspective],
 def residual_warp(base: Model, vertices: np.ndarray, centres: np.ndarray, moves: np.ndarray) -> np.ndarray:
     """(N, 3) a smooth displacement that moves each centre by its move; rigid parts translate as a whole."""
     gaussian = np.exp(-(np.linalg.norm(centres[:, None] - centres[None], axis=2) / WARP_RADIUS) ** 2)
-    weights = np.linalg.solve(gaussian + 1e-3 * np.eye(len(centres)), moves)
+    weights = np.linalg.solve(gaussian + WARP_SMOOTHING * np.eye(len(centres)), moves)
     field = np.exp(-(np.linalg.norm(vertices[:, None] - centres[None], axis=2) / WARP_RADIUS) ** 2) @ weights
     for part in RIGID_PARTS:
         if part in base.parts:
