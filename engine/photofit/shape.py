@@ -28,6 +28,9 @@ FITTED_PARAMETERS = ("sex", "age", "weight", "head-scale-horiz-decr-incr", "head
                      "nose-scale-depth-decr-incr", "mouth-scale-horiz-decr-incr", "mouth-trans-down-up",
                      "eye-trans-down-up", "eye-trans-in-out", "eye-scale-decr-incr", "chin-height-decr-incr",
                      "chin-width-decr-incr", "chin-prominent-decr-incr")
+#: Narrower ranges than the identity space's: the landmark model is linear about the default head (25 years),
+#: which a child's or baby's proportions are too far from; a photograph of a child is not fitted well.
+FIT_RANGES = {"age": (18.0, 90.0)}
 #: How far (as a fraction of each parameter's range) the prior lets a parameter move at one unit of cost.
 PRIOR_SPREAD = 0.35
 PIXEL_NOISE = 2.0                     # px: the landmark placement error the reprojection residual is scaled by
@@ -67,8 +70,8 @@ def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]
     ids = sorted({k for view in points.values() for k in view})
     defaults, _, rest, basis = landmark_basis(base, ids)
     spans = np.array([identity_parameter(n).maximum - identity_parameter(n).minimum for n in FITTED_PARAMETERS])
-    lows = np.array([identity_parameter(n).minimum for n in FITTED_PARAMETERS])
-    highs = np.array([identity_parameter(n).maximum for n in FITTED_PARAMETERS])
+    lows = np.array([FIT_RANGES.get(n, (identity_parameter(n).minimum,))[0] for n in FITTED_PARAMETERS])
+    highs = np.array([FIT_RANGES.get(n, (0.0, identity_parameter(n).maximum))[1] for n in FITTED_PARAMETERS])
     views = [v for v in ("front", "side") if points.get(v)]
     chosen = {v: (np.array([ids.index(k) for k in points[v]]), np.array(list(points[v].values()), dtype=float))
               for v in views}
