@@ -1,8 +1,9 @@
 """POINTS.json: landmarks a user placed on the front (and side) photograph.
 
 The file is ``{"front": {"<MPEG-4 id>": [x, y], ...}, "side": {...}}`` in
-pixels of the photograph as stored (origin at the top left, x right, y
-down). Any subset of the model's landmarks is accepted; the front photograph
+pixels of the photograph at its stored size, turned upright by its EXIF
+orientation as :func:`engine.photofit.photos.read_photo` reads it (origin at
+the top left, x right, y down). Any subset of the model's landmarks is accepted; the front photograph
 needs at least :data:`REQUIRED_FRONT` (pupils, nose tip, mouth corners,
 chin). The side view is optional.
 
