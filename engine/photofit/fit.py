@@ -11,7 +11,9 @@ import numpy as np
 
 from engine.formats.model_files import load_model
 from engine.identity import make_identity_head
+from engine.identity.articulation_refit import refit_articulation
 from engine.identity.carry_over import Similarity, carry_rig_over, similarity
+from engine.identity.rest_fit import keep_fields_off_the_eyes, keep_lids_off_the_eyes, refit_eyelid_angles
 from engine.model import Model
 from engine.photofit.errors import PhotoFitError
 from engine.photofit.photos import read_photo
@@ -41,6 +43,11 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
             inside = head.vertex_part == head.parts.index(part)
             rigid[part] = similarity(head.vertices[inside], moved[inside])
     fitted = carry_rig_over(head, moved, rigid)
+    # the warp moved lips and lids: fit the rig to them again as make_identity_head does for its own shape
+    refit_articulation(base, fitted)
+    refit_eyelid_angles(base, fitted)
+    keep_fields_off_the_eyes(fitted)
+    keep_lids_off_the_eyes(fitted)
     fitted.identity = head.identity
     fitted.name = "person-from-photos"
     fitted.description = f"{base.description} Fitted to photographs ({', '.join(photos)})."
