@@ -16,6 +16,7 @@ from engine.identity.carry_over import Similarity, carry_rig_over, similarity
 from engine.identity.rest_fit import keep_fields_off_the_eyes, keep_lids_off_the_eyes, refit_eyelid_angles
 from engine.model import Model
 from engine.photofit.errors import PhotoFitError
+from engine.photofit.eyes import recolour_irises
 from engine.photofit.photos import read_photo
 from engine.photofit.points import PhotoPoints, read_points
 from engine.photofit.shape import ShapeFit, fit_shape
@@ -54,6 +55,9 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     seconds["shape"] = time.perf_counter() - started
     started = time.perf_counter()
     fitted.texture, _ = bake_texture(fitted, fitted.vertices, photos, shape.cameras)
+    if "front" in photos:
+        fitted.vertex_colors = None if fitted.vertex_colors is None else fitted.vertex_colors.copy()
+        recolour_irises(fitted, photos["front"], dict(points["front"]), shape.cameras["front"].scale)
     fitted.changed()
     seconds["texture"] = time.perf_counter() - started
     return PhotoFit(fitted, shape, seconds)

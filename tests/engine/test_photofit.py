@@ -37,6 +37,7 @@ PHOTO_SIZE = (900, 1200)               # width, height: the head about 700 px ta
 NOISE_PX = 2.0
 TRUE_IDENTITY = {"sex": 0.8, "age": 40, "nose-scale-horiz-decr-incr": 0.5, "mouth-scale-horiz-decr-incr": -0.4,
                  "chin-height-decr-incr": 0.5, "eye-trans-down-up": -0.3}
+TRUE_IRIS = np.array([125, 78, 38])   # brown: the default head's irises are blue-grey
 FACE_RADIUS = 25.0                     # mm: "the face" is the skin within this distance of a landmark
 
 
@@ -64,6 +65,8 @@ def synthetic():
     face_image = np.full(len(cell_sizes(truth.faces)), -1)
     face_image[np.unique(polygons)] = 0
     truth.texture = ModelTexture(truth.texture.corner_uv, [TextureImage("pattern", pattern())], face_image)
+    truth.vertex_colors = truth.vertex_colors.copy()
+    truth.vertex_colors[np.all(truth.vertex_colors == iris_colour_of(truth), axis=1)] = TRUE_IRIS
     rng = np.random.default_rng(19)
     photos, points = {}, {}
     for view in ("front", "side"):
@@ -88,6 +91,11 @@ def two_views(synthetic):
 def front_only(synthetic):
     _, photos, points, _ = synthetic
     return fit_photos({"front": photos["front"]}, {"front": points["front"]})
+
+
+def iris_colour_of(head, part="eye_left"):
+    colours = np.unique(head.vertex_colors[head.vertex_part == head.parts.index(part)], axis=0)
+    return colours[np.argsort(colours.astype(float).sum(axis=1))[1]]
 
 
 def shape_error_mm(head, truth, face):
@@ -161,6 +169,14 @@ def test_fitted_head_is_textured_and_animates(two_views):
     assert np.abs(opened - head.vertices)[skin].max() > 3.0         # the jaw still opens the mouth
     picture = render_model(head, {"jaw_open": 0.6}, size=(160, 200))
     assert picture.std() > 10
+
+
+def test_iris_colour_is_read_from_the_photograph(two_views):
+    default = iris_colour_of(load_model()).astype(float)
+    for part in ("eye_left", "eye_right"):
+        fitted = iris_colour_of(two_views.head, part).astype(float)
+        print(part, fitted, "true", TRUE_IRIS, "default", default)
+        assert np.linalg.norm(fitted - TRUE_IRIS) < 0.5 * np.linalg.norm(default - TRUE_IRIS)
 
 
 def test_fit_photos_verb_writes_a_textured_person(synthetic, tmp_path):
