@@ -54,7 +54,8 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     fitted.description = f"{base.description} Fitted to photographs ({', '.join(photos)})."
     seconds["shape"] = time.perf_counter() - started
     started = time.perf_counter()
-    fitted.texture, _ = bake_texture(fitted, fitted.vertices, photos, shape.cameras)
+    fitted.texture, _ = bake_texture(fitted, fitted.vertices, {v: p for v, p in photos.items() if v in shape.cameras},
+                                     shape.cameras)
     if "front" in photos:
         fitted.vertex_colors = None if fitted.vertex_colors is None else fitted.vertex_colors.copy()
         recolour_irises(fitted, photos["front"], dict(points["front"]), shape.cameras["front"].scale)
@@ -71,6 +72,9 @@ def fit_photo_files(front: str | Path, side: str | Path | None, landmarks: str |
     photos = {"front": read_photo(front)}
     if side is not None:
         photos["side"] = read_photo(side)
+    if side is not None and not points.get("side"):
+        raise PhotoFitError("a --side photograph needs landmarks of its own: the landmark file has no 'side' "
+                            "points", file=landmarks)
     if "side" in points and side is None:
         raise PhotoFitError("the landmark file has a 'side' view but no --side photograph was given", file=landmarks)
     for view, photo in photos.items():

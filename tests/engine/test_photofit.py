@@ -11,6 +11,7 @@ back into the atlas.
 from __future__ import annotations
 
 import json
+from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -240,6 +241,7 @@ def test_bad_inputs_end_with_status_2(tmp_path):
         (("--front", tmp_path / "missing.jpg", "--landmarks", points), "cannot read"),
         (("--front", photo, "--landmarks", outside), "outside the 300×400"),
         (("--front", photo, "--landmarks", with_side), "no --side photograph"),
+        (("--front", photo, "--side", photo, "--landmarks", points), "no 'side' points"),
         (("--front", photo, "--landmarks", tmp_path / "none.json"), "cannot read the landmark file"),
     ]
     for args, words in cases:
@@ -275,5 +277,9 @@ PLAUSIBLE = st.dictionaries(st.sampled_from(["front", "side", "back"]), st.dicti
 def test_fuzz_points_reader(tmp_path_factory, text):
     path = tmp_path_factory.mktemp("fuzz") / "points.json"
     path.write_text(text, encoding="utf-8")
-    known = set(load_model().landmarks)
-    expect_clean(lambda: read_points(path, known), PhotoFitError, str(path))
+    expect_clean(lambda: read_points(path, model_landmarks()), PhotoFitError, str(path))
+
+
+@cache
+def model_landmarks():
+    return frozenset(load_model().landmarks)
