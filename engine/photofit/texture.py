@@ -28,6 +28,7 @@ VISIBLE_SLACK = 2.0                 # mm a texel may lie behind the nearest surf
 GRAZING = 0.25                      # n · v below which a photo is not used (its silhouette is unreliable)
 FILL_WEIGHT = 0.04                  # weight of the mean skin colour everywhere (what no photo sees becomes it)
 IMAGE_NAME = "photo"
+ISLAND_PADDING = 4                  # texels each UV island's colours are grown outwards (no seams when filtered)
 
 
 def skin_triangles(model: Model) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -96,12 +97,28 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     atlas = np.empty((size, size, 3))
     atlas[:] = mean
     atlas[covered] = texels
+    pad_islands(atlas, covered)
     weights = np.zeros((size, size))
     weights[covered] = total
     face_image = np.full(len(cell_sizes(model.faces)), -1, dtype=np.int64)
     face_image[np.unique(tri_f)] = 0
     image = TextureImage(IMAGE_NAME, np.clip(np.round(atlas), 0, 255).astype(np.uint8))
     return ModelTexture(model.texture.corner_uv.copy(), [image], face_image), weights
+
+
+def pad_islands(atlas: np.ndarray, covered: np.ndarray, texels: int = ISLAND_PADDING) -> None:
+    """Grow each UV island's colours ``texels`` outwards, so filtering across its edge shows no seam."""
+    filled = covered.copy()
+    for _ in range(texels):
+        total = np.zeros(atlas.shape)
+        count = np.zeros(filled.shape)
+        for dy, dx in ((0, 1), (0, -1), (1, 0), (-1, 0)):
+            shifted = np.roll(filled, (dy, dx), axis=(0, 1))
+            total += np.roll(atlas * filled[..., None], (dy, dx), axis=(0, 1))
+            count += shifted
+        grow = ~filled & (count > 0)
+        atlas[grow] = total[grow] / count[grow][:, None]
+        filled |= grow
 
 
 def _visible(points: np.ndarray, vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective,
