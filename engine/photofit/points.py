@@ -9,12 +9,13 @@ chin). The side view is optional.
 
 >>> import json, tempfile, os
 >>> path = os.path.join(tempfile.mkdtemp(), "p.json")
->>> front = {k: [100.0 + i, 50.0] for i, k in enumerate(REQUIRED_FRONT)}
+>>> front = {"3.5": [120, 50], "3.6": [80, 50], "9.3": [100, 80], "8.3": [115, 95], "8.4": [85, 95],
+...          "2.1": [100, 130]}
 >>> with open(path, "w") as f:
 ...     json.dump({"front": front}, f)
 >>> points = read_points(path, known={*REQUIRED_FRONT, "2.2"})
 >>> sorted(points), points["front"]["9.3"]
-(['front'], (102.0, 50.0))
+(['front'], (100.0, 80.0))
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ REQUIRED_FRONT = ("3.5", "3.6", "9.3", "8.3", "8.4", "2.1")
 VIEWS = ("front", "side")
 MAX_FILE_BYTES = 1 << 20
 MAX_COORDINATE = 1e6
+MIN_PUPIL_DISTANCE = 8.0               # px: closer pupils leave too few pixels to fit a face to
 
 PhotoPoints = dict[str, dict[str, tuple[float, float]]]
 
@@ -88,9 +90,26 @@ def parse_points(data: object, known: Collection[str], path: str | Path) -> Phot
     if missing:
         raise PhotoFitError(f"the front view needs landmarks {', '.join(missing)} (pupils 3.5 3.6, nose tip 9.3, "
                             "mouth corners 8.3 8.4, chin 2.1)", file=path)
+    _check_front_layout(out["front"], path)
     if "side" in out and 0 < len(out["side"]) < 3:
         raise PhotoFitError("the side view needs at least 3 landmarks (or leave it out)", file=path)
     return out
+
+
+def _check_front_layout(front: dict[str, tuple[float, float]], path: str | Path) -> None:
+    """Refuse a front view no upright face gives: swapped sides, the chin above the eyes, points on one spot."""
+    (lx, ly), (rx, ry) = front["3.5"], front["3.6"]
+    eyes = math.hypot(lx - rx, ly - ry)
+    if eyes < MIN_PUPIL_DISTANCE:
+        raise PhotoFitError(f"the pupils 3.5 and 3.6 are {eyes:.3g} px apart in the front view; at least "
+                            f"{MIN_PUPIL_DISTANCE} px are needed", file=path)
+    if lx <= rx:
+        raise PhotoFitError("in the front view 3.5 (the subject's LEFT pupil) must be right of 3.6, as the "
+                            "photograph shows them; are they swapped?", file=path)
+    eye_y = (ly + ry) / 2
+    if not (eye_y < front["9.3"][1] < front["2.1"][1]):
+        raise PhotoFitError("in the front view the nose tip 9.3 must lie below the pupils and the chin 2.1 "
+                            "below the nose tip (y grows downwards)", file=path)
 
 
 def _refuse_constant(name: str) -> float:

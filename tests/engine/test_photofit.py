@@ -201,7 +201,8 @@ def write_points(path: Path, data) -> Path:
 
 
 def good_front():
-    return {k: [400.0 + 10 * i, 500.0] for i, k in enumerate(REQUIRED_FRONT)}
+    return {"3.5": [180.0, 150.0], "3.6": [120.0, 150.0], "9.3": [150.0, 200.0], "8.3": [175.0, 230.0],
+            "8.4": [125.0, 230.0], "2.1": [150.0, 290.0]}
 
 
 @pytest.mark.parametrize(("data", "words"), [
@@ -217,6 +218,9 @@ def good_front():
     ({"front": {**good_front(), "9.3": [1e300, 2]}}, "finite"),
     ({"front": {k: v for k, v in good_front().items() if k != "2.1"}}, "needs landmarks 2.1"),
     ({"front": good_front(), "side": {"9.3": [1, 2]}}, "at least 3"),
+    ({"front": {k: [100, 100] for k in REQUIRED_FRONT}}, "px apart"),
+    ({"front": {**good_front(), "3.5": [120.0, 150.0], "3.6": [180.0, 150.0]}}, "are they swapped"),
+    ({"front": {**good_front(), "2.1": [150.0, 100.0]}}, "below the nose tip"),
 ])
 def test_bad_points_are_refused_with_one_line(tmp_path, data, words):
     path = write_points(tmp_path / "points.json", data)
@@ -232,7 +236,7 @@ def test_bad_inputs_end_with_status_2(tmp_path):
     Image.fromarray(np.zeros((40, 30, 3), dtype=np.uint8)).save(gif)
     text = write_points(tmp_path / "notes.jpg", "not a picture")
     points = write_points(tmp_path / "points.json", {"front": good_front()})
-    outside = write_points(tmp_path / "outside.json", {"front": {**good_front(), "2.1": [5000, 10]}})
+    outside = write_points(tmp_path / "outside.json", {"front": {**good_front(), "2.1": [150, 5000]}})
     with_side = write_points(tmp_path / "side.json", {"front": good_front(), "side": good_front()})
     out = tmp_path / "p.xml"
     cases = [
