@@ -287,3 +287,23 @@ def test_fuzz_points_reader(tmp_path_factory, text):
 @cache
 def model_landmarks():
     return frozenset(load_model().landmarks)
+
+
+@pytest.mark.parametrize("mode", ["L", "RGBA", "P", "CMYK"])
+def test_photographs_of_any_mode_are_read_as_rgb(tmp_path, mode):
+    image = Image.fromarray(np.tile(np.arange(0, 250, 10, dtype=np.uint8)[None, :, None], (8, 1, 3))).convert(mode)
+    path = tmp_path / ("p.jpg" if mode in ("L", "CMYK") else "p.png")
+    image.save(path)
+    pixels = read_photo(path)
+    assert pixels.shape == (8, 25, 3) and pixels.dtype == np.uint8
+    assert pixels[:, -1].mean() > pixels[:, 0].mean() + 150
+
+
+def test_a_truncated_jpeg_is_refused_in_one_line(tmp_path):
+    whole = tmp_path / "whole.jpg"
+    Image.fromarray((np.random.default_rng(0).random((300, 200, 3)) * 255).astype(np.uint8)).save(whole)
+    cut = tmp_path / "cut.jpg"
+    cut.write_bytes(whole.read_bytes()[:2000])
+    with pytest.raises(PhotoFitError) as caught:
+        read_photo(cut)
+    assert str(caught.value).startswith(str(cut))
