@@ -35,7 +35,7 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     base = base if base is not None else load_model()
     seconds: dict[str, float] = {"landmarks": 0.0}
     started = time.perf_counter()
-    shape = fit_shape(base, {v: p for v, p in points.items() if v in photos})
+    shape = fit_shape(base, {v: p for v, p in points.items() if v in photos}, photos.get("side"))
     head = make_identity_head(shape.identity, base) if shape.identity.values else base.copy()
     moved = head.vertices + shape.warp
     rigid: dict[str, Similarity] = {}

@@ -21,6 +21,7 @@ from scipy.optimize import least_squares
 from engine.identity import Identity, identity_parameter, identity_vertices
 from engine.model import Model
 from engine.photofit.camera import WeakPerspective, initial_vector
+from engine.photofit.silhouette import foreground, profile_moves, profile_vertices
 
 #: The identity parameters fitted, and the step used to sample each one's effect.
 FITTED_PARAMETERS = ("sex", "age", "weight", "head-scale-horiz-decr-incr", "head-scale-vert-decr-incr",
@@ -65,8 +66,13 @@ def landmark_basis(base: Model, ids: list[str]) -> tuple[np.ndarray, np.ndarray,
     return np.array(defaults), np.array(steps), rest, np.array(basis)
 
 
-def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]]]) -> ShapeFit:
-    """Fit ``base`` (the default head) to the landmarks of each view (view → id → pixel)."""
+def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]]],
+              side_photo: np.ndarray | None = None) -> ShapeFit:
+    """Fit ``base`` (the default head) to the landmarks of each view (view → id → pixel).
+
+    With ``side_photo`` on a plain background, the warp also puts the face's midline profile on the
+    photograph's silhouette (:mod:`engine.photofit.silhouette`).
+    """
     ids = sorted({k for view in points.values() for k in view})
     defaults, _, rest, basis = landmark_basis(base, ids)
     spans = np.array([identity_parameter(n).maximum - identity_parameter(n).minimum for n in FITTED_PARAMETERS])
@@ -107,8 +113,27 @@ def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]
     before = _rms_error(vertices[index], cameras, chosen)
     moves = _landmark_moves(vertices[index], cameras, chosen, len(ids))
     warp = residual_warp(base, vertices, vertices[index], moves)
+    if side_photo is not None and "side" in cameras:
+        warp = _with_profile(base, vertices, warp, vertices[index], moves, side_photo, cameras["side"])
     after = _rms_error(vertices[index] + warp[index], cameras, chosen)
     return ShapeFit(identity, cameras, vertices + warp, warp, before, after)
+
+
+def _with_profile(base: Model, vertices: np.ndarray, warp: np.ndarray, centres: np.ndarray, moves: np.ndarray,
+                  photo: np.ndarray, camera: WeakPerspective) -> np.ndarray:
+    """The warp again, with the midline profile's moves onto the side photograph's silhouette added."""
+    mask = foreground(photo)
+    if mask is None:
+        return warp
+    profile = profile_vertices(base, vertices + warp)
+    near_landmark = np.linalg.norm(vertices[profile][:, None] - centres[None], axis=2).min(axis=1) < 4.0
+    profile = profile[~near_landmark]
+    trusted, extra = profile_moves(mask, camera, (vertices + warp)[profile])
+    if trusted.sum() < 3:
+        return warp
+    profile = profile[trusted]
+    return residual_warp(base, vertices, np.concatenate([centres, vertices[profile]]),
+                         np.concatenate([moves, warp[profile] + extra[trusted]]))
 
 
 def _rms_error(shape: np.ndarray, cameras: Mapping[str, WeakPerspective],

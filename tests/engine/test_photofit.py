@@ -30,6 +30,8 @@ from engine.outputs.render import render_model
 from engine.photofit import PhotoFitError, fit_photos, read_photo, read_points
 from engine.photofit.points import REQUIRED_FRONT
 from engine.photofit.raster import rasterize, sample_bilinear
+from engine.photofit.shape import fit_shape
+from engine.photofit.silhouette import foreground, profile_moves, profile_vertices
 from engine.photofit.texture import skin_triangles
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.fuzz_support import FUZZ, expect_clean
@@ -170,6 +172,27 @@ def test_fitted_head_is_textured_and_animates(two_views):
     assert np.abs(opened - head.vertices)[skin].max() > 3.0         # the jaw still opens the mouth
     picture = render_model(head, {"jaw_open": 0.6}, size=(160, 200))
     assert picture.std() > 10
+
+
+def test_the_profile_meets_the_side_silhouette(synthetic):
+    _, photos, points, _ = synthetic
+    base = load_model()
+    mask = foreground(photos["side"])
+    assert mask is not None, "the renderer's backdrop counts as plain"
+    gaps = {}
+    for label, side_photo in (("landmarks", None), ("silhouette", photos["side"])):
+        fit = fit_shape(base, points, side_photo)
+        profile = profile_vertices(base, fit.vertices)
+        trusted, moves = profile_moves(mask, fit.cameras["side"], fit.vertices[profile])
+        gaps[label] = float(np.linalg.norm(moves[trusted], axis=1).mean() * fit.cameras["side"].scale)
+        assert trusted.sum() > 20
+    print(f"profile to silhouette, mean px: {gaps}")
+    assert gaps["silhouette"] < 0.6 * gaps["landmarks"]
+
+
+def test_a_busy_background_gives_no_silhouette():
+    noise = (np.random.default_rng(3).random((200, 150, 3)) * 255).astype(np.uint8)
+    assert foreground(noise) is None
 
 
 def test_iris_colour_is_read_from_the_photograph(two_views):
