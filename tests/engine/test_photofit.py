@@ -291,7 +291,7 @@ def test_exif_orientation_is_honoured(tmp_path):
 
 JSON_VALUES = st.recursive(
     st.none() | st.booleans() | st.integers(-10**9, 10**9) | st.floats() | st.text(max_size=8),
-    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=6), inner, max_size=4),
+    lambda inner: st.one_of(st.lists(inner, max_size=4), st.dictionaries(st.text(max_size=6), inner, max_size=4)),
     max_leaves=20)
 LANDMARK_IDS = st.sampled_from([*REQUIRED_FRONT, "2.2", "9.1", "nose", "", "3.5 "])
 PLAUSIBLE = st.dictionaries(st.sampled_from(["front", "side", "back"]), st.dictionaries(
