@@ -15,6 +15,7 @@ up against (or through) the upper lip, or grow the eyeball into the lids.
 from __future__ import annotations
 
 import itertools
+from collections.abc import Iterator
 
 import numpy as np
 
@@ -95,6 +96,13 @@ def _mouth_bag(model: Model) -> tuple[np.ndarray, np.ndarray]:
         _BAGS.clear()
         _BAGS[key] = oral_cavity(model.vertices, model.polygons(), is_skin, model.landmarks["2.2"])
     return _BAGS[key]
+
+
+def eyeballs(model: Model) -> Iterator[tuple[str, np.ndarray, np.ndarray]]:
+    """(side, the eyeball's vertices, its centre) for each eyeball the model has."""
+    for side in ("left", "right"):
+        if f"eye_{side}" in model.parts:
+            yield side, model.part_vertices(f"eye_{side}"), eye_centre(model, side)
 
 
 def eye_centre(model: Model, side: str) -> np.ndarray:
@@ -192,12 +200,7 @@ def _opening(model: Model, name: str, upper: str, lower: str) -> float:
 
 def keep_fields_off_the_eyes(head: Model) -> None:
     """Where a displacement field would carry lid skin in front of an eyeball into it, stop it at the surface."""
-    for side in ("left", "right"):
-        part = f"eye_{side}"
-        if part not in head.parts:
-            continue
-        eye = head.part_vertices(part)
-        centre = eye_centre(head, side)
+    for _side, eye, centre in eyeballs(head):
         radius = np.linalg.norm(head.vertices[eye] - centre, axis=1).max()
         for p in head.parameters:
             region = head.regions[p.name]
@@ -234,12 +237,7 @@ def keep_lids_off_the_eyes(head: Model, largest_combination: int = 3, rounds: in
     members'. Skin that a smaller eyeball leaves outside is checked again.
     On the default head these poses enter at most 0.04 mm.
     """
-    for side in ("left", "right"):
-        part = f"eye_{side}"
-        if part not in head.parts:
-            continue
-        eye = head.part_vertices(part)
-        centre = eye_centre(head, side)
+    for side, eye, centre in eyeballs(head):
         lid_parts = [head.parts.index(p) for p in ("skin", f"eyelashes_{side}") if p in head.parts]
         lids = np.flatnonzero(np.isin(head.vertex_part, lid_parts))
         lids = lids[head.vertices[lids, 2] > centre[2] + FRONT_MM]
