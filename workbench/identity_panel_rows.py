@@ -28,7 +28,7 @@ from PySide6.QtWidgets import (
 )
 
 from .icons import icon
-from .parameter_slider import slider_step
+from .parameter_slider import SliderScale
 
 if TYPE_CHECKING:
     from engine.identity import IdentityParameter
@@ -82,8 +82,8 @@ class IdentitySlider:
         tip = f"{parameter.name}: {parameter.description}" if parameter.description else parameter.name
         self.label = QLabel(short_label(parameter))
         self.label.setToolTip(tip)
-        self.step, self.decimals = slider_step(parameter.maximum - parameter.minimum)
-        self.steps = max(1, round((parameter.maximum - parameter.minimum) / self.step))
+        self.scale = SliderScale(parameter.minimum, parameter.maximum)
+        self.step, self.decimals, self.steps = self.scale.step, self.scale.decimals, self.scale.steps
         self.slider = WheelSafeSlider(Qt.Orientation.Horizontal)
         self.slider.setFocusPolicy(Qt.FocusPolicy.StrongFocus)      # a click or Tab gives it the wheel
         self.slider.setObjectName(f"identity:{parameter.name}")
@@ -124,15 +124,10 @@ class IdentitySlider:
     # -- value <-> slider position -----------------------------------------------------------
     def value_at(self, position: int) -> float:
         """The value at slider ``position``; the ends are exact."""
-        p = self.parameter
-        if position <= 0:
-            return p.minimum
-        if position >= self.steps:
-            return p.maximum
-        return min(max(round(p.minimum + position * self.step, self.decimals), p.minimum), p.maximum)
+        return self.scale.value_at(position)
 
     def position_of(self, value: float) -> int:
-        return min(max(round((value - self.parameter.minimum) / self.step), 0), self.steps)
+        return self.scale.position_of(value)
 
     def value(self) -> float:
         """The value the row shows (exact: a default of 1/3 reads 1/3, not the slider's 0.333)."""

@@ -46,8 +46,8 @@ class ParameterSlider(QWidget):
             font.setBold(True)
             self.label.setFont(font)
 
-        self.step, self.decimals = slider_step(parameter.maximum - parameter.minimum)
-        self.steps = max(1, round((parameter.maximum - parameter.minimum) / self.step))
+        self.scale = SliderScale(parameter.minimum, parameter.maximum)
+        self.step, self.decimals, self.steps = self.scale.step, self.scale.decimals, self.scale.steps
         self.slider = QSlider(Qt.Orientation.Horizontal)
         self.slider.setRange(0, self.steps)
         self.slider.setSingleStep(max(1, self.steps // 100))
@@ -83,16 +83,11 @@ class ParameterSlider(QWidget):
     # -- value <-> slider position -----------------------------------------
     def value_at(self, position: int) -> float:
         """The parameter value at slider ``position`` (0 … :attr:`steps`); the ends are exact."""
-        p = self.parameter
-        if position <= 0:
-            return p.minimum
-        if position >= self.steps:
-            return p.maximum
-        return min(max(round(p.minimum + position * self.step, self.decimals), p.minimum), p.maximum)
+        return self.scale.value_at(position)
 
     def position_of(self, value: float) -> int:
         """The slider position nearest to ``value``."""
-        return min(max(round((value - self.parameter.minimum) / self.step), 0), self.steps)
+        return self.scale.position_of(value)
 
     def set_column_widths(self, label: int, spin: int) -> None:
         """Align this row with its siblings (the panel passes the widest label and spin box)."""
@@ -123,6 +118,32 @@ class ParameterSlider(QWidget):
             self.slider.setValue(self.position_of(value))
             self.spin.setValue(value)
         self.reset_button.setEnabled(value != self.parameter.default)
+
+
+class SliderScale:
+    """Integer slider positions 0 … ``steps`` for values ``minimum`` … ``maximum`` in round steps.
+
+    >>> scale = SliderScale(-0.5, 1.0)
+    >>> scale.steps, scale.value_at(0), scale.value_at(scale.steps), scale.position_of(0.25)
+    (1500, -0.5, 1.0, 750)
+    """
+
+    def __init__(self, minimum: float, maximum: float) -> None:
+        self.minimum, self.maximum = minimum, maximum
+        self.step, self.decimals = slider_step(maximum - minimum)
+        self.steps = max(1, round((maximum - minimum) / self.step))
+
+    def value_at(self, position: int) -> float:
+        """The value at ``position``; the ends are exact."""
+        if position <= 0:
+            return self.minimum
+        if position >= self.steps:
+            return self.maximum
+        return min(max(round(self.minimum + position * self.step, self.decimals), self.minimum), self.maximum)
+
+    def position_of(self, value: float) -> int:
+        """The position nearest to ``value``."""
+        return min(max(round((value - self.minimum) / self.step), 0), self.steps)
 
 
 def slider_step(span: float) -> tuple[float, int]:
