@@ -131,13 +131,9 @@ class LiveClient:
         """Wait for the reply that carries ``request_id``; events that come first are kept for :meth:`events`."""
         deadline = time.monotonic() + self.timeout
         while True:
-            message = self._receive(deadline)
-            if "event" in message:
-                self._events.append(message)
-            elif message.get("id") == request_id:
-                return message
-            else:
-                raise LiveError(f"a reply to another request came first: {message}")
+            reply = _sort(self._receive(deadline), request_id, self._events)
+            if reply is not None:
+                return reply
 
     def say(self, text: str, voice: str | None = None, at: float | None = None) -> str:
         """Speak ``text`` (inline commands allowed); returns the request id its events carry."""
@@ -245,13 +241,9 @@ class AsyncLiveClient:
 
     async def reply_to(self, request_id: object) -> dict[str, Any]:
         while True:
-            message = await self._receive()
-            if "event" in message:
-                self._events.append(message)
-            elif message.get("id") == request_id:
-                return message
-            else:
-                raise LiveError(f"a reply to another request came first: {message}")
+            reply = _sort(await self._receive(), request_id, self._events)
+            if reply is not None:
+                return reply
 
     async def say(self, text: str, voice: str | None = None, at: float | None = None) -> str:
         fields: dict[str, Any] = {"text": text}
@@ -307,3 +299,13 @@ def _message(text: str | bytes) -> dict[str, Any]:
     if not isinstance(message, dict):
         raise LiveError(f"not a protocol message: {text!r}")
     return message
+
+
+def _sort(message: dict[str, Any], request_id: object, events: deque[dict[str, Any]]) -> dict[str, Any] | None:
+    """``message`` if it is the reply to ``request_id``; an event is kept in ``events`` (None); else an error."""
+    if "event" in message:
+        events.append(message)
+        return None
+    if message.get("id") == request_id:
+        return message
+    raise LiveError(f"a reply to another request came first: {message}")
