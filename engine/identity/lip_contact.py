@@ -245,6 +245,11 @@ class LipContactError(RuntimeError):
     """No field of the searched family keeps the lips apart (a face whose lips cross at rest)."""
 
 
+def _lowering_needed(holds: Callable[[float], bool]) -> float:
+    """How far a section's lower lip must come down (0 … 3 mm) for ``holds`` to hold."""
+    return _smallest(lambda s: holds(-s), 0.0, 3.0)
+
+
 def smooth_nodes(values: Sequence[float] | np.ndarray, passes: int = 1) -> np.ndarray:
     """[1 2 1]/4 smoothing of values on nodes x = 0, h, 2h, … (mirrored at 0, flat at the end)."""
     v = np.asarray(values, dtype=float)
@@ -255,9 +260,16 @@ def smooth_nodes(values: Sequence[float] | np.ndarray, passes: int = 1) -> np.nd
 
 
 def fit_closure(contact: LipContact, region: np.ndarray, forward: float, clearance: float, nodes: int = 25,
-                iterations: int = 4, steps: int = 25) -> tuple[np.ndarray, np.ndarray]:
+                iterations: int = 4, steps: int = 25, local_rounds: int = 0) -> tuple[np.ndarray, np.ndarray]:
     """The lower-lip closure field: ``region · (0, lift(|x|), forward)``, ``lift`` fitted section by
-    section so that the lower lip just meets the upper lip (``clearance`` apart, never crossing)."""
+    section so that the lower lip just meets the upper lip (``clearance`` apart, never crossing).
+
+    Between the nodes a section can need less lift than the nodes around it
+    (where the lift changes fast, near lips that already touch at rest). The
+    default head's derivation lowers the whole closure by one common shift for
+    it; ``local_rounds`` > 0 first lowers only the two nodes around each such
+    section, for up to that many rounds, so the rest of the mouth still closes.
+    """
     rest = contact.rest
     xs = np.linspace(0, contact.span * contact.half_width(rest), nodes)
     x_abs = np.abs(rest[:, 0])
@@ -294,6 +306,19 @@ def fit_closure(contact: LipContact, region: np.ndarray, forward: float, clearan
         P = rest + field(lift)
         extra = [_largest(clears(P, x + 1e-4), -6.0, 6.0, steps) for x in xs]
         lift = lift + smooth_nodes(extra)
+    spacing = xs[1] - xs[0] if nodes > 1 else 1.0
+    for _ in range(local_rounds):
+        P = rest + field(lift)
+        section_xs = np.linspace(0.0, contact.span, (CHECK_SECTIONS + 1) // 2) * contact.half_width(P) + 1e-4
+        lowered = np.zeros(nodes)
+        for x in section_xs:
+            need = max(_lowering_needed(clears(P, sign * x)) for sign in (1, -1))
+            k = min(int(x / spacing), nodes - 1)
+            lowered[k] = max(lowered[k], need)
+            lowered[min(k + 1, nodes - 1)] = max(lowered[min(k + 1, nodes - 1)], need)
+        if not lowered.any():
+            break
+        lift = lift - lowered
     # one common downward shift, if needed, so that the sections between the nodes clear as well
     # (the shift lowers the region as a lift of −s does: each checked section is cut once)
     P = rest + field(lift)
