@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import time
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -30,12 +30,24 @@ class PhotoFit:
     seconds: dict[str, float] = field(default_factory=dict)     # landmarks, shape, texture
 
 
-def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Model | None = None) -> PhotoFit:
-    """Fit the default head to ``photos`` (view → RGB pixels) and their landmarks (view → id → pixel)."""
+#: The steps :func:`fit_photos` reports to its ``progress`` callback, in order.
+FIT_STEPS = ("shape", "head", "rig", "texture", "eyes")
+
+
+def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Model | None = None, *,
+               progress: Callable[[str], object] | None = None) -> PhotoFit:
+    """Fit the default head to ``photos`` (view → RGB pixels) and their landmarks (view → id → pixel).
+
+    ``progress(step)`` is called as each of :data:`FIT_STEPS` begins; an exception it raises stops the
+    fit there (how the workbench cancels one) and propagates.
+    """
+    report = progress if progress is not None else (lambda _step: None)
     base = base if base is not None else load_model()
     seconds: dict[str, float] = {"landmarks": 0.0}
     started = time.perf_counter()
+    report("shape")
     shape = fit_shape(base, {v: p for v, p in points.items() if v in photos}, photos.get("side"))
+    report("head")
     head = make_identity_head(shape.identity, base) if shape.identity.values else base.copy()
     moved = head.vertices + shape.warp
     rigid: dict[str, Similarity] = {}
@@ -43,6 +55,7 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
         if part in head.parts:
             inside = head.vertex_part == head.parts.index(part)
             rigid[part] = similarity(head.vertices[inside], moved[inside])
+    report("rig")
     fitted = carry_rig_over(head, moved, rigid)
     # the warp moved lips and lids: fit the rig to them again as make_identity_head does for its own shape
     refit_articulation(base, fitted)
@@ -54,8 +67,10 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     fitted.description = f"{base.description} Fitted to photographs ({', '.join(photos)})."
     seconds["shape"] = time.perf_counter() - started
     started = time.perf_counter()
+    report("texture")
     fitted.texture, _ = bake_texture(fitted, fitted.vertices, {v: p for v, p in photos.items() if v in shape.cameras},
                                      shape.cameras)
+    report("eyes")
     if "front" in photos:
         fitted.vertex_colors = None if fitted.vertex_colors is None else fitted.vertex_colors.copy()
         recolour_irises(fitted, photos["front"], dict(points["front"]), shape.cameras["front"].scale)
