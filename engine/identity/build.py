@@ -23,6 +23,7 @@ from engine.identity.rest_fit import (
     keep_lids_off_the_eyes,
     keep_mouth_bag_inside,
     keep_rest_lip_gap,
+    line_fields_with_the_skin,
     refit_eyelid_angles,
 )
 from engine.identity.targets import IdentityTargets, shipped_targets
@@ -100,6 +101,7 @@ def make_identity_head(identity: Identity, base: Model | None = None) -> Model:
     D, rigid = identity_vertex_displacement(base, identity)
     head = carry_rig_over(base, base.vertices + D, rigid)
     if identity != Identity():
+        line_fields_with_the_skin(base, head)
         refit_articulation(base, head)
         refit_eyelid_angles(base, head)
         keep_fields_off_the_eyes(head)

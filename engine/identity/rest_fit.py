@@ -21,7 +21,7 @@ import numpy as np
 
 from engine.identity.carry_over import Similarity
 from engine.identity.lip_contact import LipContact
-from engine.model import Model
+from engine.model import InfluenceRegion, Model
 
 FRONT_MM = 3.0       # lid vertices more than this far in front of the eye's centre
 NEAR_MM = 4.0        # … and at most this far outside the eyeball at rest
@@ -82,6 +82,50 @@ def keep_mouth_bag_inside(base: Model, D: np.ndarray, neighbours: int = 8, behin
     D = D.copy()
     D[bag] = np.einsum("mk,mkd->md", w / w.sum(axis=1, keepdims=True), D[outside[near]])
     return D
+
+
+# Fields that pull the lips' corners or the cheeks off the lining (a smile, a sneer). The lip-contact
+# fields (the articulation's, AU17/23/24) shape the lips' inner faces themselves and are left alone.
+LINED_FIELDS = ("AU9_left_nose", "AU9_right_nose", "AU12_left", "AU12_right")
+
+
+def line_fields_with_the_skin(base: Model, head: Model, neighbours: int = 8, behind_mm: float = 1.0,
+                              names: tuple[str, ...] = LINED_FIELDS) -> None:
+    """``head``'s blendshape fields with the mouth's lining moving as the face skin nearest it does (in place).
+
+    A carried-over field moves the lining as it moved the default head's,
+    but an identity's lining sits elsewhere behind its corners; a smile
+    (AU12) then pulled the corners away from the lining and it showed through
+    as red spots (seen on fuller lips). Only the lips' red edge within
+    ``behind_mm`` of the rim keeps its own motion. Only the fields in
+    ``names`` are changed.
+    """
+    from scipy.spatial import cKDTree
+
+    if "skin" not in base.parts or "2.2" not in base.landmarks:
+        return
+    bag, depth = _mouth_bag(base)
+    is_skin = head.vertex_part == head.parts.index("skin")
+    outside = np.flatnonzero(is_skin & ~np.isin(np.arange(head.n_vertices), bag))
+    lining = bag[depth > behind_mm]
+    if not len(lining):
+        return
+    dist, near = cKDTree(head.vertices[outside]).query(head.vertices[lining], k=neighbours)
+    w = 1.0 / np.maximum(dist, 1e-6) ** 2
+    w /= w.sum(axis=1, keepdims=True)
+    for p in head.parameters:
+        region = head.regions[p.name]
+        if p.name not in names or not p.field or region.displacements is None:
+            continue
+        F = np.zeros((head.n_vertices, 3))
+        F[region.indices] = region.weights[:, None] * region.displacements
+        followed = np.einsum("mk,mkd->md", w, F[outside[near]])
+        if np.allclose(followed, F[lining]):
+            continue
+        F[lining] = followed
+        moved = np.flatnonzero(np.abs(F).max(axis=1) > 0)
+        head.regions[p.name] = InfluenceRegion(moved, np.ones(len(moved)), F[moved])
+    head.changed()
 
 
 _BAGS: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
