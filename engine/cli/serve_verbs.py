@@ -2,7 +2,8 @@
 
 Safe by default: it listens on 127.0.0.1; any address that is not loopback needs a token
 (``--token`` or the environment variable ``AP_SERVE_TOKEN``), and a client without it is refused.
-This version is headless only (``--headless``); the window, a detached Festival and LSL are to come.
+This version is headless only (``--headless``); ``--festival HOST:PORT`` synthesizes with a Festival
+server (``festival --server``) instead of a local Festival.
 
 >>> check_listen_address("127.0.0.1", None)
 >>> check_listen_address("0.0.0.0", None)   # doctest: +ELLIPSIS
@@ -35,6 +36,9 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("--headless", action="store_true",
                    help="render nothing: parameter values and events only, on a 60 Hz frame clock (required "
                         "in this version)")
+    p.add_argument("--festival", default=None, metavar="HOST:PORT",
+                   help="synthesize with the Festival server (festival --server) at HOST:PORT instead of a local "
+                        "Festival; the same phones, words and waves")
     p.add_argument("--token", default=None, metavar="TOKEN",
                    help=f"clients must send 'Authorization: Bearer TOKEN' (default: ${TOKEN_VARIABLE}, if set)")
     p.set_defaults(run=run_serve)
@@ -53,11 +57,18 @@ def run_serve(args: argparse.Namespace) -> int:
     if token is not None and (not token.strip() or any(ord(c) < 33 or ord(c) > 126 for c in token)):
         raise UserError("--token must be printable ASCII without spaces")
     check_listen_address(args.host, token)
+    synthesizer = None
+    if args.festival is not None:
+        from engine.speech.festival_server import festival_synthesizer
+
+        synthesizer = festival_synthesizer(args.festival)
+        synthesizer.voices()                                  # an unreachable server is refused before serving
     model = load_model_argument(args.model)
     library = load_library(args.library)
     from engine.live.server import LiveServer
 
-    server = LiveServer(model, host=args.host, port=args.port, token=token, library=library)
+    server = LiveServer(model, host=args.host, port=args.port, token=token, library=library,
+                        synthesizer=synthesizer)
     asyncio.run(server.run(ready=lambda line: print(line, flush=True)))
     return 0
 

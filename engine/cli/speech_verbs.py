@@ -46,6 +46,8 @@ def add_verbs(verbs: Any) -> None:
                           help="your own labels → phones of the set: 'LABEL PHONE' per line")
     p.add_argument("--voice", default=None, metavar="V",
                    help="Festival voice (default suo_fi_lj_diphone; hy_fi_mv_diphone is the male Finnish voice)")
+    p.add_argument("--festival", default=None, metavar="HOST:PORT",
+                   help="synthesize with the Festival server (festival --server) at HOST:PORT, not a local Festival")
     add_model_option(p)
     add_library_option(p)
     p.add_argument("--articulation", default=None, metavar="TABLE",
@@ -101,7 +103,9 @@ def run_say(args: argparse.Namespace) -> int:
                                  coarticulation=args.coarticulation, prosody_seed=prosody_seed, name=name)
     else:
         assert text is not None                                # _text refuses no text without --audio
-        speech = speak(text, model, voice=args.voice, library=library, table=table,
+        from engine.speech.festival_server import festival_synthesizer
+
+        speech = speak(text, model, festival_synthesizer(args.festival), voice=args.voice, library=library, table=table,
                        coarticulation=args.coarticulation, prosody_seed=prosody_seed, name=name)
     for warning in speech.warnings:
         print(f"warning: {warning}", file=sys.stderr)

@@ -185,10 +185,11 @@ class LiveHead:
                 offset, fields = performance.events[performance.next_event]
                 performance.next_event += 1
                 out.append((performance.owner, {**fields, "id": performance.request_id, "t": self.t,
-                                                "onset_t": performance.start_t + offset}))
+                                                # t − start_t ≥ offset does not make start_t + offset ≤ t in floats
+                                                "onset_t": min(performance.start_t + offset, self.t)}))
             if local >= performance.end_offset:
                 out.append((performance.owner, {**performance.extra["finished"], "id": performance.request_id,
-                                                "t": self.t, "onset_t": performance.end_t}))
+                                                "t": self.t, "onset_t": min(performance.end_t, self.t)}))
             else:
                 running.append(performance)
         self.performances = running
