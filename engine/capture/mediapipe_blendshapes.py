@@ -124,6 +124,8 @@ def _parse_json(text: str, source: str, fps: float | None) -> CaptureStream:
 def _frame_lines(text: str, count: int) -> list[int | None]:
     """Line of each frame where the document has one frame per line (else None: errors name the frame)."""
     lines = text.splitlines()
+    if len(lines) == 1:
+        return [1] * count
     starts = [n for n, line in enumerate(lines, start=1) if line.lstrip().startswith("{")]
     if len(starts) == count:
         return list(starts)

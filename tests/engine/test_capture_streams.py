@@ -1,0 +1,241 @@
+"""Capture streams (issue 22 §3): the three readers on files in their producers' layouts, the mapping
+checked on the default head's geometry, and ``capture animate`` end to end."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from engine.capture.live_link_face import parse_live_link_face, read_live_link_face
+from engine.capture.mediapipe_blendshapes import parse_mediapipe
+from engine.capture.openface import parse_openface
+from engine.capture.readers import detect_format_of_text, read_capture
+from engine.capture.retarget import retarget
+from engine.capture.stream import CaptureFileError
+from engine.timeline.tracks import read_tracks_csv
+from tests.engine.capture_stream_files import (
+    LLF_EYES,
+    LLF_MOUTH,
+    llf_text,
+    mediapipe_csv,
+    mediapipe_json,
+    openface_text,
+)
+from tests.engine.cli_runner import assert_user_error, run
+
+
+def pose(head, mapped, frame):
+    """Landmark positions of the head in one mapped frame."""
+    return head.landmark_positions(dict(zip(mapped.parameters, mapped.values[frame], strict=True)))
+
+
+def lip_gap(points) -> float:
+    return float(points["2.2"][1] - points["2.3"][1])
+
+
+# -- readers ---------------------------------------------------------------------------------------
+
+def test_live_link_face_take_reads_with_its_timecode_rate():
+    take = read_live_link_face(LLF_MOUTH)
+    assert take.format == "arkit" and take.frames == 240
+    assert take.times_ms[0] == 0 and np.all(np.diff(take.times_ms) > 0)
+    # the app's timecode counts 60 frames a second; the take was recorded at every other one
+    assert take.rate_hz == pytest.approx(30.0, rel=1e-3)
+    assert len(take.channels) == 52 + 7                      # eye rolls are not read
+    assert take.channels["jawOpen"].max() == pytest.approx(0.95, abs=0.01)
+
+
+def test_live_link_face_eye_angles_turn_the_way_the_eye_shapes_look():
+    take = read_live_link_face(LLF_EYES)
+    c = take.channels
+    left = np.corrcoef(c["eye_left_turn_rad"], c["eyeLookOutLeft"] - c["eyeLookInLeft"])[0, 1]
+    right = np.corrcoef(c["eye_right_turn_rad"], c["eyeLookInRight"] - c["eyeLookOutRight"])[0, 1]
+    up = np.corrcoef(c["eye_left_raise_rad"], c["eyeLookUpLeft"] - c["eyeLookDownLeft"])[0, 1]
+    assert left > 0.99 and right > 0.99 and up > 0.98
+
+
+def test_a_take_shorter_than_a_second_gets_the_apps_rate():
+    take = parse_live_link_face(llf_text([{}] * 5, start="10:00:00", step=2))
+    assert take.rate_hz == pytest.approx(30.0)
+
+
+def test_openface_reads_intensities_pose_gaze_and_skips_lost_frames():
+    frames = [{"AU12": 2.5}, {"success": 0}, {"AU12": 5.0, "pose_Ry": 0.2}, {"face_id": 1, "AU12": 1.0}]
+    take = parse_openface(openface_text(frames), "of.csv")
+    assert take.frames == 2 and take.times_ms.tolist() == [0.0, 67.0]   # 3 decimals of s
+    assert take.channels["AU12"].tolist() == [2.5, 5.0]
+    assert take.channels["head_turn_rad"].tolist() == [0.0, -0.2]
+    assert any("success 0" in n for n in take.notes) and any("face(s) 1" in n for n in take.notes)
+
+
+def test_openface_image_sequence_needs_a_frame_rate():
+    text = openface_text([{}, {}, {}], timestamps=False)
+    with pytest.raises(CaptureFileError, match="--fps"):
+        parse_openface(text, "seq.csv")
+    assert parse_openface(text, "seq.csv", fps=25).times_ms.tolist() == [0.0, 40.0, 80.0]
+
+
+@pytest.mark.parametrize("style", ["js", "python"])
+def test_mediapipe_json_in_both_api_shapes(style):
+    take = parse_mediapipe(mediapipe_json([{"jawOpen": 0.2}, {"jawOpen": 0.7}], style=style), "mp.json")
+    assert take.format == "mediapipe" and take.frames == 2
+    assert take.channels["jawOpen"].tolist() == [0.2, 0.7]
+
+
+def test_mediapipe_frames_without_a_face_are_bridged():
+    text = mediapipe_json([{"jawOpen": 0.1}, {}, {"jawOpen": 0.3}])
+    text = text.replace('"faceBlendshapes": [{"categories"', '"x": [{"categories"', 1)   # keep 1st, empty 2nd:
+    lines = text.splitlines()
+    lines[2] = '{"timestampMs": 33.0, "faceBlendshapes": []},'
+    lines[1] = lines[1].replace('"x": [', '"faceBlendshapes": [')
+    take = parse_mediapipe("\n".join(lines), "mp.json")
+    assert take.frames == 2 and take.times_ms.tolist() == [0.0, 66.0]
+    assert any("without a face" in n for n in take.notes)
+
+
+def test_mediapipe_csv():
+    take = parse_mediapipe(mediapipe_csv([{"eyeBlinkLeft": 1.0}, {}]), "mp.csv")
+    assert take.channels["eyeBlinkLeft"].tolist() == [1.0, 0.0] and take.times_ms.tolist() == [0.0, 33.0]
+
+
+def test_formats_are_told_apart_by_their_headers():
+    assert detect_format_of_text(LLF_MOUTH.read_text()) == "arkit"
+    assert detect_format_of_text(openface_text([{}])) == "openface"
+    assert detect_format_of_text(mediapipe_json([{}])) == "mediapipe"
+    assert detect_format_of_text(mediapipe_csv([{}])) == "mediapipe"
+    assert detect_format_of_text("time_ms,jaw_open\n0,0\n") is None
+
+
+@pytest.mark.parametrize(("text", "line", "what"), [
+    ("Timecode,BlendShapeCount,EyeBlinkLeft\n", 1, "missing"),
+    (None, 4, "not a number"),
+    ("frame, face_id, timestamp, confidence, success, AU12_r\n1, 0, 0.000, 0.9, 1, 7.5\n", 2, "outside 0–5"),
+    ("face, confidence, AU12_r\n0, 0.9, 1.0\n", 1, "single images"),
+    ("[{\"timestampMs\": 0, \"faceBlendshapes\": [[{\"categoryName\": \"smile\", \"score\": 1}]]}]", 1, "unknown"),
+])
+def test_bad_files_are_refused_naming_file_and_line(text, line, what):
+    if text is None:
+        rows = LLF_MOUTH.read_text().splitlines()
+        rows[3] = rows[3].replace(",0.", ",x.", 1)
+        text = "\n".join(rows)
+    fmt = detect_format_of_text(text)
+    parse = {"arkit": parse_live_link_face, "openface": parse_openface, "mediapipe": parse_mediapipe}[fmt]
+    with pytest.raises(CaptureFileError) as caught:
+        parse(text, "bad.txt")
+    assert str(caught.value).startswith(f"bad.txt:{line}: "), str(caught.value)
+    assert what in str(caught.value)
+
+
+# -- the mapping on the head's geometry ----------------------------------------------------------------
+
+def test_jaw_open_one_opens_the_mouth_as_far_as_the_heads_full_jaw(head):
+    mapped = retarget(parse_live_link_face(llf_text([{}, {"JawOpen": 1.0}])), head)
+    opened = lip_gap(pose(head, mapped, 1))
+    assert opened - lip_gap(head.landmark_positions()) > 10.0                          # mm
+    assert opened == pytest.approx(lip_gap(head.landmark_positions({"jaw_open": 1.0})), abs=1e-6)
+
+
+def test_eye_blink_left_closes_the_left_lid_not_the_right(head):
+    mapped = retarget(parse_live_link_face(llf_text([{}, {"EyeBlinkLeft": 1.0}])), head)
+    rest, shut = head.landmark_positions(), pose(head, mapped, 1)
+    assert shut["3.1"][1] - rest["3.1"][1] < -5.0            # 3.1: the subject's left upper lid (at +X)
+    assert shut["3.2"][1] == pytest.approx(rest["3.2"][1], abs=1e-9)
+    assert rest["3.1"][0] > 0                                # +X is the subject's left on the head
+
+
+def test_head_yaw_turns_the_head_the_way_the_same_eye_yaw_turns_the_eyes(head):
+    """The take shows a negative eye yaw looks to the subject's left; the head's yaw is read alike."""
+    frame = {"HeadYaw": -0.3, "LeftEyeYaw": -0.3, "RightEyeYaw": -0.3}
+    mapped = retarget(parse_live_link_face(llf_text([{}, frame])), head)
+    rest, moved = head.landmark_positions(), pose(head, mapped, 1)
+    assert moved["9.3"][0] - rest["9.3"][0] > 20.0            # the nose tip swings to +X, the subject's left
+    eyes_only = retarget(parse_live_link_face(llf_text([{}, {"LeftEyeYaw": -0.3}])), head)
+    pupil = eyes_only.values[1][eyes_only.parameters.index("eye_left_turn")]
+    assert pupil > 0 and mapped.values[1][mapped.parameters.index("head_turn")] > 0
+
+
+def test_openface_turn_to_the_right_turns_the_head_to_its_right(head):
+    """OpenFace: turning to one's own right gives a positive pose_Ry (OpenFace issue #966)."""
+    mapped = retarget(parse_openface(openface_text([{}, {"pose_Ry": 0.3, "pose_Rx": -0.2}])), head)
+    rest, moved = head.landmark_positions(), pose(head, mapped, 1)
+    assert moved["9.3"][0] - rest["9.3"][0] < -20.0           # the nose tip to −X, the subject's right
+    assert moved["9.3"][1] > rest["9.3"][1]                   # negative Rx: the head tips up
+
+
+def test_openface_au12_at_five_raises_both_lip_corners(head):
+    mapped = retarget(parse_openface(openface_text([{}, {"AU12": 5.0}])), head)
+    rest, smile = head.landmark_positions(), pose(head, mapped, 1)
+    for corner in ("8.3", "8.4"):
+        assert smile[corner][1] - rest[corner][1] > 5.0
+    assert mapped.values[1][mapped.parameters.index("AU12_left")] == pytest.approx(1.0)
+
+
+def test_openface_blink_closes_both_lids(head):
+    mapped = retarget(parse_openface(openface_text([{}, {"AU45": 5.0}])), head)
+    rest, shut = head.landmark_positions(), pose(head, mapped, 1)
+    assert shut["3.1"][1] - rest["3.1"][1] < -5.0 and shut["3.2"][1] - rest["3.2"][1] < -5.0
+
+
+def test_mediapipe_eye_shapes_turn_both_eyes_to_the_subjects_left(head):
+    frame = {"eyeLookOutLeft": 0.5, "eyeLookInRight": 0.5}
+    mapped = retarget(parse_mediapipe(mediapipe_json([{}, frame])), head)
+    left = head.part_vertices("eye_left")
+    front = left[np.argmax(head.deform()[left, 2])]
+    moved = head.deform(dict(zip(mapped.parameters, mapped.values[1], strict=True)))
+    assert moved[front, 0] - head.deform()[front, 0] > 2.0
+    values = dict(zip(mapped.parameters, mapped.values[1], strict=True))
+    assert values["eye_left_turn"] == pytest.approx(values["eye_right_turn"]) == pytest.approx(0.5 * 0.607)
+
+
+def test_values_beyond_a_range_are_clamped_and_reported(head):
+    mapped = retarget(parse_live_link_face(llf_text([{}, {"LeftEyeYaw": -1.0}])), head)
+    assert mapped.clamped["eye_left_turn"].frames == 1
+    assert mapped.clamped["eye_left_turn"].highest == pytest.approx(1.0)
+    assert mapped.values[1][mapped.parameters.index("eye_left_turn")] == head.parameters["eye_left_turn"].maximum
+
+
+def test_a_parameter_the_model_lacks_is_skipped_with_a_warning(head_copy):
+    head_copy.remove_parameter("AU12_left")
+    mapped = retarget(parse_live_link_face(llf_text([{"MouthSmileLeft": 1.0}])), head_copy)
+    assert "AU12_left" not in mapped.parameters
+    assert any("'AU12_left'" in w and "mouthSmileLeft" in w for w in mapped.warnings)
+
+
+# -- the command line ---------------------------------------------------------------------------
+
+def test_cli_writes_the_tracks_table_of_a_real_take(tmp_path, head):
+    out = tmp_path / "take.csv"
+    result = run("capture", "animate", LLF_MOUTH, "-o", out)
+    assert result.returncode == 0, result.stderr
+    assert "warning: cheekPuff" in result.stderr or "warning:" in result.stderr
+    table = read_tracks_csv(out, head)
+    assert table.fps == pytest.approx(30.0) and len(table.times) == 240
+    direct = retarget(read_capture(LLF_MOUTH), head)
+    j = direct.parameters.index("jaw_open")
+    assert table.values_at(table.times[10])["jaw_open"] == pytest.approx(
+        np.interp(table.times[10], direct.times_ms, direct.values[:, j]), abs=1e-9)
+
+
+def test_cli_writes_a_video_with_one_frame_per_output_frame(tmp_path):
+    from engine.outputs.video_probe import probe
+
+    source = tmp_path / "take.json"
+    source.write_text(mediapipe_json([{"jawOpen": i / 9} for i in range(10)], step_ms=40.0))
+    out = tmp_path / "take.mp4"
+    result = run("capture", "animate", source, "--size", "160x120", "-o", out)
+    assert result.returncode == 0, result.stderr
+    assert probe(out).frames == 10
+
+
+@pytest.mark.parametrize("content", ["", "Timecode,BlendShapeCount\n", "time_ms,x\n0,1\n", "[{]", "{\"frames\": 3}"])
+def test_cli_bad_files_end_with_one_line_and_status_2(tmp_path, content):
+    source = tmp_path / "bad.csv"
+    source.write_text(content)
+    line = assert_user_error(run("capture", "animate", source, "-o", tmp_path / "out.csv"))
+    assert "bad.csv" in line
+    assert not (tmp_path / "out.csv").exists()
+
+
+def test_cli_refuses_an_unknown_output_kind(tmp_path):
+    line = assert_user_error(run("capture", "animate", LLF_MOUTH, "-o", tmp_path / "out.gif"))
+    assert "out.gif" in line
