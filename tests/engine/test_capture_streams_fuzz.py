@@ -1,0 +1,85 @@
+"""Fuzzing the capture-stream readers: every input ends with a stream or a ``CaptureFileError`` naming the file.
+
+Seeds are files in each producer's layout (the real Live Link Face take, an
+OpenFace and two MediaPipe files written as their APIs write them), mutated by
+hypothesis; a stream that reads is also retargeted onto the head, which must
+not fail either. ``AP_FUZZ_EXAMPLES`` inputs per reader (default 200; the
+release check runs 10,000, ``docs/capture-streams.md``).
+"""
+
+from __future__ import annotations
+
+from functools import cache
+
+import numpy as np
+from hypothesis import given
+
+from engine.capture.live_link_face import parse_live_link_face
+from engine.capture.mediapipe_blendshapes import parse_mediapipe
+from engine.capture.openface import parse_openface
+from engine.capture.retarget import retarget
+from engine.capture.stream import CaptureFileError, CaptureStream
+from tests.engine.capture_stream_files import LLF_MOUTH, mediapipe_csv, mediapipe_json, openface_text
+from tests.engine.fuzz_support import FUZZ, expect_clean, mutated
+
+NAME = "take.fuzz"
+
+
+@cache
+def _head():
+    import engine
+
+    return engine.load_model()
+
+
+def _seed_llf() -> str:
+    return "\n".join(LLF_MOUTH.read_text().splitlines()[:8]) + "\n"
+
+
+def _seed_openface() -> str:
+    frames = [{"AU12": 2.5, "pose_Ry": 0.1}, {"success": 0}, {"AU45": 5.0}, {"face_id": 1}]
+    return openface_text(frames)
+
+
+def _seed_mediapipe_json() -> str:
+    return mediapipe_json([{"jawOpen": 0.4}, {"eyeBlinkLeft": 1.0}, {"mouthSmileLeft": 0.5}])
+
+
+def _seed_mediapipe_csv() -> str:
+    return mediapipe_csv([{"jawOpen": 0.4}, {"eyeBlinkLeft": 1.0}, {}])
+
+
+def _check(parse) -> None:
+    result = expect_clean(parse, CaptureFileError, NAME)
+    if isinstance(result, CaptureStream):
+        assert np.all(np.diff(result.times_ms) > 0) and result.times_ms[0] == 0
+        mapped = retarget(result, _head())
+        assert np.all(np.isfinite(mapped.values))
+
+
+@FUZZ
+@given(mutated(_seed_llf()))
+def test_live_link_face_reader_survives_mutations(text):
+    _check(lambda: parse_live_link_face(text, NAME))
+
+
+@FUZZ
+@given(mutated(_seed_openface()))
+def test_openface_reader_survives_mutations(text):
+    _check(lambda: parse_openface(text, NAME))
+
+
+@FUZZ
+@given(mutated(_seed_mediapipe_json()))
+def test_mediapipe_json_reader_survives_mutations(text):
+    _check(lambda: parse_mediapipe(text, NAME))
+
+
+@FUZZ
+@given(mutated(_seed_mediapipe_csv()))
+def test_mediapipe_csv_reader_survives_mutations(text):
+    _check(lambda: parse_mediapipe(text, NAME, fps=30))
+
+
+def test_deeply_nested_json_is_refused_not_a_recursion_error():
+    _check(lambda: parse_mediapipe("[" * 100_000 + "]" * 100_000, NAME))
