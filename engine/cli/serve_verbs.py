@@ -3,7 +3,8 @@
 Safe by default: it listens on 127.0.0.1; any address that is not loopback needs a token
 (``--token`` or the environment variable ``AP_SERVE_TOKEN``), and a client without it is refused.
 This version is headless only (``--headless``); ``--festival HOST:PORT`` synthesizes with a Festival
-server (``festival --server``) instead of a local Festival.
+server (``festival --server``) instead of a local Festival; ``--lsl`` pushes every event to a Lab
+Streaming Layer marker outlet too, liblsl kept to this computer unless told otherwise.
 
 >>> check_listen_address("127.0.0.1", None)
 >>> check_listen_address("0.0.0.0", None)   # doctest: +ELLIPSIS
@@ -39,6 +40,12 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("--festival", default=None, metavar="HOST:PORT",
                    help="synthesize with the Festival server (festival --server) at HOST:PORT instead of a local "
                         "Festival; the same phones, words and waves")
+    p.add_argument("--lsl", action="store_true",
+                   help="push every event to a Lab Streaming Layer marker outlet too (ArtificialPerson, type Markers); "
+                        "liblsl discovery stays on this computer unless --lsl-config or $LSLAPICFG names another "
+                        "lsl_api.cfg")
+    p.add_argument("--lsl-config", default=None, metavar="FILE",
+                   help="liblsl configuration (lsl_api.cfg) for --lsl instead of the loopback-only default")
     p.add_argument("--token", default=None, metavar="TOKEN",
                    help=f"clients must send 'Authorization: Bearer TOKEN' (default: ${TOKEN_VARIABLE}, if set)")
     p.set_defaults(run=run_serve)
@@ -63,12 +70,19 @@ def run_serve(args: argparse.Namespace) -> int:
 
         synthesizer = festival_synthesizer(args.festival)
         synthesizer.voices()                                  # an unreachable server is refused before serving
+    if args.lsl_config is not None and not args.lsl:
+        raise UserError("--lsl-config needs --lsl")
+    if args.lsl:
+        from engine.live.lsl import import_pylsl, use_lsl_config
+
+        use_lsl_config(args.lsl_config)                      # before liblsl is loaded: it reads it once
+        import_pylsl()
     model = load_model_argument(args.model)
     library = load_library(args.library)
     from engine.live.server import LiveServer
 
     server = LiveServer(model, host=args.host, port=args.port, token=token, library=library,
-                        synthesizer=synthesizer)
+                        synthesizer=synthesizer, lsl=args.lsl)
     asyncio.run(server.run(ready=lambda line: print(line, flush=True)))
     return 0
 

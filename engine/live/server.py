@@ -41,6 +41,7 @@ from engine.commands import Library, load_library, parse_commands_text, translat
 from engine.commands.command_files import Activation, HighLevelCommand
 from engine.errors import UserError
 from engine.live.head import Event, LiveHead
+from engine.live.lsl import STREAM_NAME, MarkerOutlet, lsl_source_id
 from engine.live.protocol import (
     EVENT_TYPES,
     MAX_AHEAD_MS,
@@ -73,8 +74,9 @@ TOKEN_HEADER = "Authorization"
 class Client:
     """One connection: its outbox (sent in order by a writer task), its rate budget, its waiting utterances."""
 
-    def __init__(self, connection: ServerConnection):
+    def __init__(self, connection: ServerConnection, markers: Callable[[dict[str, Any]], None] | None = None):
         self.connection = connection
+        self.markers = markers
         self.outbox: asyncio.Queue[str | None] = asyncio.Queue()
         self.allowance = RATE_BURST
         self.last_check = time.monotonic()
@@ -86,6 +88,8 @@ class Client:
     def send(self, message: dict[str, Any]) -> None:
         if self.closed:
             return
+        if self.markers is not None and "event" in message:
+            self.markers(message)
         if self.outbox.qsize() >= MAX_OUTBOX:
             self.closed = True
             self.closing = asyncio.ensure_future(self.connection.close(1008, "the client does not read its messages"))
@@ -116,8 +120,11 @@ class LiveServer:
     """The head of ``model`` served on ``host:port`` (port 0: any free port), headless."""
 
     def __init__(self, model: Model, host: str = "127.0.0.1", port: int = 8765, token: str | None = None,
-                 library: Library | None = None, synthesizer: Synthesizer | None = None, fps: float = FPS):
+                 library: Library | None = None, synthesizer: Synthesizer | None = None, fps: float = FPS,
+                 lsl: bool = False):
         self.model = model
+        self.lsl = lsl
+        self.markers: MarkerOutlet | None = None
         self.host = host
         self.port = port
         self.token = token
@@ -156,8 +163,13 @@ class LiveServer:
             shown = f"[{host}]" if ":" in host else host
             self.epoch = time.monotonic()
             self.epoch_unix = time.time()
+            line = f"serving ws://{shown}:{port} headless {self.fps:g} Hz"
+            if self.lsl:
+                source_id = lsl_source_id(shown, port)
+                self.markers = MarkerOutlet(source_id, self.epoch)
+                line += f", LSL markers {STREAM_NAME} {source_id}"
             if ready is not None:
-                ready(f"serving ws://{shown}:{port} headless {self.fps:g} Hz")
+                ready(line)
             clock = asyncio.ensure_future(self._frame_loop())
             await self._stopping.wait()
             clock.cancel()
@@ -193,6 +205,13 @@ class LiveServer:
                 print(f"internal error in frame {self.frame}:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
                 self._deliver(self.head.stop())
 
+    def _push_marker(self, event: dict[str, Any]) -> None:
+        assert self.markers is not None
+        try:
+            self.markers.push(event)
+        except Exception:                                 # a bug of ours or liblsl's: said, the clients served on
+            print(f"internal error pushing an LSL marker:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
+
     def _deliver(self, events: list[tuple[object, Event]]) -> None:
         for owner, event in events:
             if isinstance(owner, Client):
@@ -212,7 +231,7 @@ class LiveServer:
         return connection.respond(HTTPStatus.UNAUTHORIZED, "a token is required: Authorization: Bearer TOKEN\n")
 
     async def _serve_client(self, connection: ServerConnection) -> None:
-        client = Client(connection)
+        client = Client(connection, self._push_marker if self.markers is not None else None)
         self._clients.add(client)
         writer = asyncio.ensure_future(client.write())
         try:
