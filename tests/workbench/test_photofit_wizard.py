@@ -1,0 +1,252 @@
+"""File → New head from photographs… in the real window on the default head (issue 19's workbench part).
+
+The photographs are the default head rendered by the toolkit's own renderer
+from the front and the side; their true landmark pixels come from that
+renderer's camera (as in ``tests/engine/test_photofit.py``). The fit is the
+real engine's, on the wizard's worker thread; the tests wait for it through
+the Qt event loop (``qtbot.waitUntil``). Finish says a test sentence with the
+real Festival.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+from PIL import Image
+from PySide6.QtCore import QPoint, QRect, QSize, Qt
+from PySide6.QtTest import QTest
+from PySide6.QtWidgets import QWizard
+
+import engine
+from engine.outputs.render import render_model
+from engine.photofit.initial_points import visible_landmarks
+from tests.engine.test_photofit import project
+from workbench.layouts import fresh_window_size
+from workbench.photofit_wizard import SCREEN_MARGIN, UNDO_TEXT, PhotoFitWizard
+from workbench.photofit_wizard_fit import FitStopped
+from workbench.script_panel.jobs import running_jobs, wait_for_all
+
+LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))
+PHOTO_SIZE = (450, 600)
+FIT_TIMEOUT_MS = 300_000              # the fit on a loaded 2-core machine; normally a few seconds
+SCREENSHOTS = Path(__file__).resolve().parents[2] / "docs" / "images" / "photofit"
+
+
+@pytest.fixture(scope="module")
+def photographs(tmp_path_factory, head):
+    """Front and side PNGs of the default head, and POINTS.json with its landmarks' true pixels."""
+    folder = tmp_path_factory.mktemp("photographs")
+    points = {}
+    for view in ("front", "side"):
+        Image.fromarray(render_model(head, view=view, size=PHOTO_SIZE)).save(folder / f"{view}.png")
+        pixels = project(head, view, *PHOTO_SIZE)
+        points[view] = {k: [round(float(c), 2) for c in pixels[head.landmarks[k]]]
+                        for k in visible_landmarks(head, view)}
+    (folder / "points.json").write_text(json.dumps(points))
+    (folder / "front-points.json").write_text(json.dumps({"front": points["front"]}))
+    return folder
+
+
+@pytest.fixture
+def head_window(make_window):
+    yield make_window(engine.default_model_path(), size=(LAPTOP.width(), LAPTOP.height()))
+    wait_for_all(FIT_TIMEOUT_MS)             # a fit or a Say a failed test left running ends before the window
+
+
+def open_wizard(window, qtbot) -> PhotoFitWizard:
+    window.actions_by_id["file.new_from_photos"].trigger()           # File → New head from photographs…
+    wizard = window.photofit_wizard
+    qtbot.waitExposed(wizard)
+    return wizard
+
+
+def wait_for_jobs(qtbot) -> None:
+    qtbot.waitUntil(lambda: not running_jobs(), timeout=FIT_TIMEOUT_MS)
+
+
+def on_screen(canvas, x: float, y: float) -> QPoint:
+    """The canvas viewport's pixel showing photograph pixel (x, y)."""
+    from PySide6.QtCore import QPointF
+
+    return canvas.mapFromScene(QPointF(x, y))
+
+
+def drag(canvas, start: QPoint, end: QPoint, qtbot) -> None:
+    viewport = canvas.viewport()
+    QTest.mousePress(viewport, Qt.MouseButton.LeftButton, Qt.KeyboardModifier.NoModifier, start)
+    for step in range(1, 6):
+        QTest.mouseMove(viewport, start + (end - start) * step / 5)
+        qtbot.wait(5)
+    QTest.mouseRelease(viewport, Qt.MouseButton.LeftButton, Qt.KeyboardModifier.NoModifier, end)
+
+
+def test_photographs_to_a_textured_speaking_head_in_one_undo_step(head_window, photographs, qtbot):
+    window = head_window
+    document = window.document
+    before, steps_before = document.model, document.undo_stack.count()
+    wizard = open_wizard(window, qtbot)
+    photos = wizard.photos_page
+    assert not photos.isComplete()
+    assert photos.choose("front", photographs / "front.png")
+    assert photos.choose("side", photographs / "side.png")
+    assert photos.isComplete()
+    wizard.next()
+    page = wizard.landmark_page
+    assert wizard.currentPage() is page
+    front = page.canvases["front"]
+    assert set(front.markers) == set(before.landmarks)
+    assert set(page.canvases["side"].markers) == set(visible_landmarks(before, "side"))
+    qtbot.waitUntil(lambda: front.isVisible() and front.viewport().width() > 100)
+
+    # drag the nose tip with the mouse, then Ctrl+Z
+    nose = front.markers["9.3"]
+    was = (nose.pos().x(), nose.pos().y())
+    start = on_screen(front, *was)
+    drag(front, start, start + QPoint(30, 12), qtbot)
+    moved = (nose.pos().x(), nose.pos().y())
+    scale = front.transform().m11()
+    assert moved[0] - was[0] == pytest.approx(30 / scale, abs=2 / scale)
+    assert moved[1] - was[1] == pytest.approx(12 / scale, abs=2 / scale)
+    assert page.undo_stack.count() == 1 and page.undo_stack.undoText() == "Move 9.3"
+    QTest.keyClick(wizard, Qt.Key.Key_Z, Qt.KeyboardModifier.ControlModifier)
+    assert (nose.pos().x(), nose.pos().y()) == pytest.approx(was)
+    QTest.keyClick(wizard, Qt.Key.Key_Z, Qt.KeyboardModifier.ControlModifier | Qt.KeyboardModifier.ShiftModifier)
+    assert (nose.pos().x(), nose.pos().y()) == pytest.approx(moved)
+
+    # right-click leaves an optional point out
+    optional = front.markers["9.15"]
+    QTest.mouseClick(front.viewport(), Qt.MouseButton.RightButton, Qt.KeyboardModifier.NoModifier,
+                     on_screen(front, optional.pos().x(), optional.pos().y()))
+    assert not optional.used and "9.15" not in page.points()["front"]
+    page.undo_stack.undo()
+    assert optional.used
+
+    # the true points from a file (one undo step), saved back the same
+    assert page.load(photographs / "points.json")
+    assert page.undo_stack.undoText() == "Load points.json"
+    truth = json.loads((photographs / "points.json").read_text())
+    assert page.points()["front"]["9.3"] == pytest.approx(tuple(truth["front"]["9.3"]))
+    page.save(photographs / "saved.json")
+    saved = json.loads((photographs / "saved.json").read_text())
+    assert saved["front"]["2.1"] == pytest.approx(truth["front"]["2.1"], abs=0.01)
+    assert set(saved) == {"front", "side"}
+
+    # the fit, then the fitted head over each photograph
+    wizard.next()
+    fit_page = wizard.fit_page
+    assert wizard.currentPage() is fit_page
+    qtbot.waitUntil(fit_page.isComplete, timeout=FIT_TIMEOUT_MS)
+    fit = wizard.session.fit
+    assert fit is not None and fit.shape.error < 4.0           # px: the points are the true ones
+    for view in ("front", "side"):
+        assert len(fit_page.canvases[view].fit_items()) == 3   # joins, crosses, outline
+    assert document.model is before and document.undo_stack.count() == steps_before   # nothing until Finish
+
+    wizard.next()
+    result = wizard.result_page
+    assert all(not picture.pixmap().isNull() for picture in result.pictures)
+    assert result.test_sentence() == "Pappa ampui pallon."
+    wizard.button(QWizard.WizardButton.FinishButton).click()
+
+    # one undo step; the head is textured and differs from the one before
+    assert document.model is fit.head
+    assert [image.name for image in document.model.texture.images] == ["photo"]
+    assert before.texture is None or not before.texture.images
+    assert not np.allclose(document.model.vertices, before.vertices)
+    assert document.undo_stack.count() == steps_before + 1
+    assert document.undo_stack.undoText() == UNDO_TEXT
+
+    # ... and it says the test sentence (real Festival) through the player
+    qtbot.waitUntil(lambda: window.script_panel.result is not None, timeout=FIT_TIMEOUT_MS)
+    assert window.script_panel.result.request.model is fit.head
+    assert window.player.duration > 0.5
+    window.player.stop()
+
+    window.undo()
+    assert document.model is before
+    window.redo()
+    assert document.model is fit.head
+    wait_for_jobs(qtbot)
+
+
+def test_stopping_the_fit_and_cancelling_leave_the_document_as_it_was(head_window, photographs, qtbot):
+    window = head_window
+    document = window.document
+    before, steps_before = document.model, document.undo_stack.count()
+    wizard = open_wizard(window, qtbot)
+    assert wizard.photos_page.choose("front", photographs / "front.png")
+    wizard.next()
+    assert wizard.landmark_page.load(photographs / "front-points.json")
+    ended: list[object] = []
+    wizard.next()
+    page = wizard.fit_page
+    assert page.running
+    job = page.job
+    job.ended.connect(lambda: ended.append(job.error))
+    page.stop_button.click()                                   # Stop mid-fit
+    assert not page.running and not page.isComplete() and wizard.session.fit is None
+    qtbot.waitUntil(lambda: bool(ended), timeout=FIT_TIMEOUT_MS)
+    assert isinstance(ended[0], FitStopped)                    # the fit itself stopped at its next step
+    assert "Stopped" in page.status.text()
+
+    page.again_button.click()                                  # fit again, then Cancel the wizard mid-fit
+    assert page.running
+    wizard.button(QWizard.WizardButton.CancelButton).click()
+    assert not wizard.isVisible()
+    wait_for_jobs(qtbot)
+    assert document.model is before and document.undo_stack.count() == steps_before
+    assert not document.is_modified
+
+
+def test_a_bad_photograph_or_points_file_is_a_dialog_naming_it(head_window, photographs, tmp_path, qtbot,
+                                                                captured_errors):
+    wizard = open_wizard(head_window, qtbot)
+    page = wizard.photos_page
+    not_a_picture = tmp_path / "holiday.jpg"
+    not_a_picture.write_text("these are not pixels")
+    assert not page.choose("front", not_a_picture)
+    gif = tmp_path / "face.gif"
+    Image.new("RGB", (40, 40)).save(gif)
+    assert not page.choose("front", gif)
+    assert not page.choose("front", tmp_path / "missing.png")
+    assert [title for title, _ in captured_errors] == ["New head from photographs"] * 3
+    assert "holiday.jpg" in captured_errors[0][1] and "GIF" in captured_errors[1][1]
+    assert "missing.png" in captured_errors[2][1]
+    assert not page.isComplete() and "front" not in wizard.session.photos
+
+    assert page.choose("front", photographs / "front.png")
+    wizard.next()
+    bad = tmp_path / "points.json"
+    bad.write_text('{"front": {"3.5": [1, 2]}}')
+    assert not wizard.landmark_page.load(bad)
+    assert "points.json" in captured_errors[-1][1] and "9.3" in captured_errors[-1][1]
+    assert wizard.landmark_page.undo_stack.count() == 0
+    wizard.reject()
+
+
+def test_exif_orientation_is_honoured(head_window, photographs, tmp_path, qtbot):
+    """A phone's sideways-stored JPEG (EXIF orientation 6) is shown and fitted upright."""
+    upright = Image.open(photographs / "front.png")
+    stored = upright.transpose(Image.Transpose.ROTATE_90)          # as the sensor stored it
+    exif = Image.Exif()
+    exif[0x0112] = 6                                                 # rotate 90° clockwise to view
+    stored.save(tmp_path / "phone.jpg", exif=exif, quality=95)
+    wizard = open_wizard(head_window, qtbot)
+    assert wizard.photos_page.choose("front", tmp_path / "phone.jpg")
+    assert wizard.session.photos["front"].shape[:2] == (PHOTO_SIZE[1], PHOTO_SIZE[0])
+    wizard.reject()
+
+
+def test_the_wizard_fits_a_laptop_screen(head_window, qtbot):
+    wizard = open_wizard(head_window, qtbot)
+    room = QSize(1366, 768) - SCREEN_MARGIN
+    for page_id in wizard.pageIds():
+        hint = wizard.page(page_id).minimumSizeHint()
+        assert hint.width() <= room.width() and hint.height() <= room.height() - 150   # title, buttons
+    assert wizard.minimumSizeHint().width() <= room.width()
+    assert wizard.minimumSizeHint().height() <= room.height()
+    assert wizard.size().width() <= max(room.width(), wizard.screen().availableGeometry().width())
+    wizard.reject()

@@ -1,0 +1,132 @@
+"""File → New head from photographs…: a wizard from a front (and side) photograph to a textured, speaking head.
+
+Pages: photographs (:mod:`.photofit_wizard_photos`), landmarks to drag
+(:mod:`.photofit_wizard_landmarks`, its own undo stack), the fit on a worker
+thread with the fitted head laid over each photograph, and the result
+(:mod:`.photofit_wizard_fit`). Cancel on any page, or Stop during the fit,
+leaves the document as it was; Finish makes the fitted head the document's
+model as one undo step ("New head from photographs") and, if asked, says a
+test sentence through the window's player as the script panel does. See
+docs/workbench-photofit.md.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import tempfile
+from typing import TYPE_CHECKING
+
+from PySide6.QtCore import QSize
+from PySide6.QtGui import QUndoStack
+from PySide6.QtWidgets import QMessageBox, QWidget, QWizard
+
+from .photofit_wizard_fit import FitPage, ResultPage
+from .photofit_wizard_landmarks import LandmarkPage
+from .photofit_wizard_photos import PhotosPage
+from .photofit_wizard_session import TITLE, PhotoFitSession
+from .undo_commands import ReplaceModelCommand
+
+if TYPE_CHECKING:
+    from engine.photofit import PhotoFit
+
+    from .main_window import MainWindow
+
+UNDO_TEXT = "New head from photographs"
+WANTED_SIZE = QSize(1240, 760)
+SCREEN_MARGIN = QSize(40, 70)             # the window frame and a panel or two
+
+
+class PhotoFitWizard(QWizard):
+    def __init__(self, session: PhotoFitSession, parent: QWidget | None = None):
+        super().__init__(parent)
+        self.session = session
+        self.setWindowTitle(TITLE)
+        self.setObjectName("photofit_wizard")
+        self.setWizardStyle(QWizard.WizardStyle.ClassicStyle)
+        self.setOption(QWizard.WizardOption.NoBackButtonOnStartPage)
+        self.undo_stack = QUndoStack(self)
+        self.photos_page = PhotosPage(session)
+        self.landmark_page = LandmarkPage(session, self.undo_stack)
+        self.fit_page = FitPage(session)
+        self.result_page = ResultPage(session)
+        for page in (self.photos_page, self.landmark_page, self.fit_page, self.result_page):
+            self.addPage(page)
+        self.rejected.connect(self.fit_page.stop)
+        self.resize(self.size_for_screen())
+
+    def size_for_screen(self) -> QSize:
+        screen = self.screen() if self.screen() is not None else None
+        if screen is None:
+            return WANTED_SIZE
+        available = screen.availableGeometry().size() - SCREEN_MARGIN
+        return WANTED_SIZE.boundedTo(available)
+
+
+def open_photofit_wizard(window: MainWindow) -> PhotoFitWizard:
+    """Show the wizard over ``window`` (window-modal); Finish puts the head into its document."""
+    wizard = PhotoFitWizard(PhotoFitSession(window.document.model), window)
+    window.photofit_wizard = wizard
+    wizard.accepted.connect(lambda: finish(window, wizard))
+    wizard.finished.connect(wizard.deleteLater)
+    wizard.open()
+    return wizard
+
+
+def finish(window: MainWindow, wizard: PhotoFitWizard) -> None:
+    fit = wizard.session.fit
+    if fit is None:
+        return
+    adopt(window, fit)
+    sentence = wizard.result_page.test_sentence()
+    if sentence is not None:
+        say_test_sentence(window, sentence)
+
+
+def adopt(window: MainWindow, fit: PhotoFit) -> None:
+    """The fitted head becomes the document's model: one undo step."""
+    window.document.push(ReplaceModelCommand(window.document, fit.head, UNDO_TEXT))
+    window.viewport.set_view("front")
+    window.statusBar().showMessage("New head from photographs: File → Save model as… writes it", 6000)
+
+
+def say_test_sentence(window: MainWindow, text: str):
+    """Say ``text`` with the document's model through the window's player, with the script panel's voice.
+
+    Returns the :class:`~workbench.script_panel.jobs.Job` (``None`` where the window has no script panel).
+    """
+    from engine.speech.requests import run_say
+
+    from .script_panel.jobs import Job
+
+    panel = getattr(window, "script_panel", None)
+    if panel is None:
+        return None
+    request = dataclasses.replace(panel.request(), text=text, model=window.document.model, audio=None, labels=None,
+                                  voice=panel.voice_box.currentText() or None)
+    folder = _scratch_folder()
+    job = Job(lambda job: run_say(request, folder, lambda: job.cancelled))
+    window.photofit_speech = job
+
+    def said() -> None:
+        if job.error is not None:
+            QMessageBox.warning(window, TITLE, f"The test sentence could not be said: {job.error}")
+            return
+        if window.isVisible() and window.document.model is request.model:
+            panel.adopt(job.result)
+            panel._play(job.result)            # as the script panel's own Say plays it
+
+    job.ended.connect(said)
+    window.statusBar().showMessage(f"Saying: {text}", 6000)
+    job.start()
+    return job
+
+
+_SCRATCH: list[tempfile.TemporaryDirectory] = []
+
+
+def _scratch_folder():
+    from pathlib import Path
+
+    if not _SCRATCH:
+        _SCRATCH.append(tempfile.TemporaryDirectory(prefix="artificial-person-photofit-say-"))
+    return Path(_SCRATCH[0].name)
