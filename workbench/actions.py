@@ -42,10 +42,18 @@ class ActionSpec:
     separator_before: bool = False
 
 
+def _photofit_wizard(window: MainWindow) -> None:
+    from .photofit_wizard import open_photofit_wizard  # the wizard's modules load when it is first opened
+
+    open_photofit_wizard(window)
+
+
 ACTIONS: tuple[ActionSpec, ...] = (
     ActionSpec("file.new_from_mesh", "&New from mesh…", "&File", triggered=lambda w: w.files.new_from_mesh_dialog(),
                shortcut=QKeySequence.StandardKey.New, icon="new-from-mesh",
                tip="Start a new model from a mesh file (OBJ, PLY, STL, VTK, glTF, …)"),
+    ActionSpec("file.new_from_photos", "New head from &photographs…", "&File", triggered=_photofit_wizard,
+               tip="Fit the head to a front (and side) photograph of a person, textured from them"),
     ActionSpec("file.open", "&Open model…", "&File", triggered=lambda w: w.files.open_dialog(),
                shortcut=QKeySequence.StandardKey.Open, icon="open", toolbar=True,
                tip="Open a model description (.xml)"),
