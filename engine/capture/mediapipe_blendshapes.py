@@ -18,8 +18,11 @@ an object with
   A category is ``{"categoryName"|"category_name": name, "score": number}``;
   ``index`` and ``displayName``/``display_name`` may be there too.
 
-Other keys (``faceLandmarks``, ``facialTransformationMatrixes``) are allowed
-and not read.
+``facialTransformationMatrixes`` (JavaScript) or
+``facial_transformation_matrixes`` (Python), where present in every frame
+with a face, give the head's turn, nod and tilt
+(:mod:`engine.capture.mediapipe_pose`). Other keys (``faceLandmarks``) are
+allowed and not read.
 
 **CSV** — a header ``timestamp_ms`` or ``time_ms`` (ms) or ``frame`` (with
 ``fps``), then the 52 names (``_neutral`` allowed), in any order; one row per
@@ -37,6 +40,7 @@ from typing import Any
 import numpy as np
 
 from engine.capture.arkit_names import ARKIT_BLENDSHAPES
+from engine.capture.mediapipe_pose import ANGLE_CHANNELS, head_angles, matrix_rows
 from engine.capture.stream import CaptureFileError, CaptureStream
 from engine.capture.text_table import MAX_CAPTURE_BYTES, check_unique, check_width, number, split_rows
 from engine.formats.text_files import read_bounded_text
@@ -44,6 +48,7 @@ from engine.formats.text_files import read_bounded_text
 NEUTRAL = "_neutral"
 TIME_KEYS = ("timestampMs", "timestamp_ms")
 BLENDSHAPE_KEYS = ("faceBlendshapes", "face_blendshapes")
+MATRIX_KEYS = ("facialTransformationMatrixes", "facial_transformation_matrixes")
 CSV_TIME_COLUMNS = {"timestamp_ms": "ms", "time_ms": "ms", "frame": "frame"}
 KNOWN = frozenset(ARKIT_BLENDSHAPES) | {NEUTRAL}
 
@@ -89,6 +94,7 @@ def _parse_json(text: str, source: str, fps: float | None) -> CaptureStream:
     lines = _frame_lines(text, len(frames))
     stamps: list[float | None] = []
     rows: list[list[float]] = []
+    poses: list[np.ndarray | None] = []
     kept: list[int] = []
     empty = 0
     for i, frame in enumerate(frames):
@@ -102,6 +108,7 @@ def _parse_json(text: str, source: str, fps: float | None) -> CaptureStream:
             stamps.append(stamp)
             continue
         rows.append(_scores(categories, where, source, lines[i]))
+        poses.append(_first_pose(frame, where, source, lines[i]))
         stamps.append(stamp)
         kept.append(i)
     timed = [s is not None for s in stamps]
@@ -118,7 +125,27 @@ def _parse_json(text: str, source: str, fps: float | None) -> CaptureStream:
         raise CaptureFileError("the frames carry no timestampMs: give the frame rate with --fps", file=source)
     _check_rising(times, [lines[i] for i in kept], source, "timestampMs")
     notes = [f"{empty} frame(s) without a face left out; the frames around bridge them"] if empty else []
-    return _stream(source, times - times[0], np.array(rows), notes)
+    stream = _stream(source, times - times[0], np.array(rows), notes)
+    posed = [p is not None for p in poses]
+    if any(posed) and not all(posed):
+        bad = kept[posed.index(not posed[0])]
+        raise CaptureFileError(f"frame {bad}: a transformation matrix in some frames with a face but not in "
+                               "others", file=source, line=lines[bad])
+    if all(posed):
+        angles = np.array([head_angles(p) for p in poses if p is not None])
+        for j, channel in enumerate(ANGLE_CHANNELS):
+            stream.channels[channel] = angles[:, j]
+    return stream
+
+
+def _first_pose(frame: Mapping[str, Any], where: str, source: str, line: int | None) -> np.ndarray | None:
+    key = next((k for k in MATRIX_KEYS if k in frame), None)
+    if key is None:
+        return None
+    matrices = frame[key]
+    if not isinstance(matrices, list):
+        raise CaptureFileError(f"{where}: {key} is not a list (one matrix per face)", file=source, line=line)
+    return matrix_rows(matrices[0], where, source, line) if matrices else None
 
 
 def _frame_lines(text: str, count: int) -> list[int | None]:

@@ -13,6 +13,9 @@ from __future__ import annotations
 import json
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import Any
+
+import numpy as np
 
 from engine.capture.arkit_names import ARKIT_BLENDSHAPES
 
@@ -68,21 +71,29 @@ def openface_text(frames: Sequence[Mapping[str, float]], timestamps: bool = True
     return "\n".join(lines) + "\n"
 
 
-def mediapipe_json(frames: Sequence[Mapping[str, float]], style: str = "js", step_ms: float = 33.0) -> str:
-    """Face Landmarker results, one per line: ``js`` (JSON.stringify) or ``python`` (dataclasses.asdict)."""
+def mediapipe_json(frames: Sequence[Mapping[str, float]], style: str = "js", step_ms: float = 33.0,
+                   matrices: Sequence[Any] | None = None) -> str:
+    """Face Landmarker results, one per line: ``js`` (JSON.stringify) or ``python`` (dataclasses.asdict).
+
+    ``matrices``: a 4×4 facial transformation matrix (row-major numpy) per frame, serialised as each API does.
+    """
     out = []
     for i, frame in enumerate(frames):
+        matrix = None if matrices is None else np.asarray(matrices[i], dtype=float)
         names = ["_neutral", *ARKIT_BLENDSHAPES]
         if style == "js":
             categories = [{"index": k, "score": frame.get(n, 0.0), "categoryName": n, "displayName": ""}
                           for k, n in enumerate(names)]
             result = {"timestampMs": round(i * step_ms, 3), "faceLandmarks": [[{"x": 0.5, "y": 0.5, "z": 0.0}]],
                       "faceBlendshapes": [{"categories": categories, "headIndex": -1, "headName": ""}],
-                      "facialTransformationMatrixes": []}
+                      "facialTransformationMatrixes": [] if matrix is None else
+                      [{"rows": 4, "columns": 4, "data": matrix.T.ravel().tolist()}]}
         else:
             categories = [{"index": k, "score": frame.get(n, 0.0), "display_name": "", "category_name": n}
                           for k, n in enumerate(names)]
             result = {"timestamp_ms": int(i * step_ms), "face_blendshapes": [categories]}
+            if matrix is not None:
+                result["facial_transformation_matrixes"] = [matrix.tolist()]
         out.append(json.dumps(result))
     return "[\n" + ",\n".join(out) + "\n]\n"
 

@@ -187,6 +187,30 @@ def test_mediapipe_eye_shapes_turn_both_eyes_to_the_subjects_left(head):
     assert values["eye_left_turn"] == pytest.approx(values["eye_right_turn"]) == pytest.approx(0.5 * 0.607)
 
 
+def rotation(axis: str, angle: float) -> np.ndarray:
+    """A 4×4 right-handed rotation about a head-frame axis, with the face 45 cm in front of the camera."""
+    c, s = np.cos(angle), np.sin(angle)
+    m = {"x": [[1, 0, 0], [0, c, -s], [0, s, c]], "y": [[c, 0, s], [0, 1, 0], [-s, 0, c]],
+         "z": [[c, -s, 0], [s, c, 0], [0, 0, 1]]}[axis]
+    out = np.eye(4)
+    out[:3, :3] = m
+    out[:3, 3] = [1.5, -2.0, -45.0]
+    return out
+
+
+@pytest.mark.parametrize("style", ["js", "python"])
+def test_mediapipe_transformation_matrix_turns_and_nods_the_head(head, style):
+    """The canonical face is the head frame; a turn about +Y swings the face to the subject's left."""
+    matrices = [np.eye(4), rotation("y", 0.3), rotation("x", 0.2), rotation("y", 0.2) @ rotation("x", 0.1)]
+    take = parse_mediapipe(mediapipe_json([{}] * 4, style=style, matrices=matrices), "mp.json")
+    assert take.channels["head_turn_rad"] == pytest.approx([0.0, 0.3, 0.0, 0.2])
+    assert take.channels["head_nod_rad"] == pytest.approx([0.0, 0.0, 0.2, 0.1])
+    mapped = retarget(take, head)
+    rest = head.landmark_positions()
+    assert pose(head, mapped, 1)["9.3"][0] - rest["9.3"][0] > 20.0      # the nose to +X, the subject's left
+    assert pose(head, mapped, 2)["9.3"][1] - rest["9.3"][1] < -10.0     # chin down: the nose drops
+
+
 def test_values_beyond_a_range_are_clamped_and_reported(head):
     mapped = retarget(parse_live_link_face(llf_text([{}, {"LeftEyeYaw": -1.0}])), head)
     assert mapped.clamped["eye_left_turn"].frames == 1

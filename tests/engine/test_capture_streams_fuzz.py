@@ -42,7 +42,15 @@ def _seed_openface() -> str:
 
 
 def _seed_mediapipe_json() -> str:
-    return mediapipe_json([{"jawOpen": 0.4}, {"eyeBlinkLeft": 1.0}, {"mouthSmileLeft": 0.5}])
+    turned = np.eye(4)
+    turned[:3, :3] = [[0.96, 0, 0.28], [0, 1, 0], [-0.28, 0, 0.96]]
+    turned[:3, 3] = [1.0, -2.0, -45.0]
+    return mediapipe_json([{"jawOpen": 0.4}, {"eyeBlinkLeft": 1.0}, {"mouthSmileLeft": 0.5}],
+                          matrices=[turned, np.eye(4), turned])
+
+
+def _seed_mediapipe_python_json() -> str:
+    return mediapipe_json([{"jawOpen": 0.4}, {"eyeBlinkLeft": 1.0}], style="python", matrices=[np.eye(4)] * 2)
 
 
 def _seed_mediapipe_csv() -> str:
@@ -72,6 +80,12 @@ def test_openface_reader_survives_mutations(text):
 @FUZZ
 @given(mutated(_seed_mediapipe_json()))
 def test_mediapipe_json_reader_survives_mutations(text):
+    _check(lambda: parse_mediapipe(text, NAME))
+
+
+@FUZZ
+@given(mutated(_seed_mediapipe_python_json()))
+def test_mediapipe_python_json_reader_survives_mutations(text):
     _check(lambda: parse_mediapipe(text, NAME))
 
 
