@@ -18,6 +18,7 @@ from __future__ import annotations
 import argparse
 import ipaddress
 import os
+from pathlib import Path
 from typing import Any
 
 from engine.cli.common import add_library_option, add_model_option
@@ -46,6 +47,9 @@ def add_verbs(verbs: Any) -> None:
                         "lsl_api.cfg")
     p.add_argument("--lsl-config", default=None, metavar="FILE",
                    help="liblsl configuration (lsl_api.cfg) for --lsl instead of the loopback-only default")
+    p.add_argument("--models", dest="model_folders", action="append", default=[], metavar="DIR",
+                   help="a folder whose model files (.xml) a client may load (may be repeated; -m's folder and the "
+                        "-L folders are served too)")
     p.add_argument("--token", default=None, metavar="TOKEN",
                    help=f"clients must send 'Authorization: Bearer TOKEN' (default: ${TOKEN_VARIABLE}, if set)")
     p.set_defaults(run=run_serve)
@@ -77,14 +81,30 @@ def run_serve(args: argparse.Namespace) -> int:
 
         use_lsl_config(args.lsl_config)                      # before liblsl is loaded: it reads it once
         import_pylsl()
+    folders = served_model_folders(args.model, args.library, args.model_folders)
     model = load_model_argument(args.model)
     library = load_library(args.library)
     from engine.live.server import LiveServer
 
     server = LiveServer(model, host=args.host, port=args.port, token=token, library=library,
-                        synthesizer=synthesizer, lsl=args.lsl)
+                        synthesizer=synthesizer, lsl=args.lsl, model_folders=folders,
+                        model_name=Path(args.model).name if args.model else "head.xml",
+                        model_reader=load_model_argument)
     asyncio.run(server.run(ready=lambda line: print(line, flush=True)))
     return 0
+
+
+def served_model_folders(model: str | None, libraries: list[str], extra: list[str]) -> list[Path]:
+    """The folders a ``load`` request may read model files from: -m's (or the shipped head's), -L's, --models."""
+    from engine.paths import default_model_path
+
+    folders = [Path(model).parent if model else default_model_path().parent]
+    folders += [Path(library) if Path(library).is_dir() else Path(library).parent for library in libraries]
+    for folder in extra:
+        if not Path(folder).is_dir():
+            raise UserError("--models names no folder", file=folder)
+        folders.append(Path(folder))
+    return folders
 
 
 def check_listen_address(host: str, token: str | None) -> None:

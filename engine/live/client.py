@@ -52,7 +52,7 @@ class ConnectionLost(LiveError):
 
 
 #: Requests a reconnecting client sends again after a lost connection: doing them twice does no harm.
-RESENDABLE = frozenset({"state", "capabilities", "set"})
+RESENDABLE = frozenset({"state", "capabilities", "set", "load"})
 
 
 class LiveClient:
@@ -154,6 +154,10 @@ class LiveClient:
 
     def stop(self, target: str | None = None) -> dict[str, Any]:
         return self.request("stop", **({} if target is None else {"target": target}))
+
+    def load(self, model: str) -> dict[str, Any]:
+        """Another model file (an identity), named from a folder the server serves; the head changes next frame."""
+        return self.request("load", model=model)
 
     def state(self) -> dict[str, Any]:
         reply = self.request("state")
@@ -261,6 +265,9 @@ class AsyncLiveClient:
 
     async def stop(self, target: str | None = None) -> dict[str, Any]:
         return await self.request("stop", **({} if target is None else {"target": target}))
+
+    async def load(self, model: str) -> dict[str, Any]:
+        return await self.request("load", model=model)
 
     async def state(self) -> dict[str, Any]:
         return await self.request("state")

@@ -54,6 +54,7 @@ MAX_AHEAD_MS = 24 * 3600 * 1000.0
 REQUEST_FIELDS: dict[str, tuple[frozenset[str], frozenset[str]]] = {
     "capabilities": (frozenset(), frozenset()),
     "command": (frozenset({"xml"}), frozenset({"at"})),
+    "load": (frozenset({"model"}), frozenset()),
     "say": (frozenset({"text"}), frozenset({"voice", "at"})),
     "set": (frozenset({"values"}), frozenset({"at"})),
     "state": (frozenset(), frozenset()),
@@ -62,7 +63,9 @@ REQUEST_FIELDS: dict[str, tuple[frozenset[str], frozenset[str]]] = {
 REQUEST_TYPES = tuple(sorted(REQUEST_FIELDS))
 #: The events the server sends (``docs/serve.md``).
 EVENT_TYPES = ("applied", "speech_start", "word", "phone", "command_start", "command_apex", "command_end", "finished",
-               "failed")
+               "failed", "loaded")
+#: Longest model name in a ``load`` request.
+MAX_MODEL_NAME_CHARS = 1024
 MESSAGE_NAME = "<message>"
 _VOICE_NAME = re.compile(r"[A-Za-z0-9_]{1,64}\Z")
 
@@ -130,6 +133,8 @@ def parse_request(text: str | bytes) -> Request:
             raise RequestError("\"voice\" is a Festival voice name (letters, digits and _, at most 64)", request_id)
     if kind == "set":
         fields["values"] = _values(fields["values"], request_id)
+    if kind == "load":
+        fields["model"] = model_name(fields["model"], request_id)
     if kind == "stop" and "target" in fields:
         fields["target"] = check_id(fields["target"], "target", request_id)
     return Request(kind, request_id, fields)
@@ -143,6 +148,27 @@ def check_id(value: object, what: str, request_id: RequestId = None) -> str | in
         return value
     raise RequestError(f"\"{what}\" must be a string (at most {MAX_ID_CHARS} characters) or an integer, "
                        f"not {_kind(value)}", request_id)
+
+
+def model_name(value: object, request_id: RequestId = None) -> str:
+    """A model file named relative to the served folders: ``face.xml``, ``people/anna.xml``; never a way out.
+
+    >>> model_name("people/anna.xml")
+    'people/anna.xml'
+    >>> model_name("../etc/x.xml")   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    engine.live.protocol.RequestError: <message>:1: "model" is a model file (.xml) named from a served folder: ...
+    """
+    refusal = ("\"model\" is a model file (.xml) named from a served folder: a relative path with / between "
+               "folders, no '..', at most 1024 characters")
+    if not isinstance(value, str) or not 0 < len(value) <= MAX_MODEL_NAME_CHARS or not value.endswith(".xml"):
+        raise RequestError(refusal, request_id)
+    parts = value.split("/")
+    if value.startswith("/") or "\\" in value or any(part in ("", ".", "..") for part in parts) \
+            or any(ord(c) < 32 or c == ":" for c in value):
+        raise RequestError(refusal, request_id)
+    return value
 
 
 def check_values(values: dict[str, float], ranges: dict[str, tuple[float, float]],

@@ -26,10 +26,11 @@ import signal
 import sys
 import time
 import traceback
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from contextlib import suppress
 from dataclasses import replace
 from http import HTTPStatus
+from pathlib import Path
 from typing import Any
 
 from websockets.asyncio.server import ServerConnection, serve
@@ -121,8 +122,20 @@ class LiveServer:
 
     def __init__(self, model: Model, host: str = "127.0.0.1", port: int = 8765, token: str | None = None,
                  library: Library | None = None, synthesizer: Synthesizer | None = None, fps: float = FPS,
-                 lsl: bool = False):
+                 lsl: bool = False, model_folders: Sequence[str | Path] = (), model_name: str = "",
+                 model_reader: Callable[[str], Model] | None = None):
         self.model = model
+        if model_reader is None:
+            from engine.formats.model_files import load_model
+
+            model_reader = load_model
+        #: Reads a model file for ``load``; any failure it reports as a :class:`UserError` reaches the client.
+        self.model_reader = model_reader
+        self.model_name = model_name
+        #: The folders a ``load`` request may name a model file in (resolved; nothing outside them is read).
+        self.model_folders = [Path(folder).resolve() for folder in model_folders]
+        self._loading: asyncio.Lock | None = None
+        self._announcements: list[tuple[Client, Event]] = []
         self.lsl = lsl
         self.markers: MarkerOutlet | None = None
         self.host = host
@@ -150,6 +163,7 @@ class LiveServer:
     async def run(self, ready: Callable[[str], None] | None = None) -> None:
         """Serve until SIGINT/SIGTERM (or :meth:`close`); ``ready`` gets the line naming the bound address."""
         self._synthesis_lock = asyncio.Lock()
+        self._loading = asyncio.Lock()
         self._stopping = asyncio.Event()
         await asyncio.to_thread(self.voices)                   # Festival asked once, before any client waits
         loop = asyncio.get_running_loop()
@@ -200,7 +214,10 @@ class LiveServer:
             now_frame = math.floor((time.monotonic() - self.epoch) * self.fps + 1e-9)
             self.frame = max(self.frame + 1, now_frame)
             try:
-                self._deliver(self.head.advance(self.frame_time(self.frame)))
+                t = self.frame_time(self.frame)
+                announced, self._announcements = self._announcements, []
+                self._deliver([(owner, {**event, "t": t}) for owner, event in announced])
+                self._deliver(self.head.advance(t))
             except Exception:                             # a bug of ours: said, and the clock keeps going
                 print(f"internal error in frame {self.frame}:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
                 self._deliver(self.head.stop())
@@ -261,6 +278,8 @@ class LiveServer:
             if over_rate:
                 raise RequestError(f"too many requests: at most {RATE_PER_SECOND:g} a second", request.id)
             request_id = request.id
+            if request.type == "load":
+                return await self._load(client, request)
             return self._handle(client, request)
         except RequestError as exc:
             return error_reply(exc)
@@ -352,7 +371,8 @@ class LiveServer:
                     return
                 if hasattr(self.synthesizer, "cancelled"):       # Festival is stopped when its client is gone
                     self.synthesizer.cancelled = lambda: client.closed or request.id in client.cancelled
-                speech = await asyncio.to_thread(speak, request.fields["text"], self.model, self.synthesizer,
+                model = self.model
+                speech = await asyncio.to_thread(speak, request.fields["text"], model, self.synthesizer,
                                                  request.fields.get("voice"), self.library)
         except SynthesisCancelled:
             if not client.closed:
@@ -375,7 +395,45 @@ class LiveServer:
             return
         if client.closed:
             return
+        if model is not self.model:
+            client.send({"event": "failed", "id": request.id, "t": self.head.t,
+                         "error": "another model was loaded while Festival synthesized this utterance; say it again"})
+            return
         self.head.add_speech(self.next_frame_time(at), request.id, client, speech)
+
+    # -- load ----------------------------------------------------------------------------------
+
+    async def _load(self, client: Client, request: Request) -> dict[str, Any]:
+        """Read another model file from a served folder; it replaces the head from the next frame."""
+        name = request.fields["model"]
+        path = self.model_path(name, request.id)
+        assert self._loading is not None
+        async with self._loading:
+            try:
+                model = await asyncio.to_thread(self.model_reader, str(path))
+            except UserError as exc:
+                shown = name if exc.file is None or Path(exc.file).resolve() == path else Path(exc.file).name
+                raise RequestError(exc.message, request.id, file=shown, line=exc.line) from None
+            self._deliver(self.head.stop())                     # every performance ends; pending sets are dropped
+            for other in self._clients:
+                other.cancelled.update(other.waiting_utterances)
+            head = LiveHead(model)
+            head.t = self.head.t
+            self.model, self.head, self.model_name = model, head, name
+            self._announcements.append((client, {"event": "loaded", "id": request.id, "model": name}))
+            return {"id": request.id, "ok": True, "t": self.next_frame_time(), "model": name,
+                    "parameters": len(head.names)}
+
+    def model_path(self, name: str, request_id: RequestId = None) -> Path:
+        """The file ``name`` (checked by the protocol: relative, no ``..``) in the first served folder that has it.
+
+        Symbolic links are followed and must end inside that folder: nothing outside the folders is read.
+        """
+        for folder in self.model_folders:
+            candidate = (folder / name).resolve()
+            if candidate.is_relative_to(folder) and candidate.is_file():
+                return candidate
+        raise RequestError(f"no model file {name!r} in the folders this server was started with", request_id)
 
     # -- state and capabilities ------------------------------------------------------------------
 
@@ -384,14 +442,16 @@ class LiveServer:
         return {"fps": self.fps, "epoch_monotonic_s": self.epoch, "epoch_unix_s": self.epoch_unix}
 
     def state(self) -> dict[str, Any]:
-        return {"t": self.head.t, "frame": self.frame, "values": self.head.values, "playing": self.head.playing(),
+        return {"t": self.head.t, "frame": self.frame, "model": self.model_name, "values": self.head.values,
+                "playing": self.head.playing(),
                 "clock": self.clock()}
 
     def capabilities(self) -> dict[str, Any]:
         tree = self.model.parameters
         parameters = [{"name": name, "min": tree[name].minimum, "max": tree[name].maximum,
                        "default": tree[name].default} for name in self.head.names]
-        return {"schema_version": SCHEMA_VERSION, "mode": "headless", "requests": list(REQUEST_TYPES),
+        return {"schema_version": SCHEMA_VERSION, "mode": "headless", "model": self.model_name,
+                "requests": list(REQUEST_TYPES),
                 "events": list(EVENT_TYPES), "parameters": parameters, "voices": self.voices(),
                 "commands": sorted(self.library.names()), "clock": self.clock(),
                 "limits": {"message_bytes": MAX_MESSAGE_BYTES, "frame_bytes": MAX_FRAME_BYTES,
@@ -407,3 +467,4 @@ class LiveServer:
             except UserError:
                 self._voices = []
         return list(self._voices)
+
