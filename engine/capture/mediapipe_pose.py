@@ -18,7 +18,7 @@ but whose last column is, is read row-major.
 >>> import numpy as np
 >>> turn = 0.3                                                # towards the subject's left
 >>> rows = [[np.cos(turn), 0, np.sin(turn), 0], [0, 1, 0, 0], [-np.sin(turn), 0, np.cos(turn), -40], [0, 0, 0, 1]]
->>> np.round(head_angles(matrix_rows(rows, "m")), 6).tolist()
+>>> (np.round(head_angles(matrix_rows(rows, "m")), 6) + 0.0).tolist()    # + 0.0: no -0.0
 [0.3, 0.0, 0.0]
 """
 
