@@ -1,7 +1,10 @@
 """Capture files in the producers' own layouts, written the way the producers write them.
 
 OpenFace: the header and number formats of OpenFace 2.2's ``RecorderCSV.cpp``
-(``-aus -gaze -pose``, 56 eye landmarks). MediaPipe: the Face Landmarker result
+(``-aus -gaze -pose``, 56 eye landmarks), with the separators of a real
+FeatureExtraction output (``samples/recover_au_test/test_bash1.csv`` of
+github.com/Kaz-Ishibashi/RecoverAUFromOpenFace, read, not copied: two spaces
+after each comma up to the AU columns, one among them). MediaPipe: the Face Landmarker result
 as the JavaScript API's ``JSON.stringify`` gives it, as the Python API's
 ``Category`` dataclasses give it, and a CSV of the scores. Live Link Face: the
 header of the real takes in ``tests/data/capture_streams/`` with rows built
@@ -65,9 +68,10 @@ def openface_text(frames: Sequence[Mapping[str, float]], timestamps: bool = True
         cells += [f"{300.0 + k % 20:.1f}" for k in range(EYE_LANDMARKS * 2)]
         cells += [f"{-20.0 + k % 40:.1f}" for k in range(EYE_LANDMARKS * 3)]
         cells += ["12.3", "-4.5", "480.2"] + [f"{frame.get(n, 0.0):.3f}" for n in ("pose_Rx", "pose_Ry", "pose_Rz")]
-        cells += [f"{frame.get(au, 0.0):.2f}" for au in OPENFACE_AUS_R]
-        cells += [f"{1.0 if frame.get(au, 0.0) > 1 else 0.0:.1f}" for au in OPENFACE_AUS_C]
-        lines.append(", ".join(cells))
+        aus = [f"{frame.get(au, 0.0):.2f}" for au in OPENFACE_AUS_R]
+        aus += [f"{1.0 if frame.get(au, 0.0) > 1 else 0.0:.2f}" for au in OPENFACE_AUS_C]
+        # a real FeatureExtraction output has two spaces after the commas before the AUs, one among them
+        lines.append(",  ".join(cells) + ", " + ", ".join(aus))
     return "\n".join(lines) + "\n"
 
 
