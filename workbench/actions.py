@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass
+from importlib import import_module
 from typing import TYPE_CHECKING
 
 from PySide6.QtGui import QAction, QKeySequence
@@ -43,9 +44,9 @@ class ActionSpec:
 
 
 def _photofit_wizard(window: MainWindow) -> None:
-    from .photofit_wizard import open_photofit_wizard  # the wizard's modules load when it is first opened
-
-    open_photofit_wizard(window)
+    # By name, when first opened, as features.py installs the tools: the wizard stands on tools
+    # (the script panel's jobs) that stand on this module.
+    import_module(".photofit_wizard", __package__).open_photofit_wizard(window)
 
 
 ACTIONS: tuple[ActionSpec, ...] = (
@@ -53,6 +54,7 @@ ACTIONS: tuple[ActionSpec, ...] = (
                shortcut=QKeySequence.StandardKey.New, icon="new-from-mesh",
                tip="Start a new model from a mesh file (OBJ, PLY, STL, VTK, glTF, …)"),
     ActionSpec("file.new_from_photos", "New head from &photographs…", "&File", triggered=_photofit_wizard,
+               icon="new-from-photos",
                tip="Fit the head to a front (and side) photograph of a person, textured from them"),
     ActionSpec("file.open", "&Open model…", "&File", triggered=lambda w: w.files.open_dialog(),
                shortcut=QKeySequence.StandardKey.Open, icon="open", toolbar=True,
