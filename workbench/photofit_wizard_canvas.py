@@ -16,7 +16,7 @@ from collections.abc import Callable, Iterable, Mapping
 
 import numpy as np
 from PySide6.QtCore import QPointF, QRectF, Qt
-from PySide6.QtGui import QBrush, QColor, QImage, QPainter, QPainterPath, QPen, QPixmap, QPolygonF
+from PySide6.QtGui import QBrush, QColor, QFont, QImage, QPainter, QPainterPath, QPen, QPixmap, QPolygonF
 from PySide6.QtWidgets import (
     QGraphicsEllipseItem,
     QGraphicsItem,
@@ -59,16 +59,27 @@ class Marker(QGraphicsEllipseItem):
         self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemIgnoresTransformations)
         self.setZValue(10)
         self.setCursor(Qt.CursorShape.OpenHandCursor)
+        font = QFont()
+        font.setPointSizeF(7.5)
+        font.setBold(True)
+        self.shadow = QGraphicsSimpleTextItem(key, self)       # a dark copy under the label: legible on any photo
+        self.shadow.setFont(font)
+        self.shadow.setBrush(QBrush(QColor(0, 0, 0, 210)))
+        self.shadow.setPos(r + 2, -r - 11)
         self.label = QGraphicsSimpleTextItem(key, self)
+        self.label.setFont(font)
         self.label.setPos(r + 1, -r - 12)
-        self.label.setBrush(QBrush(QColor("white")))
-        self.label.setPen(QPen(QColor(0, 0, 0, 200), 0.6))
         self.set_editable(True)
         self.set_used(True)
 
     def set_editable(self, editable: bool) -> None:
+        """Editable: dragged and toggled, with its id; otherwise a small plain dot (under a fit's crosses)."""
         self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemIsMovable, editable)
         self.setAcceptedMouseButtons(Qt.MouseButton.AllButtons if editable else Qt.MouseButton.NoButton)
+        r = MARKER_RADIUS if editable else MARKER_RADIUS * 0.6
+        self.setRect(-r, -r, 2 * r, 2 * r)
+        self.label.setVisible(editable)
+        self.shadow.setVisible(editable)
 
     def set_used(self, used: bool) -> None:
         self.used = used or self.required
@@ -76,6 +87,7 @@ class Marker(QGraphicsEllipseItem):
         self.setPen(QPen(QColor("black") if self.used else colour, 1.5))
         self.setBrush(QBrush(colour) if self.used else QBrush(Qt.BrushStyle.NoBrush))
         self.label.setBrush(QBrush(QColor("white") if self.used else LEFT_OUT_COLOUR))
+        self.shadow.setVisible(self.used and self.label.isVisible())
 
     def mousePressEvent(self, event: QGraphicsSceneMouseEvent) -> None:
         if event.button() == Qt.MouseButton.RightButton:
@@ -178,7 +190,7 @@ class PhotoCanvas(QGraphicsView):
             polygon = QPolygonF([QPointF(float(x), float(y)) for x, y in outline])
             self._fit_items.append(scene.addPolygon(polygon, pen))
         for item in self._fit_items:
-            item.setZValue(5)
+            item.setZValue(15)            # over the user's points: where the fit put them is what is looked at
 
     def clear_fit(self) -> None:
         for item in self._fit_items:

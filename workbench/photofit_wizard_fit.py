@@ -41,6 +41,7 @@ STEP_TEXT = {"shape": "Fitting cameras and face shape…", "head": "Making the h
              "eyes": "Colouring the eyes…"}
 RESULT_SIZE = (300, 400)
 TEST_SENTENCE = "Pappa ampui pallon."
+CHIN_MARGIN = 10.0                 # mm below the chin the outline still follows
 
 
 class FitStopped(Exception):
@@ -158,6 +159,8 @@ class FitPage(QWizardPage):
             return
         head = fit.head
         skin = head.vertex_part == head.parts.index("skin") if "skin" in head.parts else np.ones(head.n_vertices, bool)
+        if "2.1" in head.landmarks:      # the head's outline down to the chin: the neck's cut edge is no outline
+            skin &= head.vertices[:, 1] >= head.vertices[head.landmarks["2.1"], 1] - CHIN_MARGIN
         for view, camera in fit.shape.cameras.items():
             ids = [k for k in self.session.points.get(view, {}) if k in head.landmarks]
             fitted = camera.project(head.vertices[[head.landmarks[k] for k in ids]]) if ids else np.zeros((0, 2))

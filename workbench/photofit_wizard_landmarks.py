@@ -25,6 +25,7 @@ from PySide6.QtWidgets import (
     QPushButton,
     QToolButton,
     QVBoxLayout,
+    QWidget,
     QWizardPage,
 )
 
@@ -77,13 +78,14 @@ class LandmarkPage(QWizardPage):
         self.canvases = {view: PhotoCanvas() for view in VIEWS}
         self._placed_for: dict[str, object] = {}
         row = QHBoxLayout()
-        self.titles: dict[str, QLabel] = {}
+        self.columns: dict[str, QWidget] = {}
         for view, canvas in self.canvases.items():
-            column = QVBoxLayout()
-            self.titles[view] = QLabel(f"<b>{view.capitalize()}</b>")
-            column.addWidget(self.titles[view])
-            column.addWidget(canvas, 1)
-            row.addLayout(column, 1)
+            column = self.columns[view] = QWidget()      # hidden whole when there is no such photograph
+            inside = QVBoxLayout(column)
+            inside.setContentsMargins(0, 0, 0, 0)
+            inside.addWidget(QLabel(f"<b>{view.capitalize()}</b>"))
+            inside.addWidget(canvas, 1)
+            row.addWidget(column, 1)
             canvas.on_moved = lambda key, old, new, canvas=canvas: self.undo_stack.push(
                 MoveMarker(canvas, key, old, new))
             canvas.on_toggled = lambda key, used, view=view: self._toggle(view, key, used)
@@ -123,8 +125,7 @@ class LandmarkPage(QWizardPage):
         model = self.session.landmark_head()
         for view, canvas in self.canvases.items():
             photo = self.session.photos.get(view)
-            canvas.setVisible(photo is not None)
-            self.titles[view].setVisible(photo is not None)
+            self.columns[view].setVisible(photo is not None)
             if photo is None:
                 self._placed_for.pop(view, None)
                 continue
@@ -230,9 +231,13 @@ class LandmarkPage(QWizardPage):
             return False
         new = self.state()
         hidden: list[str] = []
+        model = self.session.landmark_head()
         for view in self.views():
             given = points.get(view, {})
-            new[view] = {k: (*given[k], True) if k in given else (x, y, k in self._required(view))
+            shown = {k: xy for k, xy in given.items() if k in new[view]}
+            # the points the file leaves out: left out, and put where the file's points say they are
+            guess = place_from(model, view, shown) if len(shown) >= 2 else {}
+            new[view] = {k: (*given[k], True) if k in given else (*guess.get(k, (x, y)), k in self._required(view))
                          for k, (x, y, _) in new[view].items()}
             hidden += [f"{view} {k}" for k in sorted(given.keys() - new[view].keys())]
         self._change(new, f"Load {Path(path).name}")

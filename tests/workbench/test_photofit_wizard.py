@@ -250,3 +250,41 @@ def test_the_wizard_fits_a_laptop_screen(head_window, qtbot):
     assert wizard.minimumSizeHint().height() <= room.height()
     assert wizard.size().width() <= max(room.width(), wizard.screen().availableGeometry().width())
     wizard.reject()
+
+
+def test_place_the_rest_puts_the_unmoved_points_near_their_places(head_window, photographs, qtbot):
+    """After the six required points are on their pixels, Place the rest brings the others close: one undo step."""
+    from engine.photofit.points import REQUIRED_FRONT
+    from workbench.photofit_wizard_landmarks import MoveMarker
+
+    wizard = open_wizard(head_window, qtbot)
+    assert wizard.photos_page.choose("front", photographs / "front.png")
+    wizard.next()
+    page = wizard.landmark_page
+    front = page.canvases["front"]
+    truth = json.loads((photographs / "points.json").read_text())["front"]
+    first = {k: (m.pos().x(), m.pos().y()) for k, m in front.markers.items()}
+    for key in REQUIRED_FRONT:                     # as dragging them would
+        page.undo_stack.push(MoveMarker(front, key, first[key], tuple(truth[key])))
+
+    def error(state) -> float:
+        d = np.array([np.subtract(state[k][:2], truth[k]) for k in truth if k not in REQUIRED_FRONT])
+        return float(np.sqrt((d ** 2).sum(axis=1).mean()))
+
+    before = error(front.state())
+    page.place_button.click()
+    after = error(front.state())
+    assert after < 8.0 and after < 0.5 * before, (before, after)          # px, of a head about 400 px tall
+    assert page.undo_stack.undoText() == "Place the rest"
+    assert all(front.state()[k][:2] == pytest.approx(tuple(truth[k])) for k in REQUIRED_FRONT)
+
+    # a required point cannot be left out; Reset is one step back to the first guesses
+    required = front.markers["9.3"]
+    QTest.mouseClick(front.viewport(), Qt.MouseButton.RightButton, Qt.KeyboardModifier.NoModifier,
+                     on_screen(front, required.pos().x(), required.pos().y()))
+    assert required.used and page.undo_stack.undoText() == "Place the rest"
+    page.reset_button.click()
+    assert error(front.state()) == pytest.approx(error({k: (*xy, True) for k, xy in first.items()}))
+    page.undo_stack.undo()
+    assert error(front.state()) == pytest.approx(after)
+    wizard.reject()

@@ -1,0 +1,72 @@
+"""Pictures of the photo-fit wizard for docs/workbench-photofit.md, made by the real window.
+
+A real portrait, ``skimage.data.astronaut()`` (public domain, NASA), fitted
+front-only with the landmarks of ``docs/images/photofit/astronaut_points.json``;
+and the default head rendered from the front and the side, fitted from both.
+Writes ``docs/images/photofit/wizard-*.png``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from PIL import Image
+from PySide6.QtCore import QRect
+
+import engine
+from tests.workbench.test_photofit_wizard import FIT_TIMEOUT_MS, open_wizard, photographs  # noqa: F401
+from workbench.layouts import fresh_window_size
+from workbench.script_panel.jobs import wait_for_all
+
+DOCS = Path(__file__).resolve().parents[2] / "docs" / "images" / "photofit"
+LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))
+WIZARD_SIZE = (1240, 720)
+
+
+@pytest.fixture
+def head_window(make_window):
+    yield make_window(engine.default_model_path(), size=(LAPTOP.width(), LAPTOP.height()))
+    wait_for_all(FIT_TIMEOUT_MS)
+
+
+def shoot(wizard, qtbot, name: str) -> Path:
+    qtbot.wait(50)                     # let the page lay itself out and paint
+    path = DOCS / name
+    assert wizard.grab().save(str(path))
+    return path
+
+
+def test_screenshots_of_a_real_portrait_and_a_two_view_fit(head_window, photographs, tmp_path, qtbot):  # noqa: F811
+    data = pytest.importorskip("skimage.data")
+    portrait = tmp_path / "astronaut.png"
+    Image.fromarray(data.astronaut()).save(portrait)
+    wizard = open_wizard(head_window, qtbot)
+    wizard.resize(*WIZARD_SIZE)
+    wizard.result_page.say_box.setChecked(False)
+    assert wizard.photos_page.choose("front", portrait)
+    shoot(wizard, qtbot, "wizard-photos.png")
+    wizard.next()
+    shoot(wizard, qtbot, "wizard-landmarks-start.png")
+    assert wizard.landmark_page.load(DOCS / "astronaut_points.json")
+    shoot(wizard, qtbot, "wizard-landmarks.png")
+    wizard.next()
+    qtbot.waitUntil(wizard.fit_page.isComplete, timeout=FIT_TIMEOUT_MS)
+    shoot(wizard, qtbot, "wizard-fit.png")
+    wizard.next()
+    written = shoot(wizard, qtbot, "wizard-result.png")
+    wizard.reject()
+
+    wizard = open_wizard(head_window, qtbot)
+    wizard.resize(*WIZARD_SIZE)
+    assert wizard.photos_page.choose("front", photographs / "front.png")
+    assert wizard.photos_page.choose("side", photographs / "side.png")
+    wizard.next()
+    assert wizard.landmark_page.load(photographs / "points.json")
+    wizard.next()
+    qtbot.waitUntil(wizard.fit_page.isComplete, timeout=FIT_TIMEOUT_MS)
+    two = shoot(wizard, qtbot, "wizard-fit-two-views.png")
+    wizard.reject()
+    for path in (written, two):
+        with Image.open(path) as picture:
+            assert picture.size == WIZARD_SIZE
