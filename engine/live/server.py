@@ -422,7 +422,7 @@ class LiveServer:
             self.model, self.head, self.model_name = model, head, name
             self._announcements.append((client, {"event": "loaded", "id": request.id, "model": name}))
             return {"id": request.id, "ok": True, "t": self.next_frame_time(), "model": name,
-                    "parameters": len(head.names)}
+                    "parameter_count": len(head.names)}
 
     def model_path(self, name: str, request_id: RequestId = None) -> Path:
         """The file ``name`` (checked by the protocol: relative, no ``..``) in the first served folder that has it.

@@ -35,6 +35,7 @@ from engine.live.protocol import (
     SCHEMA_VERSION,
 )
 from tests.engine.fuzz_support import FUZZ
+from tests.engine.serve_schema_checks import schema_checked  # noqa: F401  (a fixture)
 
 PROJECT_ROOT = Path(__file__).resolve().parents[2]
 FRAME_MS = 1000.0 / 60.0
@@ -42,6 +43,8 @@ SENTENCE = "Hyvää päivää mitä kuuluu"
 needs_festival = pytest.mark.skipif(shutil.which("festival") is None, reason="Festival is not installed")
 #: A located one-line error: ``<message>:1: …``, ``<text>:1: column 3: …``, ``path/x.lib:12: …``.
 LOCATED = re.compile(r"^\S+:\d+: \S")
+
+pytestmark = pytest.mark.usefixtures("schema_checked")
 
 
 @dataclass
@@ -204,6 +207,21 @@ def test_capabilities_name_the_parameters_types_voices_and_schema(client):
     if shutil.which("festival"):
         assert "suo_fi_lj_diphone" in caps["voices"]
     assert caps["clock"]["fps"] == 60
+
+
+def test_every_request_sent_and_message_received_here_is_checked_against_the_schema(client):
+    from tests.engine.serve_schema_checks import COUNTS, check_request, check_server_message
+
+    before = dict(COUNTS)
+    client.state()
+    assert COUNTS["requests"] == before["requests"] + 1
+    assert COUNTS["received"] == before["received"] + 1
+    with pytest.raises(AssertionError, match="breaks the schema"):
+        check_server_message({"id": 1, "ok": "yes"})
+    with pytest.raises(AssertionError, match="breaks the schema"):
+        check_server_message({"event": "danced", "id": 1, "t": 0})
+    with pytest.raises(AssertionError, match="breaks the schema"):
+        check_request({"type": "state", "id": 1, "extra": True})
 
 
 def test_the_shipped_schema_lists_every_request_and_event():

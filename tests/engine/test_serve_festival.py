@@ -20,6 +20,7 @@ import pytest
 from engine.speech.festival import FestivalSynthesizer
 from engine.speech.festival_server import FestivalServerSynthesizer
 from engine.speech.synthesis import SynthesisError
+from tests.engine.serve_schema_checks import schema_checked  # noqa: F401  (a fixture)
 from tests.engine.test_serve import (
     check_gaze_cue_log,
     run_cli,
@@ -28,7 +29,8 @@ from tests.engine.test_serve import (
     stop_server,
 )
 
-pytestmark = pytest.mark.skipif(shutil.which("festival") is None, reason="Festival is not installed")
+pytestmark = [pytest.mark.usefixtures("schema_checked"),
+              pytest.mark.skipif(shutil.which("festival") is None, reason="Festival is not installed")]
 
 #: Several utterances, quotes, a backslash and Latin-1 letters: every path of the script's output.
 TEXT = 'Hyvää päivää! Mitä "kuuluu" \\ tänään? Toinen lause tässä.'

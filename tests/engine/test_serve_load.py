@@ -8,6 +8,7 @@ link to a model outside the folder (``escape.xml``); the shipped head's own fold
 
 from __future__ import annotations
 
+import json
 import re
 from collections.abc import Iterator
 from pathlib import Path
@@ -16,9 +17,12 @@ import pytest
 
 from engine.live.client import LiveClient, LiveError
 from engine.paths import default_model_path
+from tests.engine.serve_schema_checks import REQUEST, schema_checked  # noqa: F401  (a fixture)
 from tests.engine.test_serve import LOCATED, Served, run_cli, start_server, stop_server
 
 BROKEN_LINE_TEXT = '<parameter name="head_nod" type="rotation" min="-0.6"'
+
+pytestmark = pytest.mark.usefixtures("schema_checked")
 
 
 @pytest.fixture(scope="module")
@@ -54,7 +58,7 @@ def test_a_model_from_a_served_folder_replaces_the_head_from_the_frame_the_reply
         assert head.state()["values"]["head_turn"] == 0.0
         far = head.command("<commands><HeadNod/></commands>", at=head.state()["t"] + 60_000)
         reply = head.load("people/anna.xml")
-        assert reply["ok"] and reply["model"] == "people/anna.xml" and reply["parameters"] > 10
+        assert reply["ok"] and reply["model"] == "people/anna.xml" and reply["parameter_count"] > 10
         events = [head.next_event(), head.next_event()]
         stopped = next(e for e in events if e["id"] == far["id"])
         loaded = next(e for e in events if e["id"] == reply["id"])
@@ -92,10 +96,20 @@ def test_a_bad_model_file_is_refused_with_its_name_and_line_and_the_head_is_kept
 ])
 def test_nothing_outside_the_served_folders_is_read(server, name, expected):
     with LiveClient(server.url) as head:
-        with pytest.raises(LiveError) as refused:
-            head.request("load", model=name)
-        assert re.search(expected, refused.value.args[0]), refused.value.args[0]
-        assert LOCATED.match(refused.value.args[0])
+        request = {"type": "load", "id": "outside", "model": name}
+        schema_allows = REQUEST.is_valid(request)
+        if not schema_allows:                                  # the schema refuses it too: sent as raw text
+            head.send_raw(json.dumps(request))
+            reply = head.reply_to("outside")
+            assert reply["ok"] is False
+            error = reply["error"]
+        else:
+            with pytest.raises(LiveError) as refused:
+                head.load(name)
+            error = refused.value.args[0]
+        assert schema_allows == (name in ("escape.xml", "missing.xml"))
+        assert re.search(expected, error), error
+        assert LOCATED.match(error)
         assert head.state()["ok"]
 
 

@@ -22,6 +22,7 @@ import pytest
 
 from engine.live.client import LiveClient
 from engine.live.lsl import LOOPBACK_CONFIG, STREAM_NAME, lsl_source_id
+from tests.engine.serve_schema_checks import check_server_message, schema_checked  # noqa: F401  (a fixture)
 from tests.engine.test_serve import (
     check_gaze_cue_log,
     run_cli,
@@ -29,6 +30,8 @@ from tests.engine.test_serve import (
     start_server,
     stop_server,
 )
+
+pytestmark = pytest.mark.usefixtures("schema_checked")
 
 _config_folder = Path(tempfile.mkdtemp(prefix="test-serve-lsl-"))
 (_config_folder / "lsl_api.cfg").write_text(LOOPBACK_CONFIG, encoding="ascii")
@@ -118,6 +121,8 @@ def test_an_inlet_receives_every_event_in_order_stamped_at_its_frame_and_lsl_sta
         stop_server(served)
     assert "Traceback" not in served.stderr()
     check_gaze_cue_log(rows)
+    for marker, _ in markers:                               # each marker an event of the protocol's schema
+        check_server_message(marker)
     assert [(m["event"], m["t"], m.get("word", "")) for m, _ in markers] == \
         [(r["event"], float(r["t"]), r["word"]) for r in rows]
     for marker, timestamp in markers:                       # the LSL clock at the frame: monotonic + ~0 on Linux
