@@ -27,6 +27,7 @@ INSTALLERS: list[str] = [
     "expression_gallery:install",
     "script_panel:install",
     "mocap:install",
+    "capture_import:install",       # File → Import capture stream… (docs/capture-streams.md)
 ]
 
 

@@ -20,7 +20,7 @@ from engine.commands.limits import MAX_FRAMES, MAX_TIME_MS
 from engine.errors import UserError
 from engine.formats.atomic import atomic_write_text
 from engine.model.model import Model
-from engine.timeline.tracks import tracks_csv_text
+from engine.timeline.tracks import TracksTable, tracks_csv_text
 
 OUTPUT_SUFFIXES = (".csv", ".mp4")
 
@@ -62,6 +62,17 @@ def capture_tracks(stream: CaptureStream, model: Model, fps: float | None = None
     for j, name in enumerate(mapped.parameters):
         full[:, tree.names.index(name)] = driven[:, j]
     return mapped, rate, times, full
+
+
+def capture_table(path: str | Path, model: Model, format: str = "auto", fps: float | None = None
+                  ) -> tuple[TracksTable, CaptureStream, Retargeted, float]:
+    """The take as a :class:`~engine.timeline.tracks.TracksTable` (what the workbench's player plays).
+
+    Returns (table, the take as read, its mapping, the frame rate of the table).
+    """
+    stream = read_capture(path, format, fps)
+    mapped, rate, times, values = capture_tracks(stream, model, fps)
+    return TracksTable(times, list(model.parameters.names), values, model, str(path)), stream, mapped, rate
 
 
 def animate_capture(path: str | Path, model: Model, output: str | Path, format: str = "auto",

@@ -303,7 +303,7 @@ def test_saving_adds_to_recent_files_and_the_list_survives_a_restart(window, tmp
 def test_file_menu_lists_the_commands_in_order(window):
     texts = [a.text() for a in window.menus["&File"].actions() if not a.isSeparator()]
     assert texts == ["&New from mesh…", "New head from &photographs…", "&Open model…", "Open &recent", "&Save",
-                     "Save model &as…", "&Export", "&Quit"]
+                     "Save model &as…", "&Export", "Import &capture stream…", "&Quit"]
     assert [a.text() for a in window.menus["&File/&Export"].actions()] == ["&Configuration…", "&glTF…"]
     assert [m.title() for m in window.menuBar().findChildren(type(window.menus["&File"]))
             if m.parent() is window.menuBar()][:4] == ["&File", "&Edit", "&Pose", "&View"]
