@@ -123,6 +123,7 @@ class LandmarkPage(QWizardPage):
     def initializePage(self) -> None:
         """Markers at their first guesses for each photograph chosen anew; kept for one already placed."""
         model = self.session.landmark_head()
+        replaced = False
         for view, canvas in self.canvases.items():
             photo = self.session.photos.get(view)
             self.columns[view].setVisible(photo is not None)
@@ -136,7 +137,9 @@ class LandmarkPage(QWizardPage):
             guess = initial_points(model, view, width, height)
             canvas.set_markers({k: (x, y, True) for k, (x, y) in guess.items()}, self._required(view))
             self._placed_for[view] = photo
-        self.undo_stack.clear()           # steps on markers that are gone would undo nothing
+            replaced = True
+        if replaced:
+            self.undo_stack.clear()       # steps on markers that are gone would undo nothing
 
     def validatePage(self) -> bool:
         problem = self.problem()

@@ -145,6 +145,20 @@ def test_photographs_to_a_textured_speaking_head_in_one_undo_step(head_window, p
         assert len(fit_page.canvases[view].fit_items()) == 3   # joins, crosses, outline
     assert document.model is before and document.undo_stack.count() == steps_before   # nothing until Finish
 
+    # Back to adjust a point: the points and their undo steps are kept, Next fits again
+    placed, steps = page.points(), page.undo_stack.count()
+    wizard.back()
+    assert wizard.currentPage() is page and page.points() == placed and page.undo_stack.count() == steps
+    chin = front.markers["2.1"]
+    start = on_screen(front, chin.pos().x(), chin.pos().y())
+    drag(front, start, start + QPoint(0, 3), qtbot)
+    assert page.undo_stack.undoText() == "Move 2.1"
+    wizard.next()
+    assert fit_page.running and not fit_page.isComplete()
+    qtbot.waitUntil(fit_page.isComplete, timeout=FIT_TIMEOUT_MS)
+    assert wizard.session.fit is not fit and wizard.session.points["front"]["2.1"] != placed["front"]["2.1"]
+    fit = wizard.session.fit
+
     wizard.next()
     result = wizard.result_page
     assert all(not picture.pixmap().isNull() for picture in result.pictures)
