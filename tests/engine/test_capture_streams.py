@@ -263,3 +263,37 @@ def test_cli_bad_files_end_with_one_line_and_status_2(tmp_path, content):
 def test_cli_refuses_an_unknown_output_kind(tmp_path):
     line = assert_user_error(run("capture", "animate", LLF_MOUTH, "-o", tmp_path / "out.gif"))
     assert "out.gif" in line
+
+
+def test_openface_gaze_to_the_subjects_left_turns_both_eyes_there(head):
+    """OpenFace: gaze_angle_x grows as the eyes look to the subject's left (x right in the image)."""
+    mapped = retarget(parse_openface(openface_text([{}, {"gaze_angle_x": 0.3, "gaze_angle_y": -0.2}])), head)
+    values = dict(zip(mapped.parameters, mapped.values[1], strict=True))
+    assert values["eye_left_turn"] == pytest.approx(0.3) and values["eye_right_turn"] == pytest.approx(0.3)
+    assert values["eye_left_raise"] == pytest.approx(0.2)                 # negative y: looking up
+
+
+def test_cli_video_carries_the_audio_given(tmp_path):
+    import wave
+
+    from engine.outputs.video_probe import probe
+
+    source = tmp_path / "take.json"
+    source.write_text(mediapipe_json([{"jawOpen": i / 14} for i in range(15)], step_ms=40.0))
+    sound = tmp_path / "take.wav"
+    with wave.open(str(sound), "wb") as out:
+        out.setnchannels(1)
+        out.setsampwidth(2)
+        out.setframerate(16000)
+        tone = (8000 * np.sin(np.arange(9600) * 2 * np.pi * 440 / 16000)).astype("<i2")
+        out.writeframes(tone.tobytes())
+    video = tmp_path / "take.mp4"
+    result = run("capture", "animate", source, "--audio", sound, "--size", "160x120", "-o", video)
+    assert result.returncode == 0, result.stderr
+    facts = probe(video)
+    assert facts.frames == 15 and facts.audio_duration == pytest.approx(15 / 25, abs=0.03)
+
+
+def test_cli_named_format_that_does_not_fit_is_refused(tmp_path):
+    line = assert_user_error(run("capture", "animate", LLF_MOUTH, "--format", "openface", "-o", tmp_path / "o.csv"))
+    assert "llf_rom_mouth.csv:1:" in line and "OpenFace" in line
