@@ -55,11 +55,13 @@ class PhotoFitWizard(QWizard):
         self.resize(self.size_for_screen())
 
     def size_for_screen(self) -> QSize:
-        screen = self.screen() if self.screen() is not None else None
-        if screen is None:
-            return WANTED_SIZE
-        available = screen.availableGeometry().size() - SCREEN_MARGIN
-        return WANTED_SIZE.boundedTo(available)
+        screen = self.screen()
+        return WANTED_SIZE if screen is None else size_for(screen.availableGeometry().size())
+
+
+def size_for(available: QSize) -> QSize:
+    """The wizard's size on a screen with ``available`` room: :data:`WANTED_SIZE`, smaller if need be."""
+    return WANTED_SIZE.boundedTo(available - SCREEN_MARGIN)
 
 
 def open_photofit_wizard(window: MainWindow) -> PhotoFitWizard:

@@ -205,6 +205,11 @@ class PhotoCanvas(QGraphicsView):
         if self._photo_item is not None:
             self.fitInView(self.scene().sceneRect(), Qt.AspectRatioMode.KeepAspectRatio)
 
+    def zoom_to(self, region: QRectF) -> None:
+        """Show ``region`` of the photograph (pixels) as large as fits, as the wheel would."""
+        self.fitInView(region, Qt.AspectRatioMode.KeepAspectRatio)
+        self._zoomed = True
+
     def resizeEvent(self, event) -> None:
         super().resizeEvent(event)
         if not self._zoomed:

@@ -8,20 +8,25 @@ Writes ``docs/images/photofit/wizard-*.png``.
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 from PIL import Image
-from PySide6.QtCore import QRect
+from PySide6.QtCore import QRect, QRectF
 
 import engine
+from engine.photofit.points import REQUIRED_FRONT
 from tests.workbench.test_photofit_wizard import FIT_TIMEOUT_MS, open_wizard, photographs  # noqa: F401
 from workbench.layouts import fresh_window_size
+from workbench.photofit_wizard_landmarks import MoveMarker
 from workbench.script_panel.jobs import wait_for_all
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "images" / "photofit"
 LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))
 WIZARD_SIZE = (1240, 720)
+FACE = QRectF(120, 30, 220, 210)          # the astronaut's face, pixels: zoomed to as the wheel would
 
 
 @pytest.fixture
@@ -48,10 +53,24 @@ def test_screenshots_of_a_real_portrait_and_a_two_view_fit(head_window, photogra
     shoot(wizard, qtbot, "wizard-photos.png")
     wizard.next()
     shoot(wizard, qtbot, "wizard-landmarks-start.png")
-    assert wizard.landmark_page.load(DOCS / "astronaut_points.json")
+    page = wizard.landmark_page
+    front = page.canvases["front"]
+    placed_by_eye = json.loads((DOCS / "astronaut_points.json").read_text())["front"]
+    for key in REQUIRED_FRONT:                      # the six red points dragged to where they were placed by eye
+        marker = front.markers[key]
+        page.undo_stack.push(MoveMarker(front, key, (marker.pos().x(), marker.pos().y()), tuple(placed_by_eye[key])))
+    page.place_button.click()
+    front.zoom_to(FACE)        # the face, as the wheel zooms to it
+    shoot(wizard, qtbot, "wizard-landmarks-placed.png")
+    others = [k for k in placed_by_eye if k not in REQUIRED_FRONT]
+    d = np.array([np.subtract(front.state()[k][:2], placed_by_eye[k]) for k in others])
+    print(f"astronaut: Place the rest puts {len(others)} points {np.sqrt((d ** 2).sum(axis=1).mean()):.1f} px RMS "
+          "from where they were placed by eye")
+    assert page.load(DOCS / "astronaut_points.json")
     shoot(wizard, qtbot, "wizard-landmarks.png")
     wizard.next()
     qtbot.waitUntil(wizard.fit_page.isComplete, timeout=FIT_TIMEOUT_MS)
+    wizard.fit_page.canvases["front"].zoom_to(FACE)
     shoot(wizard, qtbot, "wizard-fit.png")
     wizard.next()
     written = shoot(wizard, qtbot, "wizard-result.png")
