@@ -37,14 +37,18 @@ ARKIT_TABLE: list[Entry] = [
     *_sides("mouthStretch{Side}", "AU20_{side}", 1.0, "lip stretcher, AU20"),
     *_sides("mouthPress{Side}", "AU24_{side}", 1.0, "lip pressor, AU24"),
     *_sides("mouthLowerDown{Side}", "AU16_{side}", 1.0, "lower lip depressor, AU16"),
-    *_sides("mouthUpperUp{Side}", "AU10_{side}", 1.0, "upper lip raiser, AU10"),
-    *_sides("mouthUpperUp{Side}", "AU10_middle", 0.5, "the middle of the upper lip rises with either side"),
-    ("mouthShrugLower", "AU17", 1.0, "chin raiser AU17 pushes the lower lip up"),
-    ("mouthPucker", "lip_protrude", 1.0, "pucker (AU18) pushes the lips forward"),
-    ("mouthPucker", "mouth_widen", -0.4, "and narrows the mouth"),
-    ("mouthFunnel", "lip_protrude", 0.6, "funneler (AU22) pushes the lips forward, less than a pucker"),
+    *_sides("mouthUpperUp{Side}", "AU10_{side}", 1.0, "upper lip raiser, AU10 (fit to the reference pose: 0.99)"),
+    ("mouthShrugLower", "lower_lip_raise", 1.0, "the lower lip pushed up (fit to the reference pose: 1.05)"),
+    ("mouthShrugLower", "AU17", 0.3, "by the chin raiser AU17 (fit: 0.29)"),
+    ("mouthShrugUpper", "AU10_middle", 0.8, "the middle of the upper lip rises (fit: 0.83)"),
+    ("mouthShrugUpper", "AU17", 0.2, "with the chin pushing up (fit: 0.17)"),
+    ("mouthPucker", "lip_protrude", 1.0, "pucker (AU18) pushes the lips forward (fit: 0.99)"),
+    ("mouthFunnel", "lip_protrude", 0.5, "funneler (AU22) pushes the lips forward (fit: 0.48)"),
+    *_sides("mouthFunnel", "AU16_{side}", 0.5, "and parts them, the lower lip down (fit: 0.50, 0.48)"),
 ]
-"""ARKit / MediaPipe blendshapes (both name the same 52 shapes)."""
+"""ARKit / MediaPipe blendshapes (both name the same 52 shapes). Where a blendshape needs more than one
+parameter, the weights are a non-negative least-squares fit of those parameters' displacements to the
+default head's own ARKit reference pose of that shape (``engine.fitting.reference_poses``), rounded."""
 
 ARKIT_LOST = {
     "jawForward": "the head has no jaw thrust", "jawLeft": "the head has no sideways jaw",
@@ -53,7 +57,6 @@ ARKIT_LOST = {
     "mouthLeft": "the head has no sideways mouth", "mouthRight": "the head has no sideways mouth",
     "mouthDimpleLeft": "dimpler AU14 is not on the head", "mouthDimpleRight": "dimpler AU14 is not on the head",
     "mouthRollLower": "lip suck AU28 is not on the head", "mouthRollUpper": "lip suck AU28 is not on the head",
-    "mouthShrugUpper": "no parameter raises the upper lip with the lower",
     "cheekPuff": "the head has no cheek puffer (AU34)", "tongueOut": "the head's tongue does not protrude",
 }
 """Blendshapes with no parameter, and why (warned about when a take uses them)."""

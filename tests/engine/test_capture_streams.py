@@ -6,12 +6,14 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from engine.capture.arkit_names import ARKIT_BLENDSHAPES
 from engine.capture.live_link_face import parse_live_link_face, read_live_link_face
+from engine.capture.mapping_tables import ARKIT_LOST
 from engine.capture.mediapipe_blendshapes import parse_mediapipe
 from engine.capture.openface import parse_openface
 from engine.capture.readers import detect_format_of_text, read_capture
 from engine.capture.retarget import retarget
-from engine.capture.stream import CaptureFileError
+from engine.capture.stream import CaptureFileError, CaptureStream
 from engine.timeline.tracks import read_tracks_csv
 from tests.engine.capture_stream_files import (
     LLF_EYES,
@@ -297,3 +299,30 @@ def test_cli_video_carries_the_audio_given(tmp_path):
 def test_cli_named_format_that_does_not_fit_is_refused(tmp_path):
     line = assert_user_error(run("capture", "animate", LLF_MOUTH, "--format", "openface", "-o", tmp_path / "o.csv"))
     assert "llf_rom_mouth.csv:1:" in line and "OpenFace" in line
+
+
+MAPPED_SHAPES = [s for s in ARKIT_BLENDSHAPES if s not in ARKIT_LOST]
+
+
+@pytest.mark.parametrize("shape", MAPPED_SHAPES)
+def test_each_blendshape_moves_the_head_as_the_heads_own_reference_pose_of_it(head, shape):
+    """The default head ships an artist's pose for each ARKit shape: the mapping at 1 must move the face the
+    same way (cosine of the displacement fields), on the same side, by about as much (least-squares scale)."""
+    from engine.fitting.reference_poses import reference_pose
+    from engine.paths import reference_poses_path
+
+    if not reference_poses_path().exists():
+        pytest.skip("the default head's reference poses are not built")
+    take = CaptureStream("one.csv", "arkit", np.array([0.0]),
+                         {s: np.array([1.0 if s == shape else 0.0]) for s in ARKIT_BLENDSHAPES})
+    mapped = retarget(take, head)
+    moved = (head.deform(dict(zip(mapped.parameters, mapped.values[0], strict=True))) - head.deform()).ravel()
+    reference = reference_pose(shape).ravel()
+    cosine = moved @ reference / np.linalg.norm(moved) / np.linalg.norm(reference)
+    assert cosine >= 0.7
+    mirror = shape.replace("Left", "@").replace("Right", "Left").replace("@", "Right")
+    if mirror != shape:
+        other = reference_pose(mirror).ravel()
+        assert cosine > moved @ other / np.linalg.norm(moved) / np.linalg.norm(other) + 0.5
+    if not shape.startswith("eyeLook"):          # eye turns follow the recorded angles (docs/capture-streams.md)
+        assert 0.8 <= moved @ reference / (moved @ moved) <= 1.25
