@@ -9,11 +9,14 @@ release check runs 10,000, ``docs/capture-streams.md``).
 
 from __future__ import annotations
 
+import json
 from functools import cache
 
 import numpy as np
 from hypothesis import given
+from hypothesis import strategies as st
 
+from engine.capture.arkit_names import ARKIT_BLENDSHAPES
 from engine.capture.live_link_face import parse_live_link_face
 from engine.capture.mediapipe_blendshapes import parse_mediapipe
 from engine.capture.openface import parse_openface
@@ -97,3 +100,34 @@ def test_mediapipe_csv_reader_survives_mutations(text):
 
 def test_deeply_nested_json_is_refused_not_a_recursion_error():
     _check(lambda: parse_mediapipe("[" * 100_000 + "]" * 100_000, NAME))
+
+
+_ANY_VALUE = st.one_of(st.none(), st.booleans(), st.integers(-10**30, 10**30), st.floats(allow_nan=True),
+                       st.text(max_size=5), st.just([]), st.just({}))
+_SCORE = st.one_of(st.floats(0, 1), _ANY_VALUE)
+_NAME = st.one_of(st.sampled_from([*ARKIT_BLENDSHAPES, "_neutral"]), st.text(max_size=8), _ANY_VALUE)
+
+
+@st.composite
+def _face(draw):
+    names = draw(st.one_of(st.just([*ARKIT_BLENDSHAPES, "_neutral"]), st.lists(_NAME, max_size=60)))
+    categories = [{draw(st.sampled_from(["categoryName", "category_name", "name"])): n, "score": draw(_SCORE)}
+                  for n in names]
+    return draw(st.sampled_from([{"categories": categories}, categories]))
+
+
+_MATRIX = st.one_of(st.lists(st.one_of(st.floats(-2, 2), _ANY_VALUE), min_size=16, max_size=16)
+                    .map(lambda d: {"rows": 4, "columns": 4, "data": d}),
+                    st.lists(st.lists(st.floats(allow_nan=True), min_size=4, max_size=4), min_size=4, max_size=4),
+                    _ANY_VALUE)
+_FRAME = st.fixed_dictionaries({"timestampMs": st.one_of(st.floats(0, 1e4), _ANY_VALUE),
+                                "faceBlendshapes": st.one_of(st.lists(_face(), max_size=2), _ANY_VALUE)},
+                               optional={"facialTransformationMatrixes": st.lists(_MATRIX, max_size=2)})
+
+
+@FUZZ
+@given(st.one_of(st.lists(_FRAME, max_size=4), st.fixed_dictionaries({"frames": st.lists(_FRAME, max_size=4)}),
+                 _ANY_VALUE))
+def test_mediapipe_json_reader_survives_hostile_json_documents(document):
+    """Well-formed JSON with every field of the wrong type, out of range, missing or doubled."""
+    _check(lambda: parse_mediapipe(json.dumps(document), NAME))
