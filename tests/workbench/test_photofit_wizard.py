@@ -18,7 +18,7 @@ import pytest
 from PIL import Image
 from PySide6.QtCore import QPoint, QRect, QSize, Qt
 from PySide6.QtTest import QTest
-from PySide6.QtWidgets import QWizard
+from PySide6.QtWidgets import QFileDialog, QWizard
 
 import engine
 from engine.outputs.render import render_model
@@ -83,7 +83,7 @@ def drag(canvas, start: QPoint, end: QPoint, qtbot) -> None:
     QTest.mouseRelease(viewport, Qt.MouseButton.LeftButton, Qt.KeyboardModifier.NoModifier, end)
 
 
-def test_photographs_to_a_textured_speaking_head_in_one_undo_step(head_window, photographs, qtbot):
+def test_photographs_to_a_textured_speaking_head_in_one_undo_step(head_window, photographs, qtbot, monkeypatch):
     window = head_window
     document = window.document
     before, steps_before = document.model, document.undo_stack.count()
@@ -178,6 +178,12 @@ def test_photographs_to_a_textured_speaking_head_in_one_undo_step(head_window, p
     assert window.script_panel.result.request.model is fit.head
     assert window.player.duration > 0.5
     window.player.stop()
+
+    # File → Save model as… writes it with its texture
+    target = photographs / "saved" / "person.xml"
+    monkeypatch.setattr(QFileDialog, "getSaveFileName", staticmethod(lambda *a, **k: (str(target), "")))
+    window.actions_by_id["file.save_as"].trigger()
+    assert [image.name for image in engine.load_model(target).texture.images] == ["photo"]
 
     window.undo()
     assert document.model is before
