@@ -309,3 +309,16 @@ def test_place_the_rest_puts_the_unmoved_points_near_their_places(head_window, p
     page.undo_stack.undo()
     assert error(front.state()) == pytest.approx(after)
     wizard.reject()
+
+
+def test_a_model_of_another_mesh_gets_the_default_heads_landmarks(window, photographs, qtbot):
+    """The synthetic head has none of the default head's landmarks: the wizard places the default head's."""
+    from workbench.identity_panel_heads import default_head
+
+    wizard = open_wizard(window, qtbot)
+    assert wizard.session.landmark_head() is default_head()
+    assert wizard.photos_page.choose("front", photographs / "front.png")
+    wizard.next()
+    assert set(wizard.landmark_page.canvases["front"].markers) == set(default_head().landmarks)
+    wizard.reject()
+    assert window.document.undo_stack.count() == 0
