@@ -34,7 +34,7 @@ import numpy as np
 
 from engine.capture.arkit_names import ARKIT_BLENDSHAPES, canonical_blendshape
 from engine.capture.stream import CaptureFileError, CaptureStream
-from engine.capture.text_table import check_unique, check_width, number, read_rows, split_rows, whole_number
+from engine.capture.text_table import Rows, check_unique, check_width, number, read_rows, split_rows, whole_number
 
 #: Rotation columns → (channel, sign): the app's frame has Y and Z reversed from the head frame.
 ROTATION_COLUMNS: dict[str, tuple[str, float]] = {
@@ -64,7 +64,7 @@ def parse_live_link_face(text: str, name: str = "<live link face>") -> CaptureSt
     return _parse(split_rows(text), name)
 
 
-def _parse(rows: list[tuple[int, list[str]]], source: str) -> CaptureStream:
+def _parse(rows: Rows, source: str) -> CaptureStream:
     if not rows:
         raise CaptureFileError("empty file: no Live Link Face header", file=source, line=1)
     header_line, header = rows[0]
@@ -76,8 +76,10 @@ def _parse(rows: list[tuple[int, list[str]]], source: str) -> CaptureStream:
     if len(rows) < 2:
         raise CaptureFileError("no frames after the header", file=source, line=header_line)
     stamps: list[tuple[int, int, int, int, float]] = []
+    lines: list[int] = []
     values = np.empty((len(rows) - 1, len(header) - 2))
     for i, (line, cells) in enumerate(rows[1:]):
+        lines.append(line)
         check_width(cells, len(header), source, line)
         stamps.append(_timecode(cells[0], source, line))
         count = whole_number(cells[1], source, line, "BlendShapeCount")
@@ -86,7 +88,7 @@ def _parse(rows: list[tuple[int, list[str]]], source: str) -> CaptureStream:
                                    file=source, line=line)
         for j, cell in enumerate(cells[2:]):
             values[i, j] = number(cell, source, line, header[j + 2])
-    times = _times_ms(stamps, [line for line, _ in rows[1:]], source)
+    times = _times_ms(stamps, lines, source)
     channels: dict[str, np.ndarray] = {}
     for j, (channel, sign) in enumerate(columns):
         if not channel:
@@ -96,7 +98,7 @@ def _parse(rows: list[tuple[int, list[str]]], source: str) -> CaptureStream:
             worst = int(np.argmax(np.abs(column)))
             if abs(column[worst]) > MAX_ANGLE_RAD:
                 raise CaptureFileError(f"column '{header[j + 2]}': {column[worst]:g} is not an angle in radians",
-                                       file=source, line=rows[1 + worst][0])
+                                       file=source, line=lines[worst])
         channels[channel] = sign * column
     return CaptureStream(source, "arkit", times, channels)
 

@@ -237,14 +237,16 @@ def _parse_csv(text: str, source: str, fps: float | None) -> CaptureStream:
     order = [header.index(n) for n in ARKIT_BLENDSHAPES]
     times = np.empty(len(rows) - 1)
     table = np.empty((len(rows) - 1, len(ARKIT_BLENDSHAPES)))
+    lines: list[int] = []
     for i, (line, cells) in enumerate(rows[1:]):
+        lines.append(line)
         check_width(cells, len(header), source, line)
         times[i] = number(cells[0], source, line, header[0])
         table[i] = [number(cells[j], source, line, header[j]) for j in order]
     if CSV_TIME_COLUMNS[header[0]] == "frame":
         assert fps is not None
         times = times * (1000.0 / fps)
-    _check_rising(times, [line for line, _ in rows[1:]], source, header[0])
+    _check_rising(times, lines, source, header[0])
     return _stream(source, times - times[0], table, [])
 
 

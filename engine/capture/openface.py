@@ -32,7 +32,7 @@ from pathlib import Path
 import numpy as np
 
 from engine.capture.stream import CaptureFileError, CaptureStream
-from engine.capture.text_table import check_unique, check_width, number, read_rows, split_rows, whole_number
+from engine.capture.text_table import Rows, check_unique, check_width, number, read_rows, split_rows, whole_number
 
 FIRST_COLUMNS = ["frame", "face_id", "timestamp", "confidence", "success"]
 KNOWN_COLUMN = re.compile(r"gaze_[01]_[xyz]|gaze_angle_[xy]|eye_lmk_[xyXYZ]_\d{1,4}|pose_[TR][xyz]|[xyXYZ]_\d{1,4}"
@@ -56,7 +56,7 @@ def parse_openface(text: str, name: str = "<openface>", fps: float | None = None
     return _parse(split_rows(text), name, fps)
 
 
-def _parse(rows: list[tuple[int, list[str]]], source: str, fps: float | None) -> CaptureStream:
+def _parse(rows: Rows, source: str, fps: float | None) -> CaptureStream:
     if not rows:
         raise CaptureFileError("empty file: no OpenFace header", file=source, line=1)
     header_line, header = rows[0]

@@ -18,7 +18,9 @@ engine.capture.stream.CaptureFileError: take.csv:2: column 'x': 'nan' is not a f
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from pathlib import Path
+from typing import overload
 
 from engine.capture.stream import CaptureFileError
 from engine.formats.text_files import read_bounded_text
@@ -27,19 +29,45 @@ MAX_CAPTURE_BYTES = 500_000_000
 """The largest capture table read (500 MB: an OpenFace table with landmarks of an hour of video)."""
 
 
-def read_rows(path: str | Path) -> list[tuple[int, list[str]]]:
+def read_rows(path: str | Path) -> Rows:
     """The non-blank lines of ``path`` as (line number, stripped cells)."""
     text = read_bounded_text(path, limit=MAX_CAPTURE_BYTES, error=CaptureFileError, what="capture file")
     return split_rows(text)
 
 
-def split_rows(text: str) -> list[tuple[int, list[str]]]:
-    """The non-blank lines of ``text`` as (line number, stripped cells)."""
-    rows = []
-    for number_, line in enumerate(text.splitlines(), start=1):
-        if line.strip():
-            rows.append((number_, [cell.strip() for cell in line.split(",")]))
-    return rows
+def split_rows(text: str) -> Rows:
+    """The non-blank lines of ``text`` as (line number, stripped cells), split when a row is looked at."""
+    return Rows([(n, line) for n, line in enumerate(text.splitlines(), start=1) if line.strip()])
+
+
+class Rows(Sequence[tuple[int, list[str]]]):
+    """Numbered lines whose cells are split on access: an hour of OpenFace output with landmarks
+    (100,000 rows of 700 cells) is never held as 70 million strings at once."""
+
+    def __init__(self, lines: list[tuple[int, str]]):
+        self._lines = lines
+
+    def __len__(self) -> int:
+        return len(self._lines)
+
+    @overload
+    def __getitem__(self, index: int) -> tuple[int, list[str]]: ...
+    @overload
+    def __getitem__(self, index: slice) -> Rows: ...
+
+    def __getitem__(self, index: int | slice) -> tuple[int, list[str]] | Rows:
+        if isinstance(index, slice):
+            return Rows(self._lines[index])
+        number_, line = self._lines[index]
+        return number_, [cell.strip() for cell in line.split(",")]
+
+    def __eq__(self, other: object) -> bool:
+        return list(self) == other if isinstance(other, list) else NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return repr(list(self))
 
 
 def number(cell: str, source: str, line: int, column: str) -> float:
