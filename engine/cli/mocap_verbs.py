@@ -1,4 +1,4 @@
-"""The ``mocap`` verbs: ``mocap import``, ``mocap pca``, ``mocap apply`` (§3.1).
+"""The ``mocap`` verbs: ``mocap import``, ``mocap pca``, ``mocap apply`` (§3.1), ``mocap animate``.
 
 Each step is one ``add_<step>(steps)``
 function that adds its sub-parser and sets ``run``; :data:`STEPS` lists them.
@@ -8,6 +8,8 @@ function that adds its sub-parser and sets ``run``; :data:`STEPS` lists them.
 ...       "-o", "take1.h5"])                                              # doctest: +SKIP
 >>> main(["mocap", "pca", "take1.h5", "--select", "V", "C", "--plot", "pcs.png", "-o", "art.h5"])  # doctest: +SKIP
 >>> main(["mocap", "apply", "art.h5", "--held-out", "take1.h5", "-o", "head-pca.xml"])  # doctest: +SKIP
+>>> main(["mocap", "animate", "take1.h5", "--articulation", "art.h5", "--audio", "take1.wav",
+...       "--head-motion", "-o", "take1.mp4"])                            # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -17,7 +19,15 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from engine.cli.common import add_model_option, load_model_argument, non_negative, positive_int, positive_number
+from engine.cli.common import (
+    VIEW_NAMES,
+    add_model_option,
+    load_model_argument,
+    non_negative,
+    positive_int,
+    positive_number,
+    size,
+)
 from engine.errors import UserError
 
 SESSION_SUFFIXES = (".h5", ".hdf5")
@@ -124,7 +134,30 @@ def add_apply(steps: Any) -> None:
     p.set_defaults(run=run_apply)
 
 
-STEPS = [add_import, add_pca, add_apply]
+def add_animate(steps: Any) -> None:
+    p = steps.add_parser("animate", help="a session drives the face through its articulation components",
+                         description="Fit the articulation components to every frame's markers, optionally turn "
+                                     "the head as the recording's head moved, and write the tracks table (.csv) "
+                                     "or a video (.mp4) with the take's sound; report, per marker, the RMS "
+                                     "distance between the recording and the animated face. "
+                                     "See docs/mocap-pca.md.")
+    p.add_argument("session", metavar="SESSION.h5", help="session from 'mocap import'")
+    p.add_argument("--articulation", required=True, metavar="ARTICULATION.h5", help="file from 'mocap pca'")
+    add_model_option(p)
+    p.add_argument("--prefix", default=None, metavar="P",
+                   help="component parameter names are P1 … PN (default 'pca', as 'mocap apply' names them)")
+    p.add_argument("--head-motion", action="store_true",
+                   help="turn, nod and tilt the head as the recording's head moved (from its first aligned frame)")
+    p.add_argument("--audio", default=None, metavar="TAKE.wav", help="the take's sound, for a video")
+    p.add_argument("--audio-offset", type=_finite, default=0.0, metavar="MS",
+                   help="when the sound's first sample plays relative to the first frame, ms (positive: later)")
+    p.add_argument("--size", type=size, default=(640, 480), metavar="WxH", help="video size (default 640x480)")
+    p.add_argument("--view", choices=VIEW_NAMES, default="front", help="camera for the video (default front)")
+    p.add_argument("-o", "--output", required=True, metavar="OUT.(mp4|csv)", help="tracks table or video")
+    p.set_defaults(run=run_animate)
+
+
+STEPS = [add_import, add_pca, add_apply, add_animate]
 
 
 def run_import(args: argparse.Namespace) -> int:
@@ -263,3 +296,36 @@ def _reference_frame(text: str) -> str | int:
         return int(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"'{text}' is not first, mean or a frame number") from None
+
+
+def run_animate(args: argparse.Namespace) -> int:
+    from engine.mocap.animate import animate_session, check_output, write_session_animation
+    from engine.mocap.articulation_file import load_articulation_file
+    from engine.mocap.session import load_session
+
+    if args.audio is None and args.audio_offset != 0.0:
+        raise UserError("--audio-offset needs --audio")
+    check_output(args.output, args.audio)
+    model = load_model_argument(args.model)
+    session = load_session(args.session)
+    art = load_articulation_file(args.articulation)
+    animation = animate_session(session, art, model, head_motion=args.head_motion, prefix=args.prefix)
+    out = write_session_animation(animation, args.output, audio=args.audio, audio_offset_ms=args.audio_offset,
+                                  size=args.size, view=args.view)
+    for warning in animation.applied.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    print(animation.report(), end="")
+    print(f"wrote {out}")
+    return 0
+
+
+def _finite(text: str) -> float:
+    import math
+
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"'{text}' is not a finite number")
+    return value

@@ -66,8 +66,6 @@ def reconstruct_held_out(model: Model, applied: AppliedArticulation, art: Articu
     own reference frame: pass ``register=True`` to first move it rigidly into
     the analysed recording's coordinates (:func:`register_recording`).
     """
-    from engine.mocap.synthetic import model_at_landmarks
-
     markers = [str(m) for m in markers]
     absent = [m for m in applied.markers if m not in markers]
     if absent:
@@ -79,30 +77,8 @@ def reconstruct_held_out(model: Model, applied: AppliedArticulation, art: Articu
         rotation, translation = register_recording(art, markers, x)
         x = x @ rotation.T + translation
     x = x[:, [markers.index(m) for m in applied.markers]]
-    target = applied.to_model(x)                                            # (F, m, 3) model mm
-    sub = model_at_landmarks(model, applied.markers)                        # exact at these vertices, fast
-    rest = sub.vertices
-    basis = np.stack([sub.deform({n: 1.0}) - rest for n in applied.names])  # (C, m, 3): linear leaves
-    deformer = sub.deformer()
-    order = {n: i for i, n in enumerate(sub.parameters.names)}
-    base = sub.values_array()
-    errors = np.full(x.shape[:2], np.nan)
-    rest_err = np.full(x.shape[:2], np.nan)
-    fitted = np.full((len(x), len(applied.names)), np.nan)
-    A = basis.reshape(len(applied.names), -1).T
-    for f in range(len(x)):
-        ok = np.isfinite(target[f]).all(axis=1)
-        if not ok.any():
-            continue
-        rows = np.repeat(ok, 3)
-        v = np.linalg.lstsq(A[rows], (target[f] - rest).reshape(-1)[rows], rcond=None)[0]
-        fitted[f] = v
-        values = base.copy()
-        for name, value in zip(applied.names, v, strict=True):
-            values[order[name]] = value
-        moved = deformer.deform(values)
-        errors[f, ok] = np.linalg.norm(moved[ok] - target[f, ok], axis=1)
-        rest_err[f, ok] = np.linalg.norm(rest[ok] - target[f, ok], axis=1)
+    fit = fit_frames(model, applied, applied.to_model(x))
+    errors, rest_err, fitted = fit.errors, fit.rest_errors, fit.values
     errors /= applied.scale
     rest_err /= applied.scale
     frames = np.isfinite(errors).any(axis=1)
@@ -118,6 +94,49 @@ def reconstruct_held_out(model: Model, applied: AppliedArticulation, art: Articu
         per_frame_rms_mm=np.sqrt(np.nanmean(errors[frames] ** 2, axis=1)), n_frames=int(frames.sum()),
         rest_rms_mm=float(np.sqrt(np.nanmean(rest_err ** 2))), pca_rms_mm=float(np.sqrt(np.nanmean(pca_err ** 2))),
         values=fitted)
+
+
+@dataclass
+class FrameFit:
+    """Per-frame least-squares values of the applied parameters, and the misfit at the landmarks (model mm)."""
+
+    values: np.ndarray
+    """(F, C) values of :attr:`AppliedArticulation.names`; NaN in frames with no marker present."""
+    errors: np.ndarray
+    """(F, m) distance between the deformed landmark and its marker; NaN where the marker is missing."""
+    rest_errors: np.ndarray
+    """(F, m) the same distance with the model at rest."""
+
+
+def fit_frames(model: Model, applied: AppliedArticulation, target: np.ndarray) -> FrameFit:
+    """Fit the applied parameters frame by frame to ``target`` ((F, m, 3) model mm, the columns of
+    :attr:`AppliedArticulation.markers`, NaN where missing), from the markers each frame has."""
+    from engine.mocap.synthetic import model_at_landmarks
+
+    sub = model_at_landmarks(model, applied.markers)                        # exact at these vertices, fast
+    rest = sub.vertices
+    basis = np.stack([sub.deform({n: 1.0}) - rest for n in applied.names])  # (C, m, 3): linear leaves
+    deformer = sub.deformer()
+    order = {n: i for i, n in enumerate(sub.parameters.names)}
+    base = sub.values_array()
+    errors = np.full(target.shape[:2], np.nan)
+    rest_err = np.full(target.shape[:2], np.nan)
+    fitted = np.full((len(target), len(applied.names)), np.nan)
+    A = basis.reshape(len(applied.names), -1).T
+    for f in range(len(target)):
+        ok = np.isfinite(target[f]).all(axis=1)
+        if not ok.any():
+            continue
+        rows = np.repeat(ok, 3)
+        v = np.linalg.lstsq(A[rows], (target[f] - rest).reshape(-1)[rows], rcond=None)[0]
+        fitted[f] = v
+        values = base.copy()
+        for name, value in zip(applied.names, v, strict=True):
+            values[order[name]] = value
+        moved = deformer.deform(values)
+        errors[f, ok] = np.linalg.norm(moved[ok] - target[f, ok], axis=1)
+        rest_err[f, ok] = np.linalg.norm(rest[ok] - target[f, ok], axis=1)
+    return FrameFit(fitted, errors, rest_err)
 
 
 def register_recording(art: Articulation, markers: Sequence[str], positions: npt.ArrayLike,
