@@ -1,6 +1,6 @@
 """The live service over loopback (issue 21), headless: how soon a request shows on the frame clock.
 
-    .venv/bin/python benchmarks/bench_serve.py [--sets 300] [--says 5] [--json out.json]
+    .venv/bin/python benchmarks/bench_serve.py [--sets 300] [--says 5] [--festival-server] [--lsl] [--json out.json]
 
 * ``set`` → the frame that shows it: the client notes ``time.monotonic()`` before sending, the server
   names the frame (``applied`` event, ``t``), and that frame's moment on the same clock is
@@ -9,6 +9,10 @@
 * ``say`` → its first audio sample (``speech_start``: sample 0 is presented at that frame), beside
   Festival's own time for the same text synthesized in this process (``FestivalSynthesizer``).
 * pipelined ``state`` requests answered per second on one connection.
+* ``--festival-server``: the same ``say`` measure with ``serve --festival`` pointing at a
+  ``festival --server`` this script starts on 127.0.0.1, beside that server's own time for the text.
+* ``--lsl``: ``serve --lsl`` (its loopback-only liblsl configuration; this process uses the same),
+  and how long after its frame moment (the marker's timestamp) each marker reaches an inlet here.
 
 Real server in a subprocess (``artificial-person serve --headless --port 0``), real Festival.
 """
@@ -17,7 +21,9 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import re
+import signal
 import statistics
 import subprocess
 import sys
@@ -39,9 +45,9 @@ def percentile(values: list[float], q: float) -> float:
     return ordered[min(len(ordered) - 1, round(q / 100.0 * (len(ordered) - 1)))]
 
 
-def start_server() -> tuple[subprocess.Popen, str]:
-    process = subprocess.Popen([sys.executable, "-m", "engine", "serve", "--headless", "--port", "0"], cwd=ROOT,
-                               stdout=subprocess.PIPE, text=True)
+def start_server(*options: str) -> tuple[subprocess.Popen, str]:
+    process = subprocess.Popen([sys.executable, "-m", "engine", "serve", "--headless", "--port", "0", *options],
+                               cwd=ROOT, stdout=subprocess.PIPE, text=True)
     assert process.stdout is not None
     line = process.stdout.readline()
     match = re.search(r"ws://\S+", line)
@@ -67,10 +73,31 @@ def bench_set(head: LiveClient, count: int) -> dict[str, float]:
             "set_to_applied_event_p95_ms": percentile(to_event, 95)}
 
 
-def bench_say(head: LiveClient, count: int) -> dict[str, float]:
-    from engine.speech.festival import FestivalSynthesizer
+def start_festival_server() -> tuple[subprocess.Popen, int]:
+    """``festival --server`` on 127.0.0.1 and a free port (Festival admits only localhost by default)."""
+    import socket
 
-    festival = FestivalSynthesizer()
+    with socket.socket() as probe:
+        probe.bind(("127.0.0.1", 0))
+        port = int(probe.getsockname()[1])
+    process = subprocess.Popen(["festival", f"(set! server_port {port})", "--server"], stdin=subprocess.DEVNULL,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
+    deadline = time.monotonic() + 60
+    while True:
+        try:
+            socket.create_connection(("127.0.0.1", port), timeout=1).close()
+            return process, port
+        except OSError:
+            if process.poll() is not None or time.monotonic() > deadline:
+                raise SystemExit("festival --server did not start") from None
+            time.sleep(0.1)
+
+
+def bench_say(head: LiveClient, count: int, festival_port: int | None = None) -> dict[str, float]:
+    from engine.speech.festival import FestivalSynthesizer
+    from engine.speech.festival_server import FestivalServerSynthesizer
+
+    festival = FestivalSynthesizer() if festival_port is None else FestivalServerSynthesizer("127.0.0.1", festival_port)
     served, own = [], []
     for i in range(count):
         text = TEXTS[i % len(TEXTS)]
@@ -100,22 +127,62 @@ def bench_pipelined_state(head: LiveClient, count: int) -> dict[str, float]:
     return {"pipelined_state_per_s": count / (time.monotonic() - started)}
 
 
+def bench_lsl_markers(head: LiveClient, url: str, count: int) -> dict[str, float]:
+    """Markers of ``count`` sets: inlet arrival (LSL clock) minus the marker's timestamp (the frame's moment)."""
+    import pylsl
+
+    from engine.live.lsl import lsl_source_id
+
+    host, port = url.removeprefix("ws://").rsplit(":", 1)
+    [info] = pylsl.resolve_byprop("source_id", lsl_source_id(host, int(port)), minimum=1, timeout=30)
+    inlet = pylsl.StreamInlet(info)
+    inlet.open_stream(timeout=30)
+    delays = []
+    for i in range(count):
+        head.set({"head_turn": 0.25 if i % 2 else -0.25})
+        sample, stamp = inlet.pull_sample(timeout=30)
+        while sample is not None and json.loads(sample[0])["event"] != "applied":
+            sample, stamp = inlet.pull_sample(timeout=30)
+        delays.append((pylsl.local_clock() - stamp) * 1000.0)
+        time.sleep(0.003 * (i % 7))
+    return {"lsl_marker_after_frame_p50_ms": percentile(delays, 50),
+            "lsl_marker_after_frame_p95_ms": percentile(delays, 95), "lsl_marker_after_frame_max_ms": max(delays)}
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sets", type=int, default=300)
     parser.add_argument("--says", type=int, default=5)
+    parser.add_argument("--festival-server", action="store_true",
+                        help="synthesize through a festival --server started here (serve --festival)")
+    parser.add_argument("--lsl", action="store_true", help="serve --lsl, and measure the markers' delay")
     parser.add_argument("--json", default=None)
     args = parser.parse_args()
-    process, url = start_server()
+    options: list[str] = []
+    festival_process, festival_port = None, None
+    if args.festival_server:
+        festival_process, festival_port = start_festival_server()
+        options += ["--festival", f"127.0.0.1:{festival_port}"]
+    if args.lsl:
+        from engine.live.lsl import use_lsl_config
+
+        use_lsl_config(None)          # loopback-only, for this process and (inherited) the server
+        options.append("--lsl")
+    process, url = start_server(*options)
     try:
         with LiveClient(url) as head:
             head.state()
             results = bench_set(head, args.sets)
-            results.update(bench_say(head, args.says))
+            results.update(bench_say(head, args.says, festival_port))
             results.update(bench_pipelined_state(head, 1000))
+            if args.lsl:
+                results.update(bench_lsl_markers(head, url, min(args.sets, 300)))
     finally:
         process.terminate()
         process.wait(timeout=30)
+        if festival_process is not None:
+            os.killpg(festival_process.pid, signal.SIGTERM)
+            festival_process.wait(timeout=30)
     results["set_to_frame_p95_frames"] = results["set_to_frame_p95_ms"] / FRAME_MS
     for name, value in results.items():
         print(f"{name:34s} {value:10.2f}")

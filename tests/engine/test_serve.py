@@ -321,12 +321,15 @@ def test_a_client_gone_mid_utterance_leaves_the_server_ready(server):
 JSON_LEAF = st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | st.text(max_size=30)
 JSON_VALUE = st.recursive(JSON_LEAF, lambda inner: st.lists(inner, max_size=4)
                           | st.dictionaries(st.text(max_size=10), inner, max_size=4), max_leaves=12)
-FIELD_NAMES = st.sampled_from(["text", "values", "xml", "at", "voice", "target", "id", "type", "x"])
+FIELD_NAMES = st.sampled_from(["text", "values", "xml", "at", "voice", "target", "id", "type", "x", "model"])
+MODEL_NAMES = st.sampled_from(["head.xml", "../head.xml", "/etc/passwd", "head.h5", "missing.xml", "a/../head.xml",
+                               "default-head/head.xml", "..\\head.xml", "C:head.xml", "head.xml\x00.xml"])
 PARAMETERS = st.sampled_from(["jaw_open", "head_turn", "head_nod", "brow_raise", "nope", ""])
 FIELD_VALUES = (JSON_VALUE
                 | st.dictionaries(PARAMETERS, st.floats(-1e4, 1e4) | JSON_LEAF, max_size=3)
                 | st.sampled_from(["<commands><HeadNod/></commands>", "<commands><Blink at='-5'/></commands>",
-                                   "<commands>", "moi <Blink/>", "<HeadNod amplitude='1e999'/> moi"]))
+                                   "<commands>", "moi <Blink/>", "<HeadNod amplitude='1e999'/> moi"])
+                | MODEL_NAMES)
 REQUESTS = st.fixed_dictionaries(
     {"type": st.sampled_from([*REQUEST_TYPES, "Say", "", "x" * 200]), "id": st.integers() | st.text(max_size=140)},
     optional={"f": st.dictionaries(FIELD_NAMES, FIELD_VALUES, max_size=3)})
@@ -343,6 +346,8 @@ WELL_FORMED = st.one_of(
                                                    "<commands><Blink at='100'/><Smile/></commands>"])}),
     st.fixed_dictionaries({"type": st.sampled_from(["stop", "state", "capabilities"]), "id": st.integers(0, 9)},
                           optional={"target": st.integers(0, 9)}),
+    st.fixed_dictionaries({"type": st.just("load"), "id": st.integers(0, 9),
+                           "model": MODEL_NAMES | st.text(max_size=40).map(lambda name: name + ".xml")}),
 ).map(json.dumps)
 MESSAGES = (WELL_FORMED
             | REQUESTS.map(lambda r: json.dumps({**{k: v for k, v in r.items() if k != "f"}, **r.get("f", {})}))
