@@ -32,6 +32,8 @@ ARKIT_TABLE: list[Entry] = [
     *_sides("noseSneer{Side}", "AU9_{side}_nose", 1.0, "nose wrinkler AU9: the head splits it into nose and brow"),
     *_sides("noseSneer{Side}", "AU9_{side}_brow", 1.0, "AU9's pull on the brow"),
     ("jawOpen", "jaw_open", 1.0, "jawOpen 1 = jaw fully dropped; jaw_open 1 is the head's full opening"),
+    ("mouthClose", "jaw_open", -1.0, "lips sealed over the open jaw (the reference poses: jawOpen + mouthClose "
+                                     "= the rest lip gap); the head's lips follow its jaw, so the jaw gives it back"),
     *_sides("mouthSmile{Side}", "AU12_{side}", 1.0, "lip corner puller, AU12"),
     *_sides("mouthFrown{Side}", "AU15_{side}", 1.0, "lip corner depressor, AU15"),
     *_sides("mouthStretch{Side}", "AU20_{side}", 1.0, "lip stretcher, AU20"),
@@ -53,7 +55,6 @@ default head's own ARKit reference pose of that shape (``engine.fitting.referenc
 ARKIT_LOST = {
     "jawForward": "the head has no jaw thrust", "jawLeft": "the head has no sideways jaw",
     "jawRight": "the head has no sideways jaw",
-    "mouthClose": "lips held shut while the jaw drops: no parameter (the lips follow the jaw)",
     "mouthLeft": "the head has no sideways mouth", "mouthRight": "the head has no sideways mouth",
     "mouthDimpleLeft": "dimpler AU14 is not on the head", "mouthDimpleRight": "dimpler AU14 is not on the head",
     "mouthRollLower": "lip suck AU28 is not on the head", "mouthRollUpper": "lip suck AU28 is not on the head",
