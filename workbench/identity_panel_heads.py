@@ -93,6 +93,26 @@ def rig_matches_default(model: engine.Model) -> bool:
     return True
 
 
+def beyond_identity(model: engine.Model, base: engine.Model | None = None) -> str | None:
+    """What a head has that its identity alone (made from ``base``, default: the default head) does not make
+    (a photograph's shape or texture), or ``None``."""
+    from engine.identity import identity_vertices
+
+    images = model.texture is not None and len(model.texture.images) > 0 and not (
+        base is not None and base.texture is not None and len(base.texture.images) > 0)
+    skin = model.vertex_part == model.parts.index("skin") if "skin" in model.parts else np.ones(model.n_vertices, bool)
+    try:
+        shape = identity_vertices(identity_of(model), base)
+    except UserError:
+        return None
+    reshaped = shape.shape != model.vertices.shape or np.abs(shape[skin] - model.vertices[skin]).max() > 1e-6
+    if not (images or reshaped):
+        return None
+    what = " and ".join(w for w, present in (("shape", reshaped), ("texture", images)) if present)
+    return (f"This head's {what} is more than its identity makes (a head fitted to photographs, or reshaped). "
+            "A new identity is made from the default head, without it.")
+
+
 @dataclass
 class _Build:
     """One head being made: from what, for which state of the document, and the undo text."""
@@ -166,12 +186,15 @@ class IdentityHeads(QObject):
             command = stack.command(index)
             if isinstance(command, ReplaceModelCommand) and command.made is model:
                 if index == stack.index() - 1:
-                    return command.base, None
+                    return command.base, beyond_identity(model, command.base)
                 return command.base, ("This head has been edited since it was made (the last "
                                       f"{stack.index() - 1 - index} undo steps). A new identity is made "
                                       "from the head it came from, without those edits.")
-        if stack.index() == 0 and rig_matches_default(model):
+        beyond = beyond_identity(model)
+        if stack.index() == 0 and rig_matches_default(model) and beyond is None:
             return None, None
+        if beyond is not None:
+            return None, beyond
         return None, ("This head has an identity and a rig that differs from the default head's (edited "
                       "weights or parameters). A new identity is made from the default head, without those edits.")
 

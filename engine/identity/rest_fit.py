@@ -98,7 +98,8 @@ def line_fields_with_the_skin(base: Model, head: Model, neighbours: int = 8, beh
     (AU12) then pulled the corners away from the lining and it showed through
     as red spots (seen on fuller lips). Only the lips' red edge within
     ``behind_mm`` of the rim keeps its own motion. Only the fields in
-    ``names`` are changed.
+    ``names`` change, and only the displacements of the lining vertices
+    already in their regions (regions and weights stay the default head's).
     """
     from scipy.spatial import cKDTree
 
@@ -113,6 +114,8 @@ def line_fields_with_the_skin(base: Model, head: Model, neighbours: int = 8, beh
     dist, near = cKDTree(head.vertices[outside]).query(head.vertices[lining], k=neighbours)
     w = 1.0 / np.maximum(dist, 1e-6) ** 2
     w /= w.sum(axis=1, keepdims=True)
+    row_of = np.full(head.n_vertices, -1)
+    row_of[lining] = np.arange(len(lining))
     for p in head.parameters:
         region = head.regions[p.name]
         if p.name not in names or not p.field or region.displacements is None:
@@ -120,11 +123,12 @@ def line_fields_with_the_skin(base: Model, head: Model, neighbours: int = 8, beh
         F = np.zeros((head.n_vertices, 3))
         F[region.indices] = region.weights[:, None] * region.displacements
         followed = np.einsum("mk,mkd->md", w, F[outside[near]])
-        if np.allclose(followed, F[lining]):
-            continue
-        F[lining] = followed
-        moved = np.flatnonzero(np.abs(F).max(axis=1) > 0)
-        head.regions[p.name] = InfluenceRegion(moved, np.ones(len(moved)), F[moved])
+        # the region's vertices and weights stay (an unedited rig stays the default head's): only the
+        # displacements of the lining it already moves change
+        at = np.flatnonzero(np.isin(region.indices, lining) & (region.weights > 0))
+        displacements = region.displacements.copy()
+        displacements[at] = followed[row_of[region.indices[at]]] / region.weights[at, None]
+        head.regions[p.name] = InfluenceRegion(region.indices.copy(), region.weights.copy(), displacements)
     head.changed()
 
 

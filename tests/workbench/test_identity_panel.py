@@ -389,3 +389,39 @@ def test_an_opened_identity_whose_rig_was_edited_is_asked_about(head_window, qtb
     wait_for_head(qtbot, panel)
     assert len(asked) == 1 and "differs from the default head's" in asked[0]
     assert document.model is opened and panel.rows["sex"].value() == 0.5 and panel.rows["age"].value() == 40.0
+
+
+def test_a_head_fitted_to_photographs_is_not_remade_from_its_identity_without_asking(head_window, qtbot):
+    """The photo-fit wizard pushes its head as the document's model; a slider would make a new identity from
+    the default head and drop the photograph's shape and texture: the panel asks first (issue 19)."""
+    from engine.identity import make_identity_head
+    from engine.model.texture import TextureImage
+
+    window = head_window
+    panel = open_panel(window, qtbot)
+    document = window.document
+    fitted = make_identity_head(Identity({"age": 40.0}))
+    skin = np.flatnonzero(fitted.vertex_part == fitted.parts.index("skin"))
+    fitted.vertices = fitted.vertices.copy()
+    fitted.vertices[skin, 0] *= 1.02                                  # the photograph's residual warp
+    fitted.texture.images = [TextureImage("photo", np.full((8, 8, 3), 200, np.uint8))]
+    fitted.changed()
+    document.push(ReplaceModelCommand(document, fitted, "New head from photographs"))   # as the wizard does
+    asked: list[str] = []
+    panel.heads.ask_discard = lambda reason: (asked.append(reason), False)[1]
+    panel.rows["sex"].spin.setValue(1.0)
+    wait_for_head(qtbot, panel)
+    assert len(asked) == 1 and "shape and texture is more than its identity makes" in asked[0]
+    assert document.model is fitted and panel.rows["age"].value() == 40.0
+
+
+def test_a_head_made_here_is_remade_without_asking(head_window, qtbot):
+    window = head_window
+    panel = open_panel(window, qtbot)
+    asked: list[str] = []
+    panel.heads.ask_discard = lambda reason: (asked.append(reason), True)[1]
+    panel.rows["age"].spin.setValue(40.0)
+    wait_for_head(qtbot, panel)
+    panel.rows["sex"].spin.setValue(1.0)
+    wait_for_head(qtbot, panel)
+    assert not asked and window.document.model.identity.values == {"age": 40.0, "sex": 1.0}
