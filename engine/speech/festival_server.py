@@ -34,7 +34,7 @@ from collections.abc import Callable
 
 from engine.speech.festival import FestivalSynthesizer, SynthesisCancelled
 from engine.speech.festival_script import WAVE_FILE_PATTERN
-from engine.speech.synthesis import SynthesisError
+from engine.speech.synthesis import SynthesisError, Utterance
 
 __all__ = ["DEFAULT_PORT", "FestivalServerSynthesizer", "festival_address", "festival_synthesizer", "unstuffed"]
 
@@ -45,6 +45,8 @@ FILE_STUFF_KEY = b"ft_StUfF_key"
 """Festival's end-of-body key (``festival/src/arch/festival/server.cc``, and its C client)."""
 
 _STUFFED_KEY = FILE_STUFF_KEY[:-1] + b"X" + FILE_STUFF_KEY[-1:]
+MAX_REPLY_BYTES = 256 * 1024 * 1024
+"""The most a server's answer to one text may hold (waves and output together); more is refused."""
 _POLL_SECONDS = 0.1
 _CONNECT_SECONDS = 10.0
 
@@ -107,6 +109,26 @@ class FestivalServerSynthesizer(FestivalSynthesizer):
     def executable(self) -> str:
         return f"the Festival server at {self.address}"
 
+    def synthesize(self, text: str, voice: str | None = None) -> Utterance:
+        """As a local Festival's; an error that is not about the text names the server."""
+        try:
+            return super().synthesize(text, voice)
+        except SynthesisCancelled:
+            raise
+        except SynthesisError as exc:
+            raise self._naming_the_server(exc) from None
+
+    def voices(self) -> list[str]:
+        try:
+            return super().voices()
+        except SynthesisError as exc:
+            raise self._naming_the_server(exc) from None
+
+    def _naming_the_server(self, error: SynthesisError) -> SynthesisError:
+        if error.file == "<text>" or self.address in str(error):      # about the text, or already says where
+            return error
+        return SynthesisError(f"{error} (the Festival server at {self.address})")
+
     def _run(self, script: str, want_waves: bool = False) -> tuple[str, str, dict[str, bytes]]:
         """Send ``script`` to the server: (what it printed, "", its waves by the local file names)."""
         expression = f"(begin\n{_PRELUDE}{script}{_RESULT})\n"
@@ -134,7 +156,8 @@ class _ServerReply:
     def __init__(self, connection: socket.socket, synthesizer: FestivalServerSynthesizer):
         self.connection = connection
         self.synthesizer = synthesizer
-        self.buffer = b""
+        self.buffer = bytearray()
+        self.received = 0
         self.deadline = time.monotonic() + synthesizer.timeout
         connection.settimeout(_POLL_SECONDS)
 
@@ -160,11 +183,14 @@ class _ServerReply:
         return printed_string(value.decode("latin-1")), waves
 
     def _take_until(self, end: bytes) -> bytes:
+        searched = 0                                   # the buffer before this is known not to hold ``end``
         while True:
-            found = self.buffer.find(end)
+            found = self.buffer.find(end, searched)
             if found >= 0:
-                taken, self.buffer = self.buffer[:found], self.buffer[found + len(end):]
+                taken = bytes(self.buffer[:found])
+                del self.buffer[:found + len(end)]
                 return taken
+            searched = max(0, len(self.buffer) - len(end) + 1)
             self.buffer += self._receive()
 
     def _receive(self) -> bytes:
@@ -181,6 +207,10 @@ class _ServerReply:
                 continue
             if not data:
                 raise SynthesisError(f"the Festival server at {synthesizer.address} closed the connection")
+            self.received += len(data)
+            if self.received > MAX_REPLY_BYTES:
+                raise SynthesisError(f"the Festival server at {synthesizer.address} sent more than "
+                                     f"{MAX_REPLY_BYTES // (1024 * 1024)} MiB for one text")
             return data
 
 

@@ -139,3 +139,19 @@ def test_say_refuses_an_unreachable_festival_in_one_line(tmp_path):
     result = run_cli("say", "moi", "--festival", f"127.0.0.1:{free_port()}", "-o", str(tmp_path / "moi.wav"))
     assert result.returncode == 2 and result.stderr.count("\n") == 1
     assert "cannot reach the Festival server at 127.0.0.1:" in result.stderr
+
+
+def test_a_cancelled_synthesis_on_the_server_ends_at_once(festival_port):
+    from engine.speech.festival import SynthesisCancelled
+
+    asked = []
+
+    def cancelled() -> bool:
+        asked.append(True)
+        return True
+
+    synthesizer = FestivalServerSynthesizer("127.0.0.1", festival_port, cancelled=cancelled)
+    with pytest.raises(SynthesisCancelled):
+        synthesizer.synthesize(TEXT * 20)
+    assert asked
+    assert FestivalServerSynthesizer("127.0.0.1", festival_port).synthesize("Moi.").words    # the server serves on
