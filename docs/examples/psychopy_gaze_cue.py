@@ -9,6 +9,10 @@ then it looks ahead again. Every event is written to the log with the frame it w
 when it was due (``onset_t``), the audio sample clock (``sample``), and — for this computer's
 clock — the frame's ``time.monotonic()`` moment and when the event reached this script.
 
+The same script works unchanged when the server synthesizes with a Festival server on another
+computer (``serve --headless --festival speech-pc:1314``) or also sends every event to an EEG
+recording as Lab Streaming Layer markers (``serve --headless --lsl``): the tests run it both ways.
+
 In PsychoPy, ``psychopy.core.getTime()`` is ``time.monotonic()``-based on Linux too (PsychoPy's
 ``MonotonicClock``), so ``frame_monotonic_s`` lines up with your own stimulus and response times on
 the same computer. PsychoPy itself is not needed to run this script.

@@ -467,4 +467,3 @@ class LiveServer:
             except UserError:
                 self._voices = []
         return list(self._voices)
-
