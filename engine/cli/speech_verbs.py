@@ -139,6 +139,8 @@ def _text(args: argparse.Namespace) -> tuple[str | None, str]:
             raise UserError("--audio needs --labels (a TextGrid, label file or phones CSV with its phones)")
         if args.voice is not None:
             raise UserError("--voice applies to Festival; a recording speaks with its own voice")
+        if args.festival is not None:
+            raise UserError("--festival applies to synthesis; a recording speaks with its own voice")
     if args.file is None:
         return args.text, "<text>"
     try:

@@ -155,3 +155,11 @@ def test_a_cancelled_synthesis_on_the_server_ends_at_once(festival_port):
         synthesizer.synthesize(TEXT * 20)
     assert asked
     assert FestivalServerSynthesizer("127.0.0.1", festival_port).synthesize("Moi.").words    # the server serves on
+
+
+def test_say_refuses_a_festival_server_beside_a_recording(tmp_path):
+    take, labels = tmp_path / "take.wav", tmp_path / "take.TextGrid"
+    result = run_cli("say", "--audio", str(take), "--labels", str(labels), "--festival", "127.0.0.1:1314",
+                     "-o", str(tmp_path / "out.wav"))
+    assert result.returncode == 2 and result.stderr.count("\n") == 1
+    assert "--festival applies to synthesis" in result.stderr
