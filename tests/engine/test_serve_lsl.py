@@ -10,6 +10,7 @@ and checked to be exactly them.
 
 from __future__ import annotations
 
+import atexit
 import ipaddress
 import json
 import os
@@ -34,6 +35,7 @@ from tests.engine.test_serve import (
 pytestmark = pytest.mark.usefixtures("schema_checked")
 
 _config_folder = Path(tempfile.mkdtemp(prefix="test-serve-lsl-"))
+atexit.register(shutil.rmtree, _config_folder, ignore_errors=True)
 (_config_folder / "lsl_api.cfg").write_text(LOOPBACK_CONFIG, encoding="ascii")
 os.environ["LSLAPICFG"] = str(_config_folder / "lsl_api.cfg")       # before liblsl loads: it reads it once
 pylsl = pytest.importorskip("pylsl")
