@@ -6,8 +6,10 @@ fitted head is projected into each photograph by its camera and sampled
 there. A photograph's weight at a texel is ``max(0, (n · v − g) / (1 − g))²`` (n the
 surface normal, v the direction towards its camera, g = :data:`GRAZING`) where the point is visible (not
 behind the head in that photograph's z-buffer), so the views blend smoothly
-where both see the skin. What no photograph sees fades to the mean colour of
-the skin that was seen. Eyes, teeth and tongue keep their colours.
+where both see the skin. What no photograph sees fades into a fill that
+continues the seen skin smoothly over the head (:func:`skin_fill`: its colour
+and shading where it meets the photographs, no edge, the mean of its borders
+far from them), not one flat colour. Eyes, teeth and tongue keep their colours.
 """
 
 from __future__ import annotations
@@ -26,7 +28,8 @@ ATLAS_SIZE = 1024
 ZBUFFER_SIDE = 600                  # px: the longer side of the visibility buffer
 VISIBLE_SLACK = 2.0                 # mm a texel may lie behind the nearest surface and count as seen
 GRAZING = 0.25                      # n · v below which a photo is not used (its silhouette is unreliable)
-FILL_WEIGHT = 0.04                  # weight of the mean skin colour everywhere (what no photo sees becomes it)
+FILL_WEIGHT = 0.04                  # weight of the fill everywhere (what no photo sees becomes it)
+FILL_SMOOTHNESS = 1.0               # weight of each skin edge's colour difference in the fill
 IMAGE_NAME = "photo"
 ISLAND_PADDING = 4                  # texels each UV island's colours are grown outwards (no seams when filtered)
 
@@ -93,7 +96,8 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
         total += weight
     seen = total > 0.25
     mean = (colour[seen].sum(0) / total[seen].sum()) if seen.any() else np.array([200.0, 160.0, 140.0])
-    texels = (colour + FILL_WEIGHT * mean) / (total + FILL_WEIGHT)[:, None]
+    fill = skin_fill(model, vertices, photos, cameras, normals, occluders, mean)
+    texels = (colour + FILL_WEIGHT * np.einsum("nk,nkd->nd", b, fill[tri_v[t]])) / (total + FILL_WEIGHT)[:, None]
     atlas = np.empty((size, size, 3))
     atlas[:] = mean
     atlas[covered] = texels
@@ -104,6 +108,47 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     face_image[np.unique(tri_f)] = 0
     image = TextureImage(IMAGE_NAME, np.clip(np.round(atlas), 0, 255).astype(np.uint8))
     return ModelTexture(model.texture.corner_uv.copy(), [image], face_image), weights
+
+
+def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarray],
+              cameras: Mapping[str, WeakPerspective], normals: np.ndarray, occluders: np.ndarray,
+              mean: np.ndarray) -> np.ndarray:
+    """(N, 3) colours for every vertex: the photographs' where they see the skin, continued smoothly elsewhere.
+
+    Each skin vertex gets the photographs' colour and weight as a texel does;
+    the fill ``x`` minimises ``Σ_v w_v |x_v − c_v|² + s Σ_edges |x_i − x_j|²``
+    (``s`` = :data:`FILL_SMOOTHNESS`): where no photograph sees the skin
+    (``w`` = 0) each colour is the average of its neighbours', so the fill
+    carries the colour and shading of the skin it meets and has no edge.
+    A faint pull (1e-6) to ``mean`` decides skin no seen vertex connects to.
+    """
+    from scipy import sparse
+    from scipy.sparse.linalg import spsolve
+
+    tri_v, _, _ = skin_triangles(model)
+    n = len(vertices)
+    skin = np.unique(tri_v)
+    colour = np.zeros((len(skin), 3))
+    weight = np.zeros(len(skin))
+    for view, photo in photos.items():
+        camera = cameras[view]
+        w = np.clip((normals[skin] @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
+        w *= _visible(vertices[skin], vertices, occluders, camera, photo.shape[:2])
+        colour += w[:, None] * sample_bilinear(photo, camera.project(vertices[skin]))
+        weight += w
+    observed = np.divide(colour, weight[:, None], out=np.tile(mean, (len(skin), 1)), where=weight[:, None] > 0)
+    index = np.full(n, -1)
+    index[skin] = np.arange(len(skin))
+    edges = index[np.concatenate([tri_v[:, [0, 1]], tri_v[:, [1, 2]], tri_v[:, [2, 0]]])]
+    adjacency = sparse.coo_matrix((np.ones(len(edges)), (edges[:, 0], edges[:, 1])), shape=(len(skin),) * 2)
+    adjacency = ((adjacency + adjacency.T) > 0).astype(float).tocsr()
+    laplacian = sparse.diags(np.asarray(adjacency.sum(axis=1)).ravel()) - adjacency
+    pull = 1e-6
+    system = (sparse.diags(weight + pull) + FILL_SMOOTHNESS * laplacian).tocsc()
+    solved = spsolve(system, weight[:, None] * observed + pull * mean)
+    fill = np.tile(mean, (n, 1))
+    fill[skin] = np.asarray(solved).reshape(len(skin), 3)
+    return fill
 
 
 def pad_islands(atlas: np.ndarray, covered: np.ndarray, texels: int = ISLAND_PADDING) -> None:
