@@ -34,6 +34,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from engine.live.client import LiveClient  # noqa: E402
+from engine.processes import with_parent_death_signal  # noqa: E402
 
 FRAME_MS = 1000.0 / 60.0
 TEXTS = ["Hyvää päivää, mitä kuuluu?", "Moi.", "Tänään on kaunis ilma ja aurinko paistaa.",
@@ -80,7 +81,8 @@ def start_festival_server() -> tuple[subprocess.Popen, int]:
     with socket.socket() as probe:
         probe.bind(("127.0.0.1", 0))
         port = int(probe.getsockname()[1])
-    process = subprocess.Popen(["festival", f"(set! server_port {port})", "--server"], stdin=subprocess.DEVNULL,
+    process = subprocess.Popen(with_parent_death_signal(["festival", f"(set! server_port {port})", "--server"]),
+                               stdin=subprocess.DEVNULL,
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     deadline = time.monotonic() + 60
     while True:

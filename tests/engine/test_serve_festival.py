@@ -17,6 +17,7 @@ from collections.abc import Iterator
 import numpy as np
 import pytest
 
+from engine.processes import with_parent_death_signal
 from engine.speech.festival import FestivalSynthesizer
 from engine.speech.festival_server import FestivalServerSynthesizer
 from engine.speech.synthesis import SynthesisError
@@ -48,7 +49,7 @@ def festival_port(tmp_path_factory: pytest.TempPathFactory) -> Iterator[int]:
     port = free_port()
     log = tmp_path_factory.mktemp("festival-server") / "festival-server.log"
     with log.open("wb") as out:
-        process = subprocess.Popen(["festival", f"(set! server_port {port})", "--server"],
+        process = subprocess.Popen(with_parent_death_signal(["festival", f"(set! server_port {port})", "--server"]),
                                    stdin=subprocess.DEVNULL, stdout=out, stderr=subprocess.STDOUT,
                                    start_new_session=True)
     try:
