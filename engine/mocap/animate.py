@@ -33,7 +33,7 @@ import numpy as np
 from engine.errors import UserError
 from engine.mocap.apply import AppliedArticulation, apply_articulation, component_names
 from engine.mocap.errors import MocapError
-from engine.mocap.held_out import fit_frames
+from engine.mocap.held_out import FrameFit, fit_frames
 from engine.mocap.pca import Articulation
 from engine.mocap.session import Session
 from engine.model.head_rotation import head_rotation_values
@@ -105,18 +105,11 @@ def animate_session(session: Session, art: Articulation, model: Model, *, head_m
         applied = apply_articulation(bare, art, prefix=prefix)
     else:
         applied = apply_articulation(animated, art, prefix=prefix)
-    absent = [m for m in applied.markers if m not in session.markers]
-    if absent:
-        raise MocapError(f"the session lacks the analysed markers {', '.join(absent)}")
-    columns = [session.markers.index(m) for m in applied.markers]
-    x = session.positions[:, columns].copy()
-    x[session.missing[:, columns]] = np.nan
-    fit = fit_frames(animated, applied, applied.to_model(x))
-    fitted, empty = _fill_empty_frames(fit.values)
+    fit, fitted, empty = session_component_values(animated, applied, session)
 
     tree = animated.parameters
     all_names = list(tree.names)
-    values = np.tile([tree[n].default for n in all_names], (len(x), 1)).astype(float)
+    values = np.tile([tree[n].default for n in all_names], (len(fitted), 1)).astype(float)
     for k, name in enumerate(applied.names):
         values[:, all_names.index(name)] = fitted[:, k]
     if head_motion:
@@ -134,6 +127,26 @@ def animate_session(session: Session, art: Articulation, model: Model, *, head_m
         model=animated, applied=applied, times_ms=session.times_ms, values=values, names=all_names,
         markers=list(applied.markers), per_marker_rms_mm=_rms(errors), per_marker_rest_rms_mm=_rms(rest),
         frames_without_markers=empty, clamped=clamped, head_motion=head_motion)
+
+
+def session_component_values(model: Model, applied: AppliedArticulation, session: Session
+                             ) -> tuple[FrameFit, np.ndarray, int]:
+    """Every frame of ``session`` fitted with the applied components of ``model``.
+
+    Returns the fit (values, NaN in frames with none of the markers, and the
+    errors at the landmarks), the values (F, C) with such frames interpolated
+    from their neighbours, and how many there were. The workbench's player
+    plays a session through the face with these values.
+    """
+    absent = [m for m in applied.markers if m not in session.markers]
+    if absent:
+        raise MocapError(f"the session lacks the analysed markers {', '.join(absent)}")
+    columns = [session.markers.index(m) for m in applied.markers]
+    x = session.positions[:, columns].copy()
+    x[session.missing[:, columns]] = np.nan
+    fit = fit_frames(model, applied, applied.to_model(x))
+    values, empty = _fill_empty_frames(fit.values)
+    return fit, values, empty
 
 
 def write_session_animation(animation: SessionAnimation, output: str | Path, *, audio: str | Path | None = None,

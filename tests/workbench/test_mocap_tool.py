@@ -422,3 +422,42 @@ def test_screenshots(head_window, qtbot, take, tmp_path):
     window.viewport.render_now()
     qtbot.wait(50)
     assert window.grab().save(str(folder / "workbench-mocap-apply.png"))
+
+
+def test_after_apply_the_recording_plays_through_the_face(head_window, qtbot, take):
+    """Issue 22 §1: after Apply, the timeline plays the recording through the model, markers and face together."""
+    from engine.mocap.animate import session_component_values
+
+    window = head_window
+    mocap, player, playhead, document = window.mocap, window.player, window.playhead, window.document
+    session = import_session(window, qtbot, take)
+    assert player.timeline.driven == ()                       # before Apply only the markers move
+    pca = mocap.pca_dock
+    pca.run_pca()
+    wait_jobs(qtbot)
+    pca.apply_to_model()
+    wait_jobs(qtbot)
+    names = [f"pca{k}" for k in range(1, 6)]
+    timeline = player.timeline
+    assert timeline is mocap.playback.timeline and list(timeline.driven) == names
+    _, expected, _ = session_component_values(document.model, pca.applied, session)
+
+    # the frame where the lower lip is farthest from the face at rest (in the alignment Apply found)
+    lip = session.marker_index("8.2")
+    lower_lip = document.model.landmarks["8.2"]
+    in_model = pca.applied.to_model(session.positions[:, lip])
+    frame = int(np.nanargmax(np.linalg.norm(in_model - document.model.vertices[lower_lip], axis=1)))
+    playhead.set_frame(frame)
+    got = [document.values[name] for name in names]
+    low = [document.model.parameters[n].minimum for n in names]
+    high = [document.model.parameters[n].maximum for n in names]
+    np.testing.assert_allclose(got, np.clip(expected[frame], low, high), atol=1e-9)
+    # the face follows the recording there: its lower lip is by the marker, not where it rests
+    moved = np.linalg.norm(document.vertices()[lower_lip] - in_model[frame])
+    rest = np.linalg.norm(document.model.vertices[lower_lip] - in_model[frame])
+    assert rest > 5.0 and moved < 0.2 * rest, (moved, rest)
+    assert mocap.overlay.visible                              # and the markers are drawn with it
+
+    window.undo()                                             # Apply undone: the markers play on alone
+    playhead.set_frame(60)
+    assert all(name not in document.model.parameters.names for name in names)

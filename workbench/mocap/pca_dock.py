@@ -41,6 +41,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from engine.mocap.animate import session_component_values
 from engine.mocap.apply import apply_articulation
 from engine.mocap.articulation_file import save_articulation_file
 from engine.mocap.held_out import reconstruct_held_out
@@ -64,10 +65,13 @@ class PcaDock(QDockWidget):
     ``preview_changed(object)``: ``(markers, points (M, 3) mm in marker space)``
     to draw instead of the session's frame while a component is shown, or ``None``.
     ``errors_changed(object)``: ``{marker: RMS error mm}`` after "Apply", or ``None``.
+    ``recording_fitted(object)``: after "Apply", ``(names, values (frames × names))``: the whole session
+    fitted by the new parameters, for the player to play through the face.
     """
 
     preview_changed = Signal(object)
     errors_changed = Signal(object)
+    recording_fitted = Signal(object)
 
     def __init__(self, state: MocapState, document, parent: QWidget | None = None):
         super().__init__(TITLE, parent)
@@ -319,12 +323,13 @@ class PcaDock(QDockWidget):
             applied = apply_articulation(model, art, prefix=prefix)
             error = reconstruct_held_out(model, applied, art, session.markers, session.positions[held])
             added = [(model.parameters[n], model.regions[n]) for n in applied.names]
-            return applied, error, added
+            _, values, _ = session_component_values(model, applied, session)    # the recording through them
+            return applied, error, added, values
 
         self.job = run_in_background(self, "Putting the components onto the face…", work, self._applied, title=TITLE)
 
     def _applied(self, result) -> None:
-        applied, error, added = result
+        applied, error, added, values = result
         try:
             self.document.push(AddArticulationCommand(self.document, added))
         except Exception as exc:
@@ -345,6 +350,7 @@ class PcaDock(QDockWidget):
             self.error_table.setItem(row, 1, value)
         self.errors_changed.emit(dict(zip(error.markers, error.per_marker_rms_mm.tolist(), strict=True)))
         self.tabs.setCurrentIndex(2)
+        self.recording_fitted.emit((list(applied.names), values))
 
     def shown_errors(self) -> dict[str, float]:
         """The error table as ``{marker: mm}`` (what the user reads)."""

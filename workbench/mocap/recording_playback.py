@@ -14,6 +14,12 @@ animation stops.
 They come back when the user turns to the session again — Motion capture ▸
 *Show the recording*, a click or drag on the marker plot, *Show the session*
 or a component shown in the PCA dock — which loads the recording back.
+
+Once the components are on the face (*Apply to model*), the recording also
+drives them: every frame's markers fitted by the components, as
+``artificial-person mocap animate`` fits them
+(:func:`engine.mocap.animate.session_component_values`), so Space plays the
+markers and the face together and the timeline shows the component tracks.
 """
 
 from __future__ import annotations
@@ -27,21 +33,29 @@ from engine.speech.synthesis import Segment
 
 
 class RecordingTimeline:
-    """A capture session as the player plays it: ``end`` (ms) is its last frame; it sets no parameter."""
+    """A capture session as the player plays it: ``end`` (ms) is its last frame.
 
-    parameters: tuple[str, ...] = ()
-    driven: tuple[str, ...] = ()
+    Without ``names`` it sets no parameter (only the markers move). With the
+    applied components' ``names`` and their ``values`` (frames × names) it
+    drives them, linearly between frames.
+    """
 
-    def __init__(self, session):
+    def __init__(self, session, names: tuple[str, ...] = (), values: np.ndarray | None = None):
         self.session = session
         self.end = 1000.0 * (session.n_frames - 1) / session.rate_hz
+        self.parameters: tuple[str, ...] = tuple(names)
+        self.driven: tuple[str, ...] = tuple(names)
+        self._times = np.arange(session.n_frames) * (1000.0 / session.rate_hz)
+        self._values = np.zeros((session.n_frames, 0)) if values is None else np.asarray(values, dtype=float)
 
-    def values_at(self, _ms: float) -> dict[str, float]:
-        return {}
+    def values_at(self, ms: float) -> dict[str, float]:
+        return {name: float(np.interp(ms, self._times, self._values[:, k])) for k, name in enumerate(self.driven)}
 
     def sample(self, times_ms) -> np.ndarray:
-        """(T, 0): no parameter has a value (the track view asks only for driven ones)."""
-        return np.zeros((len(times_ms), 0))
+        """(T, driven): the driven parameters' values at ``times_ms``."""
+        times = np.asarray(times_ms, dtype=float)
+        return np.column_stack([np.interp(times, self._times, self._values[:, k]) for k in range(len(self.driven))]
+                               ) if self.driven else np.zeros((len(times), 0))
 
 
 def session_title(session) -> str:
@@ -64,12 +78,14 @@ class RecordingPlayback(QObject):
         self.pca_dock = tool.pca_dock
         self.plot_dock = tool.plot_dock
         self.timeline: RecordingTimeline | None = None
+        self._drive: tuple[object, tuple[str, ...], np.ndarray] | None = None   # (session, names, values)
         self.player.loaded.connect(self._on_player_loaded)
         self.state.phones_changed.connect(self._on_phones_changed)
         tool.plot_dock.plot.frame_clicked.connect(self.show_frame)
         tool.plot_dock.plot.range_dragged.connect(self._on_range_dragged)
         self.pca_dock.show_session_button.clicked.connect(self.show_session)
         self.pca_dock.preview_changed.connect(self._on_preview)
+        self.pca_dock.recording_fitted.connect(self.drive)
 
     @property
     def on_player(self) -> bool:
@@ -85,9 +101,26 @@ class RecordingPlayback(QObject):
             self.timeline = None
             return
         if self.timeline is None or self.timeline.session is not session:
-            self.timeline = RecordingTimeline(session)
+            self.timeline = self._timeline_for(session)
         if not self.on_player:
             self._load()
+
+    def drive(self, fitted) -> None:
+        """The applied components' ``(names, values)`` for the open session: the recording now moves the face
+        as well as the markers, and is put on the player."""
+        session = self.state.session
+        if session is None:
+            return
+        names, values = fitted
+        self._drive = (session, tuple(names), np.asarray(values, dtype=float))
+        at = self.player.playhead.time if self.on_player else 0.0
+        self.timeline = self._timeline_for(session)
+        self._load(at=at)
+
+    def _timeline_for(self, session) -> RecordingTimeline:
+        if self._drive is not None and self._drive[0] is session:
+            return RecordingTimeline(session, self._drive[1], self._drive[2])
+        return RecordingTimeline(session)
 
     def show_frame(self, frame: int) -> None:
         """The session on the player, the playhead on ``frame`` (a frame picked on the marker plot)."""
