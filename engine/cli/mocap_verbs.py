@@ -1,4 +1,5 @@
-"""The ``mocap`` verbs: ``mocap import``, ``mocap pca``, ``mocap apply`` (§3.1), ``mocap animate``.
+"""The ``mocap`` verbs: ``mocap import``, ``mocap pca``, ``mocap apply`` (§3.1), ``mocap animate``,
+``mocap learn``.
 
 Each step is one ``add_<step>(steps)``
 function that adds its sub-parser and sets ``run``; :data:`STEPS` lists them.
@@ -157,7 +158,47 @@ def add_animate(steps: Any) -> None:
     p.set_defaults(run=run_animate)
 
 
-STEPS = [add_import, add_pca, add_apply, add_animate]
+def add_learn(steps: Any) -> None:
+    p = steps.add_parser("learn", help="learn the coarticulation of a phone table from phone-labelled sessions",
+                         description="Read the sessions as the model's articulatory tracks, fit every seen phone's "
+                                     "targets, dominances and rates (Cohen–Massaro) toward the starting table, "
+                                     "report the trajectory error at the lip markers on held-out utterances "
+                                     "(learned, starting table, plain interpolation) and write the learned "
+                                     "table for 'say --articulation'. See docs/mocap-learn.md.")
+    p.add_argument("sessions", nargs="+", metavar="SESSION.h5", help="sessions from 'mocap import' with phone labels")
+    p.add_argument("--articulation", required=True, metavar="ARTICULATION.h5",
+                   help="file from 'mocap pca' on a take of the same speaker and markers: its markers are the ones "
+                        "fitted and measured, its alignment places them on the model")
+    add_model_option(p)
+    p.add_argument("--table", default=None, metavar="TABLE.phones",
+                   help="the phone table to start from and regularise toward (default: the shipped Finnish one)")
+    p.add_argument("--holdout", default="0%", metavar="PERCENT",
+                   help="utterances (speech between pauses) kept out of the fit and measured, e.g. 20%% (default 0%%)")
+    p.add_argument("-o", "--output", required=True, metavar="LEARNED.phones", help="phone table to write")
+    p.set_defaults(run=run_learn)
+
+
+STEPS = [add_import, add_pca, add_apply, add_animate, add_learn]
+
+
+def run_learn(args: argparse.Namespace) -> int:
+    from engine.mocap.articulation_file import load_articulation_file
+    from engine.mocap.coarticulation_learning import learn_coarticulation, parse_holdout
+    from engine.mocap.session import load_session
+    from engine.speech.articulation import load_articulation
+    from engine.speech.articulation_writer import write_articulation
+
+    out = _suffix(args.output, (".phones",), "a phone table")
+    holdout = parse_holdout(args.holdout)
+    table = load_articulation(args.table)
+    model = load_model_argument(args.model)
+    art = load_articulation_file(args.articulation)
+    sessions = [(str(path), load_session(path)) for path in args.sessions]
+    learned = learn_coarticulation(sessions, art, model, table, holdout)
+    write_articulation(learned.table, out, learned.header())
+    print(learned.report(), end="")
+    print(f"wrote {out}")
+    return 0
 
 
 def run_import(args: argparse.Namespace) -> int:
