@@ -137,8 +137,10 @@ def learn_coarticulation(sessions: Sequence[tuple[str, Session]], art: Articulat
         if session.n_frames < MIN_FRAMES:
             raise MocapError(f"the session has {session.n_frames} frames: too few to learn from "
                              f"(at least {MIN_FRAMES})", file=source)
-        for _, _, label in session.phones:
-            table.row(label)
+        unknown = sorted({label for _, _, label in session.phones if not _has_row(table, label)})
+        if unknown:
+            raise MocapError(f"the phone table {table.file} has no row for the session's phones "
+                             f"{' '.join(unknown)}: give --table with rows for them", file=source)
     parameters = _moving_parameters(model, art, table)
     captured = [capture_tracks(session, art, model, parameters, source) for source, session in sessions]
     takes = [take for take, _ in captured]
@@ -173,6 +175,10 @@ def learn_coarticulation(sessions: Sequence[tuple[str, Session]], art: Articulat
         table=learned, starting_table=table.file, fits=fits, sources=[s for s, _ in sessions], utterances=count,
         held_out=held, fit_frames=int(sum(m.sum() for m in train)), measured_frames=int(sum(m.sum() for m in measured)),
         lip_rms_mm=rms)
+
+
+def _has_row(table: ArticulationTable, phone: str) -> bool:
+    return phone in table.rows or (phone.endswith(":") and phone[:-1] in table.rows)
 
 
 class _Columns:

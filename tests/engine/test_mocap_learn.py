@@ -172,6 +172,8 @@ def test_bad_inputs_are_refused_in_one_line(capture, tmp_path):
                                                         ("positions", "raw", "missing", "alignment", "filled")}})
     save_session(short, tmp_path / "short.h5")
     save_session(session, tmp_path / "one.h5")
+    foreign = session.__class__(**{**session.__dict__, "phones": [*session.phones[:-1], (0.0, 50.0, "ae")]})
+    save_session(foreign, tmp_path / "foreign.h5")
 
     def learn(*args):
         return run("mocap", "learn", *args, "--articulation", tmp_path / "art.h5", "-o", tmp_path / "x.phones")
@@ -179,6 +181,8 @@ def test_bad_inputs_are_refused_in_one_line(capture, tmp_path):
     assert "no phone labels" in assert_user_error(learn(tmp_path / "unlabelled.h5"))
     assert "unlabelled.h5" in assert_user_error(learn(tmp_path / "unlabelled.h5"))
     assert "too few" in assert_user_error(learn(tmp_path / "short.h5"))
+    line = assert_user_error(learn(tmp_path / "foreign.h5"))
+    assert "foreign.h5" in line and "no row" in line and "ae" in line
     assert "120%" in assert_user_error(learn(tmp_path / "one.h5", "--holdout", "120%"))
     assert "percentage" in assert_user_error(learn(tmp_path / "one.h5", "--holdout", "a lot"))
     assert "cannot hold out" in assert_user_error(learn(tmp_path / "one.h5", "--holdout", "95%"))
