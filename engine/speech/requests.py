@@ -46,6 +46,7 @@ class SayRequest:
     synthesizer: Synthesizer | None = None  # None: a FestivalSynthesizer
     audio: Path | None = None               # a recorded voice (WAV) instead of synthesis …
     labels: Path | None = None              # … with its phone labels; the text then holds inline commands
+    table: Path | None = None               # a phone table file (.phones) instead of the shipped one
 
 
 @dataclass
@@ -83,16 +84,21 @@ def run_say(request: SayRequest, folder: str | Path, cancelled: Callable[[], boo
     elif cancelled is not None and isinstance(synthesizer, FestivalSynthesizer):
         synthesizer = copy.copy(synthesizer)
         synthesizer.cancelled = cancelled
+    table = None
+    if request.table is not None:
+        from engine.speech.articulation import load_articulation
+
+        table = load_articulation(request.table)
     if request.audio is not None:
         from engine.speech.recorded import speak_recording
 
         if request.labels is None:
             raise UserError("a recorded voice needs its phone labels", file=request.audio)
         speech = speak_recording(request.audio, request.labels, request.model, text=request.text.strip() or None,
-                                 coarticulation=request.coarticulation, prosody_seed=request.prosody_seed,
+                                 table=table, coarticulation=request.coarticulation, prosody_seed=request.prosody_seed,
                                  name=TEXT_NAME)
     else:
-        speech = speak(request.text, request.model, synthesizer=synthesizer, voice=request.voice,
+        speech = speak(request.text, request.model, synthesizer=synthesizer, voice=request.voice, table=table,
                        coarticulation=request.coarticulation, prosody_seed=request.prosody_seed, name=TEXT_NAME)
     wav = Path(folder) / f"say-{next(_counter)}.wav"           # a copy: the front end may delete it later
     write_wav(wav, speech.utterance)

@@ -272,3 +272,34 @@ def test_closing_the_window_while_saying_is_safe(head_window, qtbot):
     qtbot.waitUntil(lambda: not running_jobs(), timeout=60000)    # the thread ends; no slot of the closed panel fails
     qtbot.wait(50)
     assert not head_window.player.is_playing                       # a closed window does not start talking
+
+
+def test_a_phone_table_file_is_chosen_said_with_and_kept(head_window, qtbot, monkeypatch, make_window, tmp_path):
+    """Issue 22 §2: a table learned by ``mocap learn`` (here: the shipped one with a wider ``a``) drives Say."""
+    from PySide6.QtWidgets import QFileDialog
+
+    from engine.speech.articulation import shipped_tables
+
+    shipped = shipped_tables()["finnish"].read_text(encoding="utf-8")
+    lines = [("a          0.9       " + line[20:]) if line.startswith("a    ") else line for line in shipped.splitlines()]
+    wider = tmp_path / "learned.phones"
+    wider.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    broken = tmp_path / "broken.phones"
+    broken.write_text("$parameters = jaw_open\na  lots\n", encoding="utf-8")
+    answers = iter([(str(broken), ""), (str(wider), "")])
+    monkeypatch.setattr(QFileDialog, "getOpenFileName", lambda *_args: next(answers))
+    shown = expect_warning(monkeypatch)
+    panel = head_window.script_panel
+    chooser = panel.table_chooser
+    qtbot.mouseClick(chooser.choose_button, Qt.MouseButton.LeftButton)        # a bad file: a dialog, no change
+    assert chooser.path is None and len(shown) == 1 and "broken.phones" in shown[0][1]
+    qtbot.mouseClick(chooser.choose_button, Qt.MouseButton.LeftButton)
+    assert chooser.path == wider and chooser.summary.text() == "learned.phones"
+
+    panel = say_and_wait(qtbot, head_window, "Pappa")
+    speech = panel.result.speech
+    vowel = next(p for p in speech.utterance.phones if p.label == "a")
+    assert speech.timeline.values_at((vowel.start_ms + vowel.end_ms) / 2)["jaw_open"] > 0.7   # shipped: 0.42
+    assert make_window(engine.default_model_path()).script_panel.table_chooser.path == wider   # kept
+    qtbot.mouseClick(chooser.clear_button, Qt.MouseButton.LeftButton)
+    assert chooser.path is None and panel.request().table is None

@@ -42,6 +42,7 @@ from ..icons import icon
 from .highlighter import InlineCommandHighlighter
 from .jobs import Job
 from .recording_chooser import RecordingChooser
+from .table_chooser import PhoneTableChooser
 
 KEY_TEXT = "script_panel/text"
 KEY_VOICE = "script_panel/voice"
@@ -106,6 +107,7 @@ class ScriptPanel(QWidget):
             self.coarticulation_box.addItem(label, value)
         self.coarticulation_box.setToolTip("Cohen–Massaro dominance functions, or the paper's plain "
                                            "interpolation between each phone's targets")
+        self.table_chooser = PhoneTableChooser()
         self.prosody_box = QCheckBox("&Visual prosody, seed")
         self.prosody_box.setObjectName("script_panel.prosody")
         self.prosody_box.setToolTip("Add blinks, brows raised on accented words and nods at phrase ends "
@@ -138,6 +140,7 @@ class ScriptPanel(QWidget):
         form.addRow("&Voice:", self.voice_box)
         form.addRow("Recording:", self.recording_chooser)
         form.addRow("&Coarticulation:", self.coarticulation_box)
+        form.addRow("Phone table:", self.table_chooser)
         prosody = QHBoxLayout()
         prosody.addWidget(self.prosody_box)
         prosody.addWidget(self.seed_box)
@@ -226,6 +229,7 @@ class ScriptPanel(QWidget):
                           voice=None if recording else (self.voice_box.currentText() or None),
                           audio=recording[0] if recording else None, labels=recording[1] if recording else None,
                           coarticulation=self.coarticulation_box.currentData(),
+                          table=self.table_chooser.path,
                           prosody_seed=self.seed_box.value() if self.prosody_box.isChecked() else None,
                           synthesizer=self.synthesizer)
 

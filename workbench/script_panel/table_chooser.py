@@ -1,0 +1,92 @@
+"""The phone table Say articulates with: the shipped one for the voice, or a file (issue 22 §2).
+
+One row of the script panel: what is chosen (``learned.phones``, or nothing:
+the shipped table of the voice's phone set), **Choose…** and **×** (back to
+the shipped table). A table learned from capture by ``artificial-person mocap
+learn`` is used here as ``say --articulation LEARNED.phones`` uses it. The
+file is read when chosen, so a bad one is refused at once in a dialog naming
+its line, and the choice is kept across sessions (QSettings
+``script_panel/phone_table``) while the file still reads.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from PySide6.QtCore import QSettings, Signal
+from PySide6.QtWidgets import QFileDialog, QHBoxLayout, QLineEdit, QMessageBox, QPushButton, QToolButton, QWidget
+
+from engine.errors import UserError
+
+KEY_TABLE = "script_panel/phone_table"
+TABLE_FILTER = "Phone tables (*.phones);;All files (*)"
+TITLE = "Phone table"
+
+
+class PhoneTableChooser(QWidget):
+    """``path`` is the chosen table file or ``None`` (the shipped table); ``changed`` fires when it changes."""
+
+    changed = Signal()
+
+    def __init__(self, parent: QWidget | None = None):
+        super().__init__(parent)
+        self.path: Path | None = None
+        self.summary = QLineEdit()                 # read-only: long names scroll instead of widening the dock
+        self.summary.setReadOnly(True)
+        self.summary.setPlaceholderText("the shipped table of the voice")
+        self.summary.setMinimumWidth(60)
+        self.summary.setObjectName("script_panel.phone_table")
+        self.choose_button = QPushButton("Choose…")
+        self.choose_button.setObjectName("script_panel.choose_phone_table")
+        self.choose_button.setToolTip("Articulate with another phone → target table (a .phones file, e.g. one "
+                                      "learned from motion capture by 'mocap learn')")
+        self.choose_button.clicked.connect(self.choose)
+        self.clear_button = QToolButton()
+        self.clear_button.setText("×")
+        self.clear_button.setObjectName("script_panel.clear_phone_table")
+        self.clear_button.setToolTip("Back to the shipped table")
+        self.clear_button.clicked.connect(lambda: self.set_path(None))
+        row = QHBoxLayout(self)
+        row.setContentsMargins(0, 0, 0, 0)
+        row.addWidget(self.summary, 1)
+        row.addWidget(self.choose_button)
+        row.addWidget(self.clear_button)
+        self._restore()
+
+    def choose(self) -> None:
+        """Ask for a ``.phones`` file; nothing changes if the dialog is cancelled or the file is refused."""
+        start = str(self.path.parent) if self.path else ""
+        chosen, _ = QFileDialog.getOpenFileName(self, "Phone table", start, TABLE_FILTER)
+        if chosen:
+            self.set_path(Path(chosen), ask=True)
+
+    def set_path(self, path: str | Path | None, ask: bool = False) -> bool:
+        """Use the table at ``path`` (``None``: the shipped one); a file that does not read is refused
+        (a dialog when ``ask``) and the choice stays as it was. Returns whether it was taken."""
+        if path is not None:
+            try:
+                read_table(path)
+            except UserError as exc:
+                if ask:
+                    QMessageBox.warning(self, TITLE, f"This phone table cannot be used:\n{exc}")
+                return False
+        self.path = Path(path) if path is not None else None
+        self.summary.setText(self.path.name if self.path else "")
+        self.summary.setCursorPosition(0)
+        self.summary.setToolTip(str(self.path) if self.path else "")
+        self.clear_button.setEnabled(self.path is not None)
+        QSettings().setValue(KEY_TABLE, str(self.path) if self.path else "")
+        self.changed.emit()
+        return True
+
+    def _restore(self) -> None:
+        stored = str(QSettings().value(KEY_TABLE, "") or "")
+        if not (stored and Path(stored).is_file() and self.set_path(stored)):
+            self.set_path(None)
+
+
+def read_table(path: str | Path):
+    """The :class:`~engine.speech.articulation.ArticulationTable` in ``path``, or a :class:`UserError`."""
+    from engine.speech.articulation import load_articulation
+
+    return load_articulation(path)
