@@ -20,8 +20,10 @@ Reading a video back (frame counts, frames, audio, contact sheets) is
 :mod:`engine.outputs.video_probe`. Needs the ``ffmpeg`` program (Debian
 package ``ffmpeg``); without it the functions here raise :class:`FFmpegMissing`.
 
-Speed: one :class:`~engine.outputs.render.FrameRenderer` draws every frame (the scene
-is built once, only the vertex positions and normals change), while ffmpeg
+Speed: one :class:`~engine.outputs.render.FrameRenderer` draws the frames (the scene
+is built once, only the vertex positions and normals change) — with a second
+process drawing every other frame on a machine with two or more cores
+(:mod:`engine.outputs.render_helper`) — while ffmpeg
 encodes in its own process; a writer thread keeps the pipe to ffmpeg full so
 drawing and encoding overlap. ``antialias=False`` (the default here) skips
 multisampling, which on a machine without a GPU (Mesa llvmpipe) costs about
@@ -54,6 +56,7 @@ from numpy.typing import ArrayLike
 from engine.errors import UserError
 from engine.formats.atomic import atomic_files
 from engine.model.model import Model
+from engine.outputs.render_helper import RenderHelper, helper_wanted
 from engine.outputs.video_tools import FFmpegMissing, VideoError, find_tool, stderr_tail
 from engine.processes import with_parent_death_signal
 
@@ -222,6 +225,7 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
     deformer = request.model.deformer()
     process = None
     writer = None
+    helper: RenderHelper | None = None
     with tempfile.TemporaryDirectory(prefix="artificial-person-video-") as scratch, \
             open(Path(scratch) / "ffmpeg.log", "w+b") as log:
         try:
@@ -236,6 +240,8 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                 if rate not in AAC_RATES:
                     command += ["-ar", str(next((r for r in AAC_RATES if r >= rate), AAC_RATES[-1]))]
             command += [*VIDEO_ARGS, "-movflags", "+faststart", "-f", "mp4", str(destination)]
+            if helper_wanted(count):              # forked before our renderer and ffmpeg exist
+                helper = RenderHelper(request, antialias)
             with FrameRenderer(request.model, size=(width, height), view=request.view,
                                antialias=antialias) as renderer:
                 cpu_before = _children_cpu()
@@ -248,9 +254,12 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                     progress(0, count)
                 for n in range(count):
                     t0 = time.perf_counter()
-                    positions = deformer.deform(request.values[n])
+                    image = helper.frame(n) if helper is not None and helper.owns(n) else None
                     t1 = time.perf_counter()
-                    image = renderer.render(positions)
+                    if image is None:
+                        positions = deformer.deform(request.values[n])
+                        t1 = time.perf_counter()
+                        image = renderer.render(positions)
                     t2 = time.perf_counter()
                     if not writer.put(image):
                         break                               # ffmpeg stopped taking frames: report below
@@ -270,6 +279,8 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
         except OSError as exc:
             raise UserError(f"cannot write the video: {exc.strerror or exc}", file=path) from None
         finally:
+            if helper is not None:
+                helper.close()
             if writer is not None:
                 writer.abandon()
             if process is not None and process.poll() is None:

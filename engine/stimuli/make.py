@@ -19,6 +19,7 @@ import functools
 import hashlib
 import json
 import math
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
@@ -127,16 +128,26 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
                 destination.write_text(phones_csv(shifted), encoding="utf-8")
             elif kind == "tracks":
                 destination.write_text(tracks_csv_text(timeline.parameters, frame_times, values), encoding="utf-8")
-    check = _check(paths, utterance.samples * gain, clean, mask, rate, layout.audio_start_ms,
-                   float(levels["snr_db"]) if "snr_db" in levels else None, gain)
-    check.update(_check_video(paths, vertex_motion(model, values), fps, layout.video_start_ms))
+    # the audio's check decodes the file's sound while the video's decodes its frames: both at once
+    with ThreadPoolExecutor(max_workers=1, thread_name_prefix="audio-check") as pool:
+        audio_check = pool.submit(_check, paths, utterance.samples * gain, clean, mask, rate,
+                                  layout.audio_start_ms, float(levels["snr_db"]) if "snr_db" in levels else None,
+                                  gain)
+        frames = _decoded_frames(paths, count)
+        video_check = _check_video(paths, vertex_motion(model, values), fps, layout.video_start_ms, frames)
+        check = audio_check.result()
+    check.update(video_check)
     if check.get("video_ok") is False:
         check["ok"] = False
         check["problem"] = "; ".join(filter(None, [check.get("problem", ""), "the video's frames move "
                                                    f"{check['measured_video_lag_frames']} frames off its face"]))
     records = outdir / RECORDS
     records.mkdir(exist_ok=True)
-    _thumbnail(model, timeline, still_ms - layout.video_start_ms, design, records / f"{stimulus.id}.thumb.npy")
+    thumbnail = records / f"{stimulus.id}.thumb.npy"
+    if frames is not None:
+        _thumbnail_of_frame(frames[min(len(frames) - 1, max(0, round(still_ms * fps / 1000.0)))], thumbnail)
+    else:
+        _thumbnail(model, timeline, still_ms - layout.video_start_ms, design, thumbnail)
     record = {
         "id": stimulus.id,
         "levels": levels,
@@ -208,7 +219,18 @@ def vertex_motion(model: Model, values: np.ndarray) -> np.ndarray:
     return motion
 
 
-def _check_video(paths: dict[str, Path], motion: np.ndarray, fps: float, video_start_ms: float) -> dict[str, Any]:
+def _decoded_frames(paths: dict[str, Path], count: int) -> np.ndarray | None:
+    """The frames of the video just written, as its file holds them (None: no video, or too short to check)."""
+    kind = "mp4" if "mp4" in paths else "silent-mp4" if "silent-mp4" in paths else None
+    if kind is None or count < 25:
+        return None
+    from engine.outputs.video_probe import read_frames
+
+    return read_frames(paths[kind])
+
+
+def _check_video(paths: dict[str, Path], motion: np.ndarray, fps: float, video_start_ms: float,
+                 frames: np.ndarray | None = None) -> dict[str, Any]:
     """Measure the written video: where its frames move against where the face moves.
 
     The motion of the frames (mean absolute change of the pixels from one frame to the next) is
@@ -221,9 +243,11 @@ def _check_video(paths: dict[str, Path], motion: np.ndarray, fps: float, video_s
         return {}
     from engine.outputs.video_probe import read_frames
 
+    if frames is None:
+        frames = read_frames(paths[kind])
     # every other row and column is enough to see where the picture moves, at a quarter of the cost
-    frames = read_frames(paths[kind])[:, ::2, ::2].astype(np.int16)
-    moving_pixels = np.abs(frames[1:] - frames[:-1]).mean(axis=(1, 2, 3))
+    sampled = frames[:, ::2, ::2].astype(np.int16)
+    moving_pixels = np.abs(sampled[1:] - sampled[:-1]).mean(axis=(1, 2, 3))
     moving_values = motion[1:]
     count = min(len(moving_pixels), len(moving_values))
     if count < 3 or not moving_values[:count].any() or not moving_pixels[:count].any():
@@ -248,6 +272,18 @@ def _thumbnail(model: Model, timeline: Timeline, at_ms: float, design: Design, p
     size = (THUMBNAIL_WIDTH, max(2, round(THUMBNAIL_WIDTH * height / width / 2) * 2))
     with FrameRenderer(model, size=size, view=design.output.view) as renderer:
         image = renderer.render(model.deform(timeline.values_at(at_ms)))
+    with path.open("wb") as stream:
+        np.save(stream, np.ascontiguousarray(image, dtype=np.uint8), allow_pickle=False)
+
+
+def _thumbnail_of_frame(frame: np.ndarray, path: Path) -> None:
+    """The thumbnail of a stimulus with a video: its frame at the still's time, as the file shows it, made
+    small (no second drawing of the face)."""
+    from PIL import Image
+
+    height, width = frame.shape[:2]
+    size = (THUMBNAIL_WIDTH, max(2, round(THUMBNAIL_WIDTH * height / width / 2) * 2))
+    image = np.asarray(Image.fromarray(np.ascontiguousarray(frame[..., :3])).resize(size, Image.Resampling.BOX))
     with path.open("wb") as stream:
         np.save(stream, np.ascontiguousarray(image, dtype=np.uint8), allow_pickle=False)
 

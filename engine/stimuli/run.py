@@ -129,10 +129,20 @@ def _run_locally(design: Design, todo: list[Stimulus], outdir: Path, workers: in
                 pending = list(futures.values())
 
 
+def _make_on_a_worker(design: Design, stimulus: Stimulus, outdir: Path) -> dict[str, Any]:
+    """:func:`make_stimulus` on a Dask worker: one core each, so no second renderer."""
+    from engine.outputs.render_helper import ENVIRONMENT
+
+    os.environ.setdefault(ENVIRONMENT, "1")
+    return make_stimulus(design, stimulus, outdir)
+
+
 def _worker_start() -> None:
+    from engine.outputs.render_helper import ENVIRONMENT
     from engine.processes import die_with_parent
 
     die_with_parent()
+    os.environ.setdefault(ENVIRONMENT, "1")      # the workers fill the cores: no second renderer each
 
 
 def _run_on_dask(design: Design, todo: list[Stimulus], outdir: Path, _workers: int | None,
@@ -146,7 +156,7 @@ def _run_on_dask(design: Design, todo: list[Stimulus], outdir: Path, _workers: i
     except (OSError, TimeoutError) as exc:
         raise UserError(f"cannot reach the Dask scheduler at {scheduler}: {exc}") from None
     with client:
-        futures = [client.submit(make_stimulus, design, stimulus, outdir.resolve(), key=f"stimulus-{stimulus.id}-"
+        futures = [client.submit(_make_on_a_worker, design, stimulus, outdir.resolve(), key=f"stimulus-{stimulus.id}-"
                                  f"{design.sha256[:12]}-{time.time_ns()}", pure=False, retries=2)
                    for stimulus in todo]
         for future in as_completed(futures):
