@@ -18,7 +18,9 @@ OpenGL error in the child, a kill), :meth:`RenderHelper.frame` returns
 
 ``AP_RENDER_PROCESSES=1`` turns it off (a stimulus set on every core does,
 its workers already fill them); it is used only on Linux, with two or more
-cores, for videos of :data:`MIN_FRAMES` frames or more.
+cores, for videos of :data:`MIN_FRAMES` frames or more, and only from a
+process with one thread and no Qt (the command line, a stimulus worker; not
+the workbench).
 """
 
 from __future__ import annotations
@@ -40,10 +42,19 @@ _F_SETPIPE_SZ = 1031             # … set with fcntl(F_SETPIPE_SZ)
 
 
 def helper_wanted(frames: int) -> bool:
-    """Whether a video of ``frames`` frames should be drawn by two processes here."""
+    """Whether a video of ``frames`` frames should be drawn by two processes here.
+
+    Never from a process that runs other threads or a Qt application (the
+    workbench): a fork copies only the calling thread, and what the others
+    held would stay held in the copy.
+    """
+    import threading
+
     setting = os.environ.get(ENVIRONMENT, "").strip()
+    if setting == "1" or threading.active_count() > 1 or "PySide6.QtCore" in sys.modules:
+        return False
     if setting:
-        return setting != "1"
+        return True
     return sys.platform.startswith("linux") and (os.cpu_count() or 1) >= 2 and frames >= MIN_FRAMES
 
 
