@@ -3,12 +3,15 @@
 A real portrait, ``skimage.data.astronaut()`` (public domain, NASA), fitted
 front-only with the landmarks of ``docs/images/photofit/astronaut_points.json``;
 and the default head rendered from the front and the side, fitted from both.
-Writes ``docs/images/photofit/wizard-*.png``.
+Writes ``wizard-*.png`` into ``$AP_SCREENSHOT_DIR/photofit`` when that names a
+folder (``AP_SCREENSHOT_DIR=docs/images`` refreshes the docs' pictures), else
+into the test's own temporary folder: a test run leaves the work tree alone.
 """
 
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import numpy as np
@@ -35,14 +38,16 @@ def head_window(make_window):
     wait_for_all(FIT_TIMEOUT_MS)
 
 
-def shoot(wizard, qtbot, name: str) -> Path:
+def shoot(wizard, qtbot, folder: Path, name: str) -> Path:
     qtbot.wait(50)                     # let the page lay itself out and paint
-    path = DOCS / name
+    path = folder / name
     assert wizard.grab().save(str(path))
     return path
 
 
 def test_screenshots_of_a_real_portrait_and_a_two_view_fit(head_window, photographs, tmp_path, qtbot):  # noqa: F811
+    shots = Path(os.environ["AP_SCREENSHOT_DIR"]) / "photofit" if os.environ.get("AP_SCREENSHOT_DIR") else tmp_path
+    shots.mkdir(parents=True, exist_ok=True)
     data = pytest.importorskip("skimage.data")
     portrait = tmp_path / "astronaut.png"
     Image.fromarray(data.astronaut()).save(portrait)
@@ -50,9 +55,9 @@ def test_screenshots_of_a_real_portrait_and_a_two_view_fit(head_window, photogra
     wizard.resize(*WIZARD_SIZE)
     wizard.result_page.say_box.setChecked(False)
     assert wizard.photos_page.choose("front", portrait)
-    shoot(wizard, qtbot, "wizard-photos.png")
+    shoot(wizard, qtbot, shots, "wizard-photos.png")
     wizard.next()
-    shoot(wizard, qtbot, "wizard-landmarks-start.png")
+    shoot(wizard, qtbot, shots, "wizard-landmarks-start.png")
     page = wizard.landmark_page
     front = page.canvases["front"]
     placed_by_eye = json.loads((DOCS / "astronaut_points.json").read_text())["front"]
@@ -61,19 +66,19 @@ def test_screenshots_of_a_real_portrait_and_a_two_view_fit(head_window, photogra
         page.undo_stack.push(MoveMarker(front, key, (marker.pos().x(), marker.pos().y()), tuple(placed_by_eye[key])))
     page.place_button.click()
     front.zoom_to(FACE)        # the face, as the wheel zooms to it
-    shoot(wizard, qtbot, "wizard-landmarks-placed.png")
+    shoot(wizard, qtbot, shots, "wizard-landmarks-placed.png")
     others = [k for k in placed_by_eye if k not in REQUIRED_FRONT]
     d = np.array([np.subtract(front.state()[k][:2], placed_by_eye[k]) for k in others])
     print(f"astronaut: Place the rest puts {len(others)} points {np.sqrt((d ** 2).sum(axis=1).mean()):.1f} px RMS "
           "from where they were placed by eye")
     assert page.load(DOCS / "astronaut_points.json")
-    shoot(wizard, qtbot, "wizard-landmarks.png")
+    shoot(wizard, qtbot, shots, "wizard-landmarks.png")
     wizard.next()
     qtbot.waitUntil(wizard.fit_page.isComplete, timeout=FIT_TIMEOUT_MS)
     wizard.fit_page.canvases["front"].zoom_to(FACE)
-    shoot(wizard, qtbot, "wizard-fit.png")
+    shoot(wizard, qtbot, shots, "wizard-fit.png")
     wizard.next()
-    written = shoot(wizard, qtbot, "wizard-result.png")
+    written = shoot(wizard, qtbot, shots, "wizard-result.png")
     wizard.reject()
 
     wizard = open_wizard(head_window, qtbot)
@@ -84,7 +89,7 @@ def test_screenshots_of_a_real_portrait_and_a_two_view_fit(head_window, photogra
     assert wizard.landmark_page.load(photographs / "points.json")
     wizard.next()
     qtbot.waitUntil(wizard.fit_page.isComplete, timeout=FIT_TIMEOUT_MS)
-    two = shoot(wizard, qtbot, "wizard-fit-two-views.png")
+    two = shoot(wizard, qtbot, shots, "wizard-fit-two-views.png")
     wizard.reject()
     for path in (written, two):
         with Image.open(path) as picture:

@@ -281,7 +281,8 @@ def test_a_phone_table_file_is_chosen_said_with_and_kept(head_window, qtbot, mon
     from engine.speech.articulation import shipped_tables
 
     shipped = shipped_tables()["finnish"].read_text(encoding="utf-8")
-    lines = [("a          0.9       " + line[20:]) if line.startswith("a    ") else line for line in shipped.splitlines()]
+    lines = [("a          0.9       " + line[20:]) if line.startswith("a    ") else line
+             for line in shipped.splitlines()]
     wider = tmp_path / "learned.phones"
     wider.write_text("\n".join(lines) + "\n", encoding="utf-8")
     broken = tmp_path / "broken.phones"
