@@ -65,8 +65,12 @@ def retarget(stream: CaptureStream, model: Model) -> Retargeted:
     sums: dict[str, np.ndarray] = {}
     warnings: list[str] = []
     missing: dict[str, list[str]] = {}
+    direct = arkit_targets(model) if stream.format in ("arkit", "mediapipe") else {}
+    for channel, target in direct.items():           # the model's own ARKit targets take their channel as is
+        if channel in channels:
+            sums[target] = np.asarray(channels[channel], dtype=float)
     for channel, target, weight, _ in table:
-        if channel not in channels:
+        if channel not in channels or channel in direct:
             continue
         if target not in names:
             missing.setdefault(target, []).append(channel)
@@ -84,7 +88,7 @@ def retarget(stream: CaptureStream, model: Model) -> Retargeted:
     for target, sources in missing.items():
         warnings.append(f"the model has no parameter '{target}': {', '.join(sorted(set(sources)))} skipped")
     for channel, why in lost.items():
-        if channel in channels and np.max(np.abs(channels[channel])) / scale > LOST_THRESHOLD:
+        if channel in channels and channel not in direct and np.max(np.abs(channels[channel])) / scale > LOST_THRESHOLD:
             warnings.append(f"{channel} is not carried over ({why})")
     ordered = [n for n in tree.names if n in sums]
     values = np.zeros((stream.frames, len(ordered)))
@@ -97,6 +101,20 @@ def retarget(stream: CaptureStream, model: Model) -> Retargeted:
             clamped[name] = Clamped(int(outside.sum()), float(raw.min()), float(raw.max()))
         values[:, j] = np.clip(raw, low, high)
     return Retargeted(stream.times_ms.copy(), ordered, values, clamped, warnings)
+
+
+def arkit_targets(model: Model) -> dict[str, str]:
+    """The model's parameters named after ARKit blendshapes (any capitalisation: ``jawOpen``, ``JawOpen``):
+    blendshape → parameter. A model made for ARKit capture (its own 52 targets) is driven through them
+    directly, each channel's value as the parameter's; the others go through the tables."""
+    from engine.capture.arkit_names import canonical_blendshape
+
+    found: dict[str, str] = {}
+    for name in model.parameters.names:
+        shape = canonical_blendshape(name)
+        if shape is not None:
+            found.setdefault(shape, name)
+    return found
 
 
 def _eye_angles_from_shapes(channels: dict[str, np.ndarray]) -> None:

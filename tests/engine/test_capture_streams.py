@@ -345,3 +345,29 @@ def test_each_blendshape_moves_the_head_as_the_heads_own_reference_pose_of_it(he
         assert cosine > moved @ other / np.linalg.norm(moved) / np.linalg.norm(other) + 0.5
     if not shape.startswith("eyeLook"):          # eye turns follow the recorded angles (docs/capture-streams.md)
         assert 0.8 <= moved @ reference / (moved @ moved) <= 1.25
+
+
+def test_a_model_with_its_own_arkit_targets_is_driven_through_them(head):
+    """A head made for ARKit capture (parameters named after the blendshapes, any capitalisation) takes each
+    channel as is; channels it has no target for still go through the tables (issue 22 §3)."""
+    from engine.fitting.reference_poses import reference_pose
+    from engine.model import InfluenceRegion, Parameter
+    from engine.paths import reference_poses_path
+
+    if not reference_poses_path().exists():
+        pytest.skip("the default head's reference poses are not built")
+    rig = head.copy()
+    for name in ("mouthSmileLeft", "TongueOut"):
+        field = reference_pose(name[0].lower() + name[1:])
+        moved = np.flatnonzero(np.abs(field).max(axis=1) > 0)
+        rig.add_parameter(Parameter(name, "translation", field=True, minimum=0.0, maximum=1.0),
+                          InfluenceRegion(moved, np.ones(len(moved)), field[moved]))
+    take = parse_live_link_face(llf_text([{}, {"MouthSmileLeft": 0.8, "MouthSmileRight": 0.5, "TongueOut": 0.4}]))
+    mapped = retarget(take, rig)
+    values = dict(zip(mapped.parameters, mapped.values[1], strict=True))
+    assert values["mouthSmileLeft"] == pytest.approx(0.8) and values["TongueOut"] == pytest.approx(0.4)
+    assert "AU12_left" not in values or values["AU12_left"] == 0.0        # not also through the table
+    assert values["AU12_right"] > 0.0                                       # no target of its own: the table
+    assert not any("TongueOut" in w or "tongueOut" in w for w in mapped.warnings)
+    plain = dict(zip(*(lambda m: (m.parameters, m.values[1]))(retarget(take, head)), strict=True))
+    assert plain["AU12_left"] > 0.0 and "mouthSmileLeft" not in plain      # the default head: the tables
