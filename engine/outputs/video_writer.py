@@ -34,14 +34,11 @@ frames that look exactly like :func:`engine.outputs.render.render_model`'s pictu
 
 from __future__ import annotations
 
-import contextlib
 import math
-import queue
 import resource
 import subprocess
 import sys
 import tempfile
-import threading
 import time
 import wave
 from collections.abc import Callable, Sequence
@@ -56,6 +53,7 @@ from numpy.typing import ArrayLike
 from engine.errors import UserError
 from engine.formats.atomic import atomic_files
 from engine.model.model import Model
+from engine.outputs.frame_pipe import FrameWriter
 from engine.outputs.render_helper import RenderHelper, helper_wanted
 from engine.outputs.video_tools import FFmpegMissing, VideoError, find_tool, stderr_tail
 from engine.processes import with_parent_death_signal
@@ -73,7 +71,6 @@ AUDIO_ARGS = ["-c:a", "aac", "-b:a", "96k"]
 #: Sample rates the AAC encoder takes; other rates are resampled to the next one up.
 AAC_RATES = (7350, 8000, 11025, 12000, 16000, 22050, 24000, 32000, 44100, 48000, 64000, 88200, 96000)
 FRAME_TIME_TOLERANCE = 0.01          # of a frame interval: how far a frame time may be off its slot
-QUEUED_FRAMES = 4                     # frames rendered ahead of the encoder
 
 
 @dataclass
@@ -249,7 +246,7 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                                            stdout=subprocess.DEVNULL, stderr=log,
                                            start_new_session=True)   # Ctrl-C reaches us, not it
                 assert process.stdin is not None              # stdin=PIPE
-                writer = _FrameWriter(process.stdin)
+                writer = FrameWriter(process.stdin)
                 if progress is not None:
                     progress(0, count)
                 for n in range(count):
@@ -288,59 +285,6 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                 process.wait()
     stats.total = time.perf_counter() - started
     return stats
-
-
-class _FrameWriter:
-    """A thread that writes frames into ffmpeg's stdin, so drawing the next frame
-    overlaps with ffmpeg reading this one."""
-
-    def __init__(self, pipe: IO[bytes]):
-        self.pipe = pipe
-        self.error: BaseException | None = None
-        self._queue: queue.Queue[np.ndarray | None] = queue.Queue(maxsize=QUEUED_FRAMES)
-        self._thread = threading.Thread(target=self._run, name="ffmpeg-writer", daemon=True)
-        self._thread.start()
-
-    def _run(self) -> None:
-        while True:
-            frame = self._queue.get()
-            if frame is None:
-                break
-            if self.error is not None:
-                continue                      # keep draining so put() never blocks forever
-            try:
-                self.pipe.write(memoryview(np.ascontiguousarray(frame).data).cast("B"))
-            except (OSError, ValueError) as exc:      # BrokenPipeError: ffmpeg exited
-                self.error = exc
-        try:
-            self.pipe.close()
-        except OSError as exc:
-            if self.error is None:
-                self.error = exc
-
-    def put(self, frame: np.ndarray) -> bool:
-        """Queue a frame (waits while the queue is full); False once writing has failed."""
-        if self.error is not None:
-            return False
-        self._queue.put(frame)
-        return self.error is None
-
-    def close(self) -> None:
-        """No more frames: finish writing and close the pipe (ffmpeg then sees the end)."""
-        self._queue.put(None)
-        self._thread.join()
-
-    def abandon(self) -> None:
-        """After a failure: stop the thread without waiting for ffmpeg (which is then killed)."""
-        if self._thread.is_alive():
-            self.error = self.error or RuntimeError("abandoned")
-            try:
-                while True:
-                    self._queue.get_nowait()
-            except queue.Empty:
-                pass
-            with contextlib.suppress(queue.Full):
-                self._queue.put_nowait(None)
 
 
 def _check_frames(model: Model, times_ms: ArrayLike, values: ArrayLike, parameter_names: Sequence[str],
