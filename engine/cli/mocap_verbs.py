@@ -28,6 +28,7 @@ from engine.cli.common import (
     positive_int,
     positive_number,
     size,
+    time_ms,
 )
 from engine.errors import UserError
 
@@ -150,7 +151,7 @@ def add_animate(steps: Any) -> None:
     p.add_argument("--head-motion", action="store_true",
                    help="turn, nod and tilt the head as the recording's head moved (from its first aligned frame)")
     p.add_argument("--audio", default=None, metavar="TAKE.wav", help="the take's sound, for a video")
-    p.add_argument("--audio-offset", type=_finite, default=0.0, metavar="MS",
+    p.add_argument("--audio-offset", type=time_ms, default=0.0, metavar="MS",
                    help="when the sound's first sample plays relative to the first frame, ms (positive: later)")
     p.add_argument("--size", type=size, default=(640, 480), metavar="WxH", help="video size (default 640x480)")
     p.add_argument("--view", choices=VIEW_NAMES, default="front", help="camera for the video (default front)")
@@ -359,14 +360,3 @@ def run_animate(args: argparse.Namespace) -> int:
     print(f"wrote {out}")
     return 0
 
-
-def _finite(text: str) -> float:
-    import math
-
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
-    if not math.isfinite(value):
-        raise argparse.ArgumentTypeError(f"'{text}' is not a finite number")
-    return value

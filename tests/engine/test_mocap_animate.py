@@ -188,7 +188,8 @@ def test_cli_writes_a_video_with_the_take_s_sound_later_by_the_offset(files):
     (["-o", "take.avi"], "extension"),
     (["--audio", "take.wav", "-o", "take.csv"], "video"),
     (["--audio-offset", "20", "-o", "take.csv"], "--audio"),
-    (["--audio-offset", "nan", "--audio", "take.wav", "-o", "take.mp4"], "number"),
+    (["--audio-offset", "soon", "--audio", "take.wav", "-o", "take.mp4"], "number"),
+    (["--audio-offset", "nan", "--audio", "take.wav", "-o", "take.mp4"], "beyond"),
     (["--prefix", "art", "-o", "take.csv"], None),
 ])
 def test_cli_refuses_bad_arguments_in_one_line(files, args, words):

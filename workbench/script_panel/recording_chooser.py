@@ -12,7 +12,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from PySide6.QtCore import QSettings, Signal
-from PySide6.QtWidgets import QFileDialog, QHBoxLayout, QLineEdit, QPushButton, QToolButton, QWidget
+from PySide6.QtWidgets import QFileDialog, QWidget
+
+from .file_choice_row import FileChoiceRow
 
 KEY_AUDIO = "script_panel/recording_audio"
 KEY_LABELS = "script_panel/recording_labels"
@@ -20,35 +22,18 @@ LABEL_SUFFIXES = (".TextGrid", ".textgrid", ".lab", ".csv", ".txt")
 LABEL_FILTER = "Phone labels (*.TextGrid *.textgrid *.lab *.csv *.txt);;All files (*)"
 
 
-class RecordingChooser(QWidget):
+class RecordingChooser(FileChoiceRow):
     """``recording`` is ``(wav, labels)`` or ``None`` (Festival speaks); ``changed`` fires when it changes."""
 
     changed = Signal()
 
     def __init__(self, parent: QWidget | None = None):
-        super().__init__(parent)
+        super().__init__(
+            "recording", "none: Festival speaks",
+            "Speak with a recorded voice: a WAV file and its phone labels (TextGrid, label file or phones CSV); "
+            "the text then holds only the inline commands, anchored to the labels' word tier",
+            "Back to Festival's voice", self.choose, lambda: self.set_recording(None), parent)
         self.recording: tuple[Path, Path] | None = None
-        self.summary = QLineEdit()                 # read-only: long names scroll instead of widening the dock
-        self.summary.setReadOnly(True)
-        self.summary.setPlaceholderText("none: Festival speaks")
-        self.summary.setMinimumWidth(60)
-        self.summary.setObjectName("script_panel.recording")
-        self.choose_button = QPushButton("Choose…")
-        self.choose_button.setObjectName("script_panel.choose_recording")
-        self.choose_button.setToolTip("Speak with a recorded voice: a WAV file and its phone labels "
-                                      "(TextGrid, label file or phones CSV); the text then holds only the "
-                                      "inline commands, anchored to the labels' word tier")
-        self.choose_button.clicked.connect(self.choose)
-        self.clear_button = QToolButton()
-        self.clear_button.setText("×")
-        self.clear_button.setObjectName("script_panel.clear_recording")
-        self.clear_button.setToolTip("Back to Festival's voice")
-        self.clear_button.clicked.connect(lambda: self.set_recording(None))
-        row = QHBoxLayout(self)
-        row.setContentsMargins(0, 0, 0, 0)
-        row.addWidget(self.summary, 1)
-        row.addWidget(self.choose_button)
-        row.addWidget(self.clear_button)
         self._restore()
 
     def choose(self) -> None:
@@ -67,10 +52,9 @@ class RecordingChooser(QWidget):
 
     def set_recording(self, recording: tuple[Path, Path] | None) -> None:
         self.recording = (Path(recording[0]), Path(recording[1])) if recording else None
-        self.summary.setText(f"{self.recording[0].name} + {self.recording[1].name}" if self.recording else "")
-        self.summary.setCursorPosition(0)
-        self.summary.setToolTip("\n".join(str(p) for p in self.recording) if self.recording else "")
-        self.clear_button.setEnabled(self.recording is not None)
+        self.show_choice(f"{self.recording[0].name} + {self.recording[1].name}" if self.recording else "",
+                         "\n".join(str(p) for p in self.recording) if self.recording else "",
+                         self.recording is not None)
         store = QSettings()
         store.setValue(KEY_AUDIO, str(self.recording[0]) if self.recording else "")
         store.setValue(KEY_LABELS, str(self.recording[1]) if self.recording else "")

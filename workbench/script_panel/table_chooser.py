@@ -14,43 +14,28 @@ from __future__ import annotations
 from pathlib import Path
 
 from PySide6.QtCore import QSettings, Signal
-from PySide6.QtWidgets import QFileDialog, QHBoxLayout, QLineEdit, QMessageBox, QPushButton, QToolButton, QWidget
+from PySide6.QtWidgets import QFileDialog, QMessageBox, QWidget
 
 from engine.errors import UserError
+
+from .file_choice_row import FileChoiceRow
 
 KEY_TABLE = "script_panel/phone_table"
 TABLE_FILTER = "Phone tables (*.phones);;All files (*)"
 TITLE = "Phone table"
 
 
-class PhoneTableChooser(QWidget):
+class PhoneTableChooser(FileChoiceRow):
     """``path`` is the chosen table file or ``None`` (the shipped table); ``changed`` fires when it changes."""
 
     changed = Signal()
 
     def __init__(self, parent: QWidget | None = None):
-        super().__init__(parent)
+        super().__init__(
+            "phone_table", "the shipped table of the voice",
+            "Articulate with another phone → target table (a .phones file, e.g. one learned from motion capture "
+            "by 'mocap learn')", "Back to the shipped table", self.choose, lambda: self.set_path(None), parent)
         self.path: Path | None = None
-        self.summary = QLineEdit()                 # read-only: long names scroll instead of widening the dock
-        self.summary.setReadOnly(True)
-        self.summary.setPlaceholderText("the shipped table of the voice")
-        self.summary.setMinimumWidth(60)
-        self.summary.setObjectName("script_panel.phone_table")
-        self.choose_button = QPushButton("Choose…")
-        self.choose_button.setObjectName("script_panel.choose_phone_table")
-        self.choose_button.setToolTip("Articulate with another phone → target table (a .phones file, e.g. one "
-                                      "learned from motion capture by 'mocap learn')")
-        self.choose_button.clicked.connect(self.choose)
-        self.clear_button = QToolButton()
-        self.clear_button.setText("×")
-        self.clear_button.setObjectName("script_panel.clear_phone_table")
-        self.clear_button.setToolTip("Back to the shipped table")
-        self.clear_button.clicked.connect(lambda: self.set_path(None))
-        row = QHBoxLayout(self)
-        row.setContentsMargins(0, 0, 0, 0)
-        row.addWidget(self.summary, 1)
-        row.addWidget(self.choose_button)
-        row.addWidget(self.clear_button)
         self._restore()
 
     def choose(self) -> None:
@@ -71,10 +56,8 @@ class PhoneTableChooser(QWidget):
                     QMessageBox.warning(self, TITLE, f"This phone table cannot be used:\n{exc}")
                 return False
         self.path = Path(path) if path is not None else None
-        self.summary.setText(self.path.name if self.path else "")
-        self.summary.setCursorPosition(0)
-        self.summary.setToolTip(str(self.path) if self.path else "")
-        self.clear_button.setEnabled(self.path is not None)
+        self.show_choice(self.path.name if self.path else "", str(self.path) if self.path else "",
+                         self.path is not None)
         QSettings().setValue(KEY_TABLE, str(self.path) if self.path else "")
         self.changed.emit()
         return True
