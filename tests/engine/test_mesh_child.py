@@ -36,7 +36,11 @@ def test_the_cli_says_one_line_where_vtk_crashes(tmp_path):
     result = subprocess.run([sys.executable, "-m", "engine", "import-mesh", str(path), "-o", str(tmp_path / "m.xml")],
                             capture_output=True, text=True, check=False)
     assert result.returncode == 2
-    assert result.stderr.startswith(f"error: {path}: VTK's reader crashed") and result.stderr.count("\n") == 1
+    # VTK's read past the end crashes it nearly always; when the memory it reads happens not to crash it,
+    # the face check that follows refuses the file instead: one line naming it either way
+    assert result.stderr.startswith((f"error: {path}: VTK's reader crashed",
+                                     f"error: {path}: a face names a vertex outside")), result.stderr
+    assert result.stderr.count("\n") == 1
 
 
 def _new_children(of: int, known: set[int]) -> list[int]:
