@@ -22,6 +22,7 @@ import numpy as np
 
 MIDLINE_MM = 8.0            # half-width of the left/right mask's ramp across the midline
 EYE_BAND_MM = (5.0, 3.0)    # AU9's nose/brow split ramps from this far below to this far above the eye centres
+AU9_NOSE_GAIN = 1.7         # the artist's sneer below the eyes, strengthened to FACS's AU9 at E (wings up 2.2-2.4 mm)
 SKIN_AND_LASHES = ["skin", "eyelashes_left", "eyelashes_right"]
 ARKIT, UNITS = "arkit/", "expression_units/"
 
@@ -80,8 +81,10 @@ ACTION_UNITS: list[ActionUnit] = [
     *_pair("AU6", "cheek raiser", "translation", "head_tilt", [ARKIT + "cheekSquintLeft", ARKIT + "cheekSquintRight"]),
     *_pair("AU7", "lid tightener", "rotation", "head_tilt", [ARKIT + "eyeSquintLeft", ARKIT + "eyeSquintRight"],
            what=": the lower lid up"),
-    # AU9 in two parts: the sneer lifts the nose wing and upper lip and pulls the inner brow down
-    *_pair("AU9", "nose wrinkler", "field", "head_tilt", [ARKIT + "noseSneerLeft", ARKIT + "noseSneerRight"],
+    # AU9 in two parts: the sneer lifts the nose wing and upper lip and pulls the inner brow down;
+    # the nose part at AU9_NOSE_GAIN times the artist's sneer, whose wings rise only 1.3-1.4 mm (docs/default-head.md)
+    *_pair("AU9", "nose wrinkler", "field", "head_tilt",
+           [(ARKIT + "noseSneerLeft", AU9_NOSE_GAIN), (ARKIT + "noseSneerRight", AU9_NOSE_GAIN)],
            suffix="_nose", band="lower", what=": nose wing, side of the nose and upper lip up"),
     *_pair("AU9", "nose wrinkler", "rotation", "head_tilt", [ARKIT + "noseSneerLeft", ARKIT + "noseSneerRight"],
            suffix="_brow", band="upper", what=": the inner brow down and in"),
