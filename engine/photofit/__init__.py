@@ -12,6 +12,7 @@ from engine.photofit.errors import PhotoFitError
 from engine.photofit.fit import PhotoFit, fit_photo_files, fit_photos
 from engine.photofit.photos import read_photo
 from engine.photofit.points import REQUIRED_FRONT, read_points
+from engine.photofit.stopping import FitStopped
 
-__all__ = ["REQUIRED_FRONT", "PhotoFit", "PhotoFitError", "fit_photo_files", "fit_photos", "read_photo",
-           "read_points"]
+__all__ = ["REQUIRED_FRONT", "FitStopped", "PhotoFit", "PhotoFitError", "fit_photo_files", "fit_photos",
+           "read_photo", "read_points"]

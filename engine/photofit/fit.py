@@ -20,6 +20,7 @@ from engine.photofit.eyes import recolour_irises
 from engine.photofit.photos import read_photo
 from engine.photofit.points import PhotoPoints, read_points
 from engine.photofit.shape import ShapeFit, fit_shape
+from engine.photofit.stopping import ShouldStop, stop_if_asked
 from engine.photofit.texture import bake_texture
 
 
@@ -35,18 +36,24 @@ FIT_STEPS = ("shape", "head", "rig", "texture", "eyes")
 
 
 def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Model | None = None, *,
-               progress: Callable[[str], object] | None = None) -> PhotoFit:
+               progress: Callable[[str], object] | None = None, should_stop: ShouldStop = None) -> PhotoFit:
     """Fit the default head to ``photos`` (view → RGB pixels) and their landmarks (view → id → pixel).
 
     ``progress(step)`` is called as each of :data:`FIT_STEPS` begins; an exception it raises stops the
-    fit there (how the workbench cancels one) and propagates.
+    fit there and propagates. ``should_stop()`` is asked between the steps and inside their long loops
+    (how the workbench's Stop ends a fit part-way through a step): once it answers ``True`` the fit
+    raises :class:`~engine.photofit.stopping.FitStopped`.
     """
-    report = progress if progress is not None else (lambda _step: None)
+    def report(step: str) -> None:
+        stop_if_asked(should_stop)
+        if progress is not None:
+            progress(step)
+
     base = base if base is not None else load_model()
     seconds: dict[str, float] = {"landmarks": 0.0}
     started = time.perf_counter()
     report("shape")
-    shape = fit_shape(base, {v: p for v, p in points.items() if v in photos}, photos.get("side"))
+    shape = fit_shape(base, {v: p for v, p in points.items() if v in photos}, photos.get("side"), should_stop)
     report("head")
     head = make_identity_head(shape.identity, base) if shape.identity.values else base.copy()
     moved = head.vertices + shape.warp
@@ -58,9 +65,13 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     report("rig")
     fitted = carry_rig_over(head, moved, rigid)
     # the warp moved lips and lids: fit the rig to them again as make_identity_head does for its own shape
+    stop_if_asked(should_stop)
     refit_articulation(base, fitted)
+    stop_if_asked(should_stop)
     refit_eyelid_angles(base, fitted)
+    stop_if_asked(should_stop)
     keep_fields_off_the_eyes(fitted)
+    stop_if_asked(should_stop)
     keep_lids_off_the_eyes(fitted)
     fitted.identity = head.identity
     fitted.name = "person-from-photos"
@@ -69,7 +80,7 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     started = time.perf_counter()
     report("texture")
     fitted.texture, _ = bake_texture(fitted, fitted.vertices, {v: p for v, p in photos.items() if v in shape.cameras},
-                                     shape.cameras)
+                                     shape.cameras, should_stop=should_stop)
     report("eyes")
     if "front" in photos:
         fitted.vertex_colors = None if fitted.vertex_colors is None else fitted.vertex_colors.copy()

@@ -10,14 +10,20 @@ from __future__ import annotations
 
 import numpy as np
 
+from engine.photofit.stopping import ShouldStop, stop_if_asked
 
-def rasterize(triangles: np.ndarray, width: int, height: int,
-              depth: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+#: Triangles drawn between two questions to ``should_stop`` (a few milliseconds of drawing).
+TRIANGLES_PER_STOP_CHECK = 128
+
+
+def rasterize(triangles: np.ndarray, width: int, height: int, depth: np.ndarray | None = None,
+              should_stop: ShouldStop = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Cover a ``height`` × ``width`` grid with (T, 3, 2) triangles (x, y in pixels; pixel centres at +0.5).
 
     Returns the triangle index of every pixel (−1 where none), the barycentric
     weights there (H, W, 3) and the depth (H, W; −inf where none). With
-    ``depth`` (T, 3) the nearest (largest) wins; without, the last drawn.
+    ``depth`` (T, 3) the nearest (largest) wins; without, the last drawn. ``should_stop`` is asked
+    every :data:`TRIANGLES_PER_STOP_CHECK` triangles (:mod:`engine.photofit.stopping`).
     """
     hit = np.full((height, width), -1, dtype=np.int64)
     bary = np.zeros((height, width, 3))
@@ -27,7 +33,9 @@ def rasterize(triangles: np.ndarray, width: int, height: int,
     hi = np.clip(np.ceil(tri.max(axis=1) - 0.5).astype(int) + 1, 0, [width, height])
     a, b, c = tri[:, 0], tri[:, 1], tri[:, 2]
     area = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (c[:, 0] - a[:, 0]) * (b[:, 1] - a[:, 1])
-    for t in np.flatnonzero((np.abs(area) > 1e-12) & np.all(hi > lo, axis=1)):
+    for drawn, t in enumerate(np.flatnonzero((np.abs(area) > 1e-12) & np.all(hi > lo, axis=1))):
+        if drawn % TRIANGLES_PER_STOP_CHECK == 0:
+            stop_if_asked(should_stop)
         xs = np.arange(lo[t, 0], hi[t, 0]) + 0.5
         ys = np.arange(lo[t, 1], hi[t, 1]) + 0.5
         X, Y = np.meshgrid(xs, ys)
@@ -59,7 +67,9 @@ def sample_bilinear(image: np.ndarray, xy: np.ndarray) -> np.ndarray:
     y0 = np.minimum(y.astype(int), max(height - 2, 0))
     x1, y1 = np.minimum(x0 + 1, width - 1), np.minimum(y0 + 1, height - 1)
     fx, fy = (x - x0)[:, None], (y - y0)[:, None]
-    im = image.astype(float)
-    top = im[y0, x0] * (1 - fx) + im[y0, x1] * fx
-    bottom = im[y1, x0] * (1 - fx) + im[y1, x1] * fx
+    def at(rows: np.ndarray, cols: np.ndarray) -> np.ndarray:     # only the pixels sampled become floats
+        return np.asarray(image[rows, cols], dtype=float)
+
+    top = at(y0, x0) * (1 - fx) + at(y0, x1) * fx
+    bottom = at(y1, x0) * (1 - fx) + at(y1, x1) * fx
     return np.asarray(top * (1 - fy) + bottom * fy)

@@ -7,7 +7,8 @@ optimiser works on that linear model; the cameras are fitted exactly (the
 rotation is non-linear). A prior keeps each parameter near its default, in
 units of :data:`PRIOR_SPREAD`. What the identity space cannot explain is
 taken up by a smooth warp (Gaussian radial basis functions of the landmarks'
-3-D residuals), eyes, teeth and tongue moving rigidly with it.
+3-D residuals), eyes, teeth and tongue moving rigidly with it. The sampling
+and the optimiser ask ``should_stop`` as they go (:mod:`engine.photofit.stopping`).
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from engine.identity import Identity, identity_parameter, identity_vertices
 from engine.model import Model
 from engine.photofit.camera import WeakPerspective, initial_vector
 from engine.photofit.silhouette import foreground, profile_moves, profile_vertices
+from engine.photofit.stopping import ShouldStop, stop_if_asked
 
 #: The identity parameters fitted, and the step used to sample each one's effect.
 FITTED_PARAMETERS = ("sex", "age", "weight", "head-scale-horiz-decr-incr", "head-scale-vert-decr-incr",
@@ -50,12 +52,14 @@ class ShapeFit:
     error: float                      # after the warp, px
 
 
-def landmark_basis(base: Model, ids: list[str]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def landmark_basis(base: Model, ids: list[str],
+                   should_stop: ShouldStop = None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Default values (P,), steps (P,), landmark rest positions (L, 3) and their change per unit (P, L, 3)."""
     index = np.array([base.landmarks[k] for k in ids])
     defaults, steps, basis = [], [], []
     rest = base.vertices[index]
     for name in FITTED_PARAMETERS:
+        stop_if_asked(should_stop)
         p = identity_parameter(name)
         step = 0.5 * (p.maximum - p.minimum) * 0.5
         value = p.default + step if p.default + step <= p.maximum else p.default - step
@@ -67,14 +71,14 @@ def landmark_basis(base: Model, ids: list[str]) -> tuple[np.ndarray, np.ndarray,
 
 
 def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]]],
-              side_photo: np.ndarray | None = None) -> ShapeFit:
+              side_photo: np.ndarray | None = None, should_stop: ShouldStop = None) -> ShapeFit:
     """Fit ``base`` (the default head) to the landmarks of each view (view → id → pixel).
 
     With ``side_photo`` on a plain background, the warp also puts the face's midline profile on the
     photograph's silhouette (:mod:`engine.photofit.silhouette`).
     """
     ids = sorted({k for view in points.values() for k in view})
-    defaults, _, rest, basis = landmark_basis(base, ids)
+    defaults, _, rest, basis = landmark_basis(base, ids, should_stop)
     spans = np.array([identity_parameter(n).maximum - identity_parameter(n).minimum for n in FITTED_PARAMETERS])
     lows = np.array([FIT_RANGES.get(n, (identity_parameter(n).minimum,))[0] for n in FITTED_PARAMETERS])
     highs = np.array([FIT_RANGES.get(n, (0.0, identity_parameter(n).maximum))[1] for n in FITTED_PARAMETERS])
@@ -87,6 +91,7 @@ def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]
         return np.asarray(rest + np.einsum("p,pld->ld", values - defaults, basis))
 
     def residuals(x: np.ndarray) -> np.ndarray:
+        stop_if_asked(should_stop)               # each evaluation of the optimiser
         values = x[:P]
         shape = landmarks(values)
         out = [(values - defaults) / (PRIOR_SPREAD * spans)]
@@ -112,17 +117,20 @@ def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]
     index = np.array([base.landmarks[k] for k in ids])
     before = _rms_error(vertices[index], cameras, chosen)
     moves = _landmark_moves(vertices[index], cameras, chosen, len(ids))
+    stop_if_asked(should_stop)
     warp = residual_warp(base, vertices, vertices[index], moves)
+    stop_if_asked(should_stop)
     if side_photo is not None and "side" in cameras:
-        warp = _with_profile(base, vertices, warp, vertices[index], moves, side_photo, cameras["side"])
+        warp = _with_profile(base, vertices, warp, vertices[index], moves, side_photo, cameras["side"], should_stop)
     after = _rms_error(vertices[index] + warp[index], cameras, chosen)
     return ShapeFit(identity, cameras, vertices + warp, warp, before, after)
 
 
 def _with_profile(base: Model, vertices: np.ndarray, warp: np.ndarray, centres: np.ndarray, moves: np.ndarray,
-                  photo: np.ndarray, camera: WeakPerspective) -> np.ndarray:
+                  photo: np.ndarray, camera: WeakPerspective, should_stop: ShouldStop = None) -> np.ndarray:
     """The warp again, with the midline profile's moves onto the side photograph's silhouette added."""
     mask = foreground(photo)
+    stop_if_asked(should_stop)
     if mask is None:
         return warp
     profile = profile_vertices(base, vertices + warp)
@@ -132,6 +140,7 @@ def _with_profile(base: Model, vertices: np.ndarray, warp: np.ndarray, centres: 
     if trusted.sum() < 3:
         return warp
     profile = profile[trusted]
+    stop_if_asked(should_stop)
     return residual_warp(base, vertices, np.concatenate([centres, vertices[profile]]),
                          np.concatenate([moves, warp[profile] + extra[trusted]]))
 

@@ -10,6 +10,7 @@ where both see the skin. What no photograph sees fades into a fill that
 continues the seen skin smoothly over the head (:func:`skin_fill`: its colour
 and shading where it meets the photographs, no edge, the mean of its borders
 far from them), not one flat colour. Eyes, teeth and tongue keep their colours.
+The drawing loops ask ``should_stop`` as they go (:mod:`engine.photofit.stopping`).
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from engine.model.cells import cell_sizes, cell_starts
 from engine.model.texture import ModelTexture, TextureImage
 from engine.photofit.camera import WeakPerspective
 from engine.photofit.raster import rasterize, sample_bilinear
+from engine.photofit.stopping import ShouldStop, stop_if_asked
 
 ATLAS_SIZE = 1024
 ZBUFFER_SIDE = 600                  # px: the longer side of the visibility buffer
@@ -70,7 +72,8 @@ def vertex_normals(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
 
 
 def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarray],
-                 cameras: Mapping[str, WeakPerspective], size: int = ATLAS_SIZE) -> tuple[ModelTexture, np.ndarray]:
+                 cameras: Mapping[str, WeakPerspective], size: int = ATLAS_SIZE,
+                 should_stop: ShouldStop = None) -> tuple[ModelTexture, np.ndarray]:
     """The model's texture with the photographs in its atlas, and the (size, size) weight the photos had."""
     assert model.texture is not None, "the head must have texture coordinates"
     tri_v, tri_c, tri_f = skin_triangles(model)
@@ -78,7 +81,7 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     in_atlas = np.all((uv >= 0) & (uv <= 1), axis=(1, 2))
     tri_v, tri_c, tri_f, uv = tri_v[in_atlas], tri_c[in_atlas], tri_f[in_atlas], uv[in_atlas]
     atlas_xy = np.stack([uv[..., 0] * size, (1 - uv[..., 1]) * size], axis=-1)
-    hit, bary, _ = rasterize(atlas_xy, size, size)
+    hit, bary, _ = rasterize(atlas_xy, size, size, should_stop=should_stop)
     covered = hit >= 0
     t, b = hit[covered], bary[covered]
     points = np.einsum("nk,nkd->nd", b, vertices[tri_v[t]])
@@ -91,17 +94,18 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     for view, photo in photos.items():
         camera = cameras[view]
         weight = np.clip((normal @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
-        weight *= _visible(points, vertices, occluders, camera, photo.shape[:2])
+        weight *= _visible(points, vertices, occluders, camera, photo.shape[:2], should_stop)
+        stop_if_asked(should_stop)
         colour += weight[:, None] * sample_bilinear(photo, camera.project(points))
         total += weight
     seen = total > 0.25
     mean = (colour[seen].sum(0) / total[seen].sum()) if seen.any() else np.array([200.0, 160.0, 140.0])
-    fill = skin_fill(model, vertices, photos, cameras, normals, occluders, mean)
+    fill = skin_fill(model, vertices, photos, cameras, normals, occluders, mean, should_stop)
     texels = (colour + FILL_WEIGHT * np.einsum("nk,nkd->nd", b, fill[tri_v[t]])) / (total + FILL_WEIGHT)[:, None]
     atlas = np.empty((size, size, 3))
     atlas[:] = mean
     atlas[covered] = texels
-    pad_islands(atlas, covered)
+    pad_islands(atlas, covered, should_stop=should_stop)
     weights = np.zeros((size, size))
     weights[covered] = total
     face_image = np.full(len(cell_sizes(model.faces)), -1, dtype=np.int64)
@@ -112,7 +116,7 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
 
 def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarray],
               cameras: Mapping[str, WeakPerspective], normals: np.ndarray, occluders: np.ndarray,
-              mean: np.ndarray) -> np.ndarray:
+              mean: np.ndarray, should_stop: ShouldStop = None) -> np.ndarray:
     """(N, 3) colours for every vertex: the photographs' where they see the skin, continued smoothly elsewhere.
 
     Each skin vertex gets the photographs' colour and weight as a texel does;
@@ -133,7 +137,7 @@ def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarra
     for view, photo in photos.items():
         camera = cameras[view]
         w = np.clip((normals[skin] @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
-        w *= _visible(vertices[skin], vertices, occluders, camera, photo.shape[:2])
+        w *= _visible(vertices[skin], vertices, occluders, camera, photo.shape[:2], should_stop)
         colour += w[:, None] * sample_bilinear(photo, camera.project(vertices[skin]))
         weight += w
     observed = np.divide(colour, weight[:, None], out=np.tile(mean, (len(skin), 1)), where=weight[:, None] > 0)
@@ -145,16 +149,19 @@ def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarra
     laplacian = sparse.diags(np.asarray(adjacency.sum(axis=1)).ravel()) - adjacency
     pull = 1e-6
     system = (sparse.diags(weight + pull) + FILL_SMOOTHNESS * laplacian).tocsc()
+    stop_if_asked(should_stop)
     solved = spsolve(system, weight[:, None] * observed + pull * mean)
     fill = np.tile(mean, (n, 1))
     fill[skin] = np.asarray(solved).reshape(len(skin), 3)
     return fill
 
 
-def pad_islands(atlas: np.ndarray, covered: np.ndarray, texels: int = ISLAND_PADDING) -> None:
+def pad_islands(atlas: np.ndarray, covered: np.ndarray, texels: int = ISLAND_PADDING,
+                should_stop: ShouldStop = None) -> None:
     """Grow each UV island's colours ``texels`` outwards, so filtering across its edge shows no seam."""
     filled = covered.copy()
     for _ in range(texels):
+        stop_if_asked(should_stop)
         total = np.zeros(atlas.shape)
         count = np.zeros(filled.shape)
         for dy, dx in ((0, 1), (0, -1), (1, 0), (-1, 0)):
@@ -167,14 +174,14 @@ def pad_islands(atlas: np.ndarray, covered: np.ndarray, texels: int = ISLAND_PAD
 
 
 def _visible(points: np.ndarray, vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective,
-             shape: tuple[int, ...]) -> np.ndarray:
+             shape: tuple[int, ...], should_stop: ShouldStop = None) -> np.ndarray:
     """(N,) 1 where a point is the nearest surface in the photograph, else 0 (a coarse z-buffer)."""
     height, width = shape[0], shape[1]
     factor = ZBUFFER_SIDE / max(height, width)
     w, h = max(round(width * factor), 1), max(round(height * factor), 1)
     projected = camera.project(vertices) * factor
     depth = camera.depth(vertices)
-    _, _, zbuf = rasterize(projected[triangles], w, h, depth[triangles])
+    _, _, zbuf = rasterize(projected[triangles], w, h, depth[triangles], should_stop)
     xy = camera.project(points) * factor
     col = np.clip(xy[:, 0].astype(int), 0, w - 1)
     row = np.clip(xy[:, 1].astype(int), 0, h - 1)
