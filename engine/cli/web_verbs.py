@@ -1,0 +1,85 @@
+"""The ``web-export`` verb: a folder that plays the head in a web browser, offline (docs/web-export.md).
+
+>>> from engine.cli import main
+>>> main(["web-export", "--say", "Pappa osti omenoita.", "-o", "site"])                    # doctest: +SKIP
+>>> main(["web-export", "--tracks", "t.csv", "--audio", "t.wav", "-o", "site"])           # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import Any
+
+from engine.cli.common import add_library_option, add_model_option, frame_rate, load_model_argument, size
+from engine.errors import UserError
+from engine.formats.text_files import read_bounded_text
+
+
+def add_verbs(verbs: Any) -> None:
+    """Add ``web-export`` to the CLI's sub-parsers."""
+    p = verbs.add_parser("web-export", help="an offline web page that plays the head (index.html?t=MS: paused at MS)")
+    add_model_option(p)
+    source = p.add_mutually_exclusive_group()
+    source.add_argument("--say", metavar="TEXT", help="speak this text (with inline commands) with Festival")
+    source.add_argument("--file", metavar="F", help="speak the text of this UTF-8 file")
+    source.add_argument("--tracks", metavar="CSV", help="play a tracks CSV (time_ms,<parameter>,...) ...")
+    p.add_argument("--audio", metavar="WAV", help="... with this audio (PCM WAV, copied unchanged)")
+    p.add_argument("--phones", metavar="CSV", help="... and the words of this phones CSV for the word events")
+    p.add_argument("--voice", default=None, metavar="V", help="Festival voice (default suo_fi_lj_diphone)")
+    add_library_option(p)
+    p.add_argument("--fps", type=frame_rate, default=60.0, metavar="N",
+                   help="frames per second of the animation table for --say/--file (default 60)")
+    p.add_argument("--size", type=size, default=(600, 800), metavar="WxH",
+                   help="the picture's size in pixels, as render --size (default 600x800)")
+    p.add_argument("-o", "--output", required=True, metavar="SITE/", help="the folder to write (new, empty or an "
+                                                                          "earlier site)")
+    p.set_defaults(run=run_web_export)
+
+
+def run_web_export(args: argparse.Namespace) -> int:
+    """Write the site and print what it holds and its size."""
+    from engine.web.site import write_speech_site, write_tracks_site
+
+    out = Path(args.output)
+    if args.tracks is not None:
+        if args.audio is None:
+            raise UserError("--tracks needs --audio WAV (the sound the tracks go with)")
+        if args.voice is not None:
+            raise UserError("--voice applies to --say and --file; tracks come with their own audio")
+        model = load_model_argument(args.model)
+        sizes = write_tracks_site(model, args.tracks, args.audio, out, phones=args.phones, size=args.size)
+    else:
+        for option in ("audio", "phones"):
+            if getattr(args, option) is not None:
+                raise UserError(f"--{option} goes with --tracks CSV")
+        text, name = _text(args)
+        from engine.commands import load_library
+        from engine.speech.festival_server import festival_synthesizer
+        from engine.speech.say import speak
+
+        model = load_model_argument(args.model)
+        library = load_library(args.library)
+        speech = speak(text, model, festival_synthesizer(None), voice=args.voice, library=library, name=name)
+        for warning in speech.warnings:
+            print(f"warning: {warning}", file=sys.stderr)
+        sizes = write_speech_site(speech, model, out, fps=args.fps, size=args.size)
+    total = sum(sizes.values())
+    print(f"wrote {out}/: index.html, player.js, three.js, head.glb ({sizes['head.glb'] / 1e3:.0f} kB), "
+          f"animation.json ({sizes['animation.json'] / 1e3:.0f} kB), speech.wav ({sizes['speech.wav'] / 1e3:.0f} kB);"
+          f" {total / 1e6:.2f} MB in all")
+    return 0
+
+
+def _text(args: argparse.Namespace) -> tuple[str, str]:
+    if args.say is not None:
+        return args.say, "<text>"
+    if args.file is None:
+        raise UserError("nothing to play: give --say TEXT, --file F, or --tracks CSV --audio WAV")
+    try:
+        return read_bounded_text(args.file, error=UserError, what="text"), args.file
+    except OSError as exc:
+        raise UserError(f"cannot read the text: {exc.strerror or exc}", file=args.file) from None
+    except UnicodeDecodeError:
+        raise UserError("the text file is not UTF-8", file=args.file) from None

@@ -1,0 +1,274 @@
+// The Artificial Person web player (docs/web-export.md).
+//
+//   const player = new ArtificialPerson(canvas);
+//   await player.load("animation.json");       // the model, the frame table, the audio
+//   await player.play();  player.pause();  player.seek(1200);
+//   player.addEventListener("word", (e) => console.log(e.detail.word, e.detail.t));
+//
+// Events (CustomEvent, detail.t = performance.now() when the player saw it):
+//   ready, play, pause, seek, word {word, start_ms, end_ms}, ended.
+// The clock is the audio's (AudioContext.currentTime, less the output latency) once the
+// sound runs; before that, performance.now() since play().
+
+import * as THREE from "three";
+import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
+
+THREE.ColorManagement.enabled = false;   // light colours as they are written, as the engine's renderer does
+
+function linearToSrgb(c) {
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
+}
+
+export class ArtificialPerson extends EventTarget {
+  constructor(canvas) {
+    super();
+    this.canvas = canvas;
+    this.position = 0;            // ms on the animation's clock
+    this.playing = false;
+    this.ready = false;
+    this.framesDrawn = 0;
+    this._waiters = [];
+    this._readyWaiters = [];
+  }
+
+  /** Load a site's animation JSON (and the model and audio it names); resolves when the first frame is drawn. */
+  async load(url = "animation.json") {
+    const base = new URL(url, location.href);
+    const response = await fetch(base);
+    if (!response.ok) throw new Error(`cannot load ${url}: ${response.status}`);
+    const animation = await response.json();
+    this.animation = animation;
+    this.duration = animation.duration_ms;
+    this._setUpScene(animation);
+    const gltf = await new GLTFLoader().loadAsync(new URL(animation.model, base).href);
+    this._setUpModel(gltf, animation);
+    this.audioContext = new AudioContext();
+    const audio = await fetch(new URL(animation.audio, base));
+    this.audioBuffer = await this.audioContext.decodeAudioData(await audio.arrayBuffer());
+    this._apply(0);
+    this._tick = this._tick.bind(this);
+    requestAnimationFrame(this._tick);
+    await this.nextFrame();
+    this.ready = true;
+    this._readyWaiters.splice(0).forEach((resolve) => resolve());
+    this._emit("ready", {});
+    return this;
+  }
+
+  /** Resolves once the player is loaded and has drawn its first frame. */
+  whenReady() {
+    return this.ready ? Promise.resolve() : new Promise((resolve) => this._readyWaiters.push(resolve));
+  }
+
+  /** Resolves after the next frame is drawn. */
+  nextFrame() {
+    return new Promise((resolve) => this._waiters.push(resolve));
+  }
+
+  /** Play from the current position; resolves true when the sound runs, false when the browser holds it. */
+  async play() {
+    if (this.playing) return true;
+    if (this.position >= this.duration) this.position = 0;
+    this.playing = true;
+    this._from = this.position;
+    this._wallStart = performance.now();
+    this._lastEvent = this.position - 1e-6;
+    this._source = null;
+    this._emit("play", { at_ms: this.position });
+    try {
+      await Promise.race([this.audioContext.resume(), new Promise((r) => setTimeout(r, 300))]);
+    } catch (error) { /* no sound: the animation runs on performance.now() */ }
+    if (!this.playing || this.audioContext.state !== "running") return this.audioContext.state === "running";
+    const source = this.audioContext.createBufferSource();
+    source.buffer = this.audioBuffer;
+    source.connect(this.audioContext.destination);
+    this._audioWhen = this.audioContext.currentTime + 0.05;
+    this._audioFrom = this.position + 50;      // where the sound will be when it starts
+    if (this._audioFrom < this.audioBuffer.duration * 1000) {
+      source.start(this._audioWhen, this._audioFrom / 1000);
+      this._source = source;
+    }
+    return true;
+  }
+
+  pause() {
+    if (!this.playing) return;
+    this._stopSound();
+    this.playing = false;
+    this._emit("pause", { at_ms: this.position });
+  }
+
+  /** Show the frame at ``ms`` (the player keeps playing from there if it was playing). */
+  seek(ms) {
+    const playing = this.playing;
+    if (playing) this.pause();
+    this.position = Math.min(Math.max(Number(ms) || 0, 0), this.duration);
+    this._apply(this.position);
+    this._emit("seek", { at_ms: this.position });
+    if (playing) this.play();
+  }
+
+  /** Frames drawn since load and how long the player has run (ms): the frame rate it holds. */
+  stats() {
+    return { frames: this.framesDrawn, since_ms: performance.now() - this._firstFrameAt };
+  }
+
+  // -- the clock -----------------------------------------------------------------------------
+
+  _clock() {
+    const context = this.audioContext;
+    if (this._source && context.state === "running" && context.currentTime >= this._audioWhen) {
+      const latency = (context.outputLatency || 0) * 1000;
+      return this._audioFrom + (context.currentTime - this._audioWhen) * 1000 - latency;
+    }
+    return this._from + (performance.now() - this._wallStart);
+  }
+
+  _tick() {
+    requestAnimationFrame(this._tick);
+    if (this.playing) {
+      const position = Math.max(this._clock(), this.position);   // never backwards
+      this.position = Math.min(position, this.duration);
+      this._apply(this.position);
+      this._wordEvents(this.position);
+      if (this.position >= this.duration) {
+        this._stopSound();
+        this.playing = false;
+        this._emit("ended", { at_ms: this.position });
+      }
+    }
+    this.renderer.render(this.scene, this.camera);
+    if (this.framesDrawn === 0) this._firstFrameAt = performance.now();
+    this.framesDrawn += 1;
+    this._waiters.splice(0).forEach((resolve) => resolve());
+  }
+
+  _wordEvents(position) {
+    for (const word of this.animation.words) {
+      if (word.start_ms > this._lastEvent && word.start_ms <= position) this._emit("word", { ...word });
+    }
+    this._lastEvent = position;
+  }
+
+  _stopSound() {
+    if (this._source) {
+      try { this._source.stop(); } catch (error) { /* never started */ }
+      this._source.disconnect();
+      this._source = null;
+    }
+  }
+
+  _emit(type, detail) {
+    this.dispatchEvent(new CustomEvent(type, { detail: { ...detail, t: performance.now() } }));
+  }
+
+  // -- the scene -----------------------------------------------------------------------------
+
+  _setUpScene(animation) {
+    const c = animation.camera;
+    this.renderer = new THREE.WebGLRenderer({ canvas: this.canvas, antialias: true, alpha: true });
+    this.renderer.setPixelRatio(1);
+    this.renderer.setSize(c.width, c.height, false);
+    this.renderer.outputColorSpace = THREE.LinearSRGBColorSpace;
+    this.renderer.setClearColor(0x000000, 0);
+    this.scene = new THREE.Scene();
+    this.camera = new THREE.PerspectiveCamera(c.fov_degrees, c.width / c.height, c.near, c.far);
+    this.camera.position.fromArray(c.position);
+    this.camera.up.fromArray(c.up);
+    this.camera.lookAt(new THREE.Vector3().fromArray(c.target));
+    this.scene.add(this.camera);
+    // The engine's key, fill and rim lights ride with the camera, aimed at what it looks at.
+    const aim = new THREE.Object3D();
+    aim.position.set(0, 0, -new THREE.Vector3().fromArray(c.position).distanceTo(new THREE.Vector3().fromArray(c.target)));
+    this.camera.add(aim);
+    const distance = -aim.position.z;
+    for (const light of animation.lights) {
+      const directional = new THREE.DirectionalLight(0xffffff, light.intensity * Math.PI);
+      const [x, y, z] = light.camera_position;
+      directional.position.set(x * distance, y * distance, z * distance + aim.position.z);
+      directional.target = aim;
+      this.camera.add(directional);
+    }
+    this.scene.add(new THREE.AmbientLight(0xffffff, Math.PI));
+  }
+
+  _setUpModel(gltf, animation) {
+    this.scene.add(gltf.scene);
+    this.morphMeshes = [];
+    this.joints = {};
+    gltf.scene.traverse((object) => {
+      if (object.isBone && object.userData.parameter) {
+        this.joints[object.userData.parameter] = {
+          bone: object, extras: object.userData,
+          rotation: object.quaternion.clone(), translation: object.position.clone(),
+        };
+      }
+      if (object.isMesh) {
+        object.frustumCulled = false;
+        object.material = this._material(object, animation.parts || {});
+        if (object.morphTargetDictionary) this.morphMeshes.push(object);
+      }
+    });
+  }
+
+  _material(mesh, parts) {
+    const original = mesh.material;
+    const part = parts[(original.name || "").split(".")[0]] || { ambient: 0.18, diffuse: 0.85, specular: 0.12, power: 12 };
+    const colour = original.color.clone();
+    colour.setRGB(linearToSrgb(colour.r), linearToSrgb(colour.g), linearToSrgb(colour.b));
+    const colours = mesh.geometry.getAttribute("color");
+    if (colours) {
+      for (let i = 0; i < colours.count; i++) {
+        colours.setXYZ(i, linearToSrgb(colours.getX(i)), linearToSrgb(colours.getY(i)), linearToSrgb(colours.getZ(i)));
+      }
+      colours.needsUpdate = true;
+    }
+    if (original.map) original.map.colorSpace = THREE.NoColorSpace;
+    const material = new THREE.MeshPhongMaterial({
+      color: colour.multiplyScalar(part.diffuse), map: original.map || null, vertexColors: Boolean(colours),
+      specular: new THREE.Color(part.specular, part.specular, part.specular), shininess: part.power,
+      side: THREE.DoubleSide,
+    });
+    // ambient light: the part's ambient share of its own colour, as the engine's renderer lights it
+    material.onBeforeCompile = (shader) => {
+      shader.uniforms.ambientShare = { value: part.ambient / Math.max(part.diffuse, 1e-6) };
+      shader.fragmentShader = "uniform float ambientShare;\n" + shader.fragmentShader.replace(
+        "#include <lights_fragment_begin>",
+        "#include <lights_fragment_begin>\n irradiance *= ambientShare;");
+    };
+    return material;
+  }
+
+  /** Pose the head at ``ms``: every channel interpolated linearly between its frames. */
+  _apply(ms) {
+    const a = this.animation;
+    const f = Math.min(Math.max(ms / a.frame_ms, 0), Math.max(a.frames - 1, 0));
+    const i = Math.floor(f), j = Math.min(i + 1, a.frames - 1), w = f - i;
+    for (const channel of a.channels) {
+      const q = channel.values[i] * (1 - w) + channel.values[j] * w;
+      const value = channel.default + channel.step * q;
+      if (channel.kind === "morph") {
+        const weight = (value - channel.default) / (channel.target_value - channel.default);
+        for (const mesh of this.morphMeshes) {
+          const k = mesh.morphTargetDictionary[channel.parameter];
+          if (k !== undefined) mesh.morphTargetInfluences[k] = weight;
+        }
+      } else {
+        this._moveJoint(channel.parameter, value);
+      }
+    }
+  }
+
+  _moveJoint(name, value) {
+    const joint = this.joints[name];
+    if (!joint) return;
+    const x = new THREE.Vector3(1, 0, 0);
+    if (joint.extras.degrees_per_unit !== undefined) {
+      const turn = new THREE.Quaternion().setFromAxisAngle(x, THREE.MathUtils.degToRad(value * joint.extras.degrees_per_unit));
+      joint.bone.quaternion.copy(joint.rotation).multiply(turn);
+    } else {
+      const along = x.applyQuaternion(joint.rotation).multiplyScalar(value * joint.extras.mm_per_unit / 1000);
+      joint.bone.position.copy(joint.translation).add(along);
+    }
+  }
+}

@@ -1,0 +1,213 @@
+"""A web site that plays the head: ``index.html``, the player, three.js, the model, the animation, the audio.
+
+The folder works offline from any static web server (nothing is fetched from elsewhere):
+
+=====================  ==================================================================
+``index.html``         the page, with an import map naming the vendored three.js
+``player.js``          the player (an ES module; its API is ``window.ArtificialPerson``)
+``three/``             three.js |three| from the npm registry (build + GLTFLoader), with its licence
+``head.glb``           the model: skeleton + the morph targets the animation uses (:mod:`.web_model`)
+``animation.json``     frame table, phones, words, camera, lights (:mod:`.animation`)
+``speech.wav``         the audio (16-bit PCM, as ``say -o x.wav`` writes it)
+=====================  ==================================================================
+
+>>> from engine import load_model
+>>> from engine.speech.say import speak
+>>> head = load_model()                                                     # doctest: +SKIP
+>>> speech = speak("Pappa osti omenoita.", head)                            # doctest: +SKIP
+>>> write_speech_site(speech, head, "site")                                 # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+from collections.abc import Sequence
+from importlib import resources
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from engine.errors import UserError
+from engine.outputs.camera import VIEW_ANGLE, VIEWS, camera_pose, framed_points
+from engine.outputs.gltf_skeleton import skeleton_parameters
+from engine.speech.synthesis import Segment
+from engine.web.animation import animation_document
+from engine.web.web_model import morph_parameters, web_glb
+
+if TYPE_CHECKING:
+    from engine.model import Model
+    from engine.speech.say import Speech
+
+__all__ = ["DEFAULT_FPS", "DEFAULT_SIZE", "MARKER", "SITE_FILES", "project", "site_camera", "words_of", "write_site",
+           "write_speech_site", "write_tracks_site"]
+
+DEFAULT_FPS = 60.0
+DEFAULT_SIZE = (600, 800)
+MARKER = "artificial-person-web-site"
+THREE_VERSION = "0.170.0"
+#: The files a site holds besides the vendored three.js folder.
+SITE_FILES = ("index.html", "player.js", "head.glb", "animation.json", "speech.wav")
+#: The page's background (bottom, top) and the camera lights, as engine.outputs.render draws them.
+BACKGROUND = ("#cfd1d4", "#eef0f2")
+CAMERA_LIGHTS = [((-1.0, 0.9, 1.2), 0.78), ((1.3, 0.1, 1.0), 0.42), ((0.4, 1.2, -1.4), 0.45)]
+
+
+def site_camera(model: Model, size: tuple[int, int] = DEFAULT_SIZE, view: str = "front") -> dict[str, Any]:
+    """The camera of ``render --view VIEW --size WxH`` (rest-pose framing), in metres, as the player takes it.
+
+    >>> from engine import load_model
+    >>> camera = site_camera(load_model())
+    >>> camera["fov_degrees"], camera["width"], camera["height"], camera["up"]
+    (20.0, 600, 800, [0.0, 1.0, 0.0])
+    """
+    width, height = size
+    focal, position, up, (near, far) = camera_pose(framed_points(model), VIEWS[view], width, height)
+    return {"view": view, "fov_degrees": VIEW_ANGLE, "width": width, "height": height,
+            "position": [round(float(c) / 1000.0, 7) for c in position],
+            "target": [round(float(c) / 1000.0, 7) for c in focal],
+            "up": [float(c) for c in up], "near": near / 1000.0, "far": far / 1000.0}
+
+
+def project(camera: dict[str, Any], points_mm: np.ndarray) -> np.ndarray:
+    """Pixel positions (x right, y down, from the picture's top-left corner) of points (mm) seen by ``camera``.
+
+    >>> from engine import load_model
+    >>> head = load_model()
+    >>> camera = site_camera(head)
+    >>> project(camera, np.array(camera["target"])[None] * 1000).round(3).tolist()
+    [[300.0, 400.0]]
+    """
+    position, target = np.array(camera["position"]) * 1000, np.array(camera["target"]) * 1000
+    back = position - target
+    back /= np.linalg.norm(back)
+    right = np.cross(camera["up"], back)
+    right /= np.linalg.norm(right)
+    up = np.cross(back, right)
+    relative = np.asarray(points_mm, dtype=float) - position
+    depth = -(relative @ back)
+    focal_px = camera["height"] / 2 / np.tan(np.radians(camera["fov_degrees"]) / 2)
+    x = camera["width"] / 2 + focal_px * (relative @ right) / depth
+    y = camera["height"] / 2 - focal_px * (relative @ up) / depth
+    return np.column_stack([x, y])
+
+
+def write_speech_site(speech: Speech, model: Model, out: str | Path, fps: float = DEFAULT_FPS,
+                      size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
+    """The site of one utterance (``say``'s pipeline): its timeline sampled at ``fps``, its audio."""
+    from engine.speech.synthesis import wav_bytes
+
+    times = speech.frame_times(fps)
+    values = speech.timeline.sample(times)
+    names = list(speech.timeline.parameters)
+    utterance = speech.utterance
+    wav = wav_bytes(utterance.samples, utterance.sample_rate)
+    return write_site(model, names, values, 1000.0 / fps, wav, out, phones=utterance.phones, words=utterance.words,
+                      duration_ms=speech.end_ms, size=size)
+
+
+def write_site(model: Model, names: Sequence[str], values: np.ndarray, frame_ms: float, wav: bytes,
+               out: str | Path, phones: Sequence[Segment] = (), words: Sequence[Segment] = (),
+               duration_ms: float | None = None, size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
+    """Write the site into the folder ``out`` (made if missing; a folder that is not empty must be an
+    earlier site, whose files are replaced). ``values``: frames × ``names``, frame ``n`` at ``n × frame_ms``.
+    Returns each file's size in bytes (three.js as one entry, ``three/``)."""
+    out = Path(out)
+    _check_folder(out)
+    tree = model.parameters
+    defaults = [tree[name].default for name in names]
+    joints = skeleton_parameters(model)
+    animation = animation_document(names, values, defaults, frame_ms, joints, phones, words, duration_ms)
+    moving = {c["parameter"]: c["target_value"] for c in animation["channels"] if c["kind"] == "morph"}
+    glb = web_glb(model, morph_parameters(model, moving))
+    animation.update(model="head.glb", audio="speech.wav", camera=site_camera(model, size),
+                     background={"bottom": BACKGROUND[0], "top": BACKGROUND[1]},
+                     lights=[{"camera_position": list(p), "intensity": i} for p, i in CAMERA_LIGHTS],
+                     parts=_part_shading(model), generator=MARKER)
+    out.mkdir(parents=True, exist_ok=True)
+    page = _player_file("index.html").replace("{{WIDTH}}", str(size[0])).replace("{{HEIGHT}}", str(size[1]))
+    files: dict[str, bytes] = {
+        "index.html": page.encode("utf-8"),
+        "player.js": _player_file("player.js").encode("utf-8"),
+        "head.glb": glb,
+        "animation.json": json.dumps(animation, separators=(",", ":")).encode("utf-8"),
+        "speech.wav": wav,
+    }
+    for name, blob in files.items():
+        temporary = out / f".{name}.part"
+        temporary.write_bytes(blob)
+        temporary.replace(out / name)
+    three = out / "three"
+    if three.exists():
+        shutil.rmtree(three)
+    with resources.as_file(resources.files("engine.web") / "vendor" / "three") as vendored:
+        shutil.copytree(vendored, three, ignore=shutil.ignore_patterns("README.md"))
+    sizes = {name: len(blob) for name, blob in files.items()}
+    sizes["three/"] = sum(f.stat().st_size for f in three.rglob("*") if f.is_file())
+    return sizes
+
+
+def write_tracks_site(model: Model, tracks: str | Path, audio: str | Path, out: str | Path,
+                      phones: str | Path | None = None, size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
+    """The site of a tracks CSV and its audio (a WAV, copied unchanged), with the words of a phones CSV if given.
+
+    The tracks are resampled at their own frame rate from 0 ms (held before their first row and after
+    their last) until the later of their end and the audio's."""
+    from engine.speech.synthesis import read_phones_csv, read_wav
+    from engine.timeline.tracks import read_tracks_csv
+
+    table = read_tracks_csv(tracks, model)
+    samples, rate = read_wav(audio)
+    segments = read_phones_csv(phones) if phones is not None else []
+    audio_ms = 1000.0 * len(samples) / rate
+    end_ms = max(table.end, audio_ms, segments[-1].end_ms if segments else 0.0)
+    frame_ms = 1000.0 / table.fps
+    count = max(1, int(np.ceil(end_ms / frame_ms - 1e-9)) + 1)
+    times = np.arange(count) * frame_ms
+    return write_site(model, table.parameters, table.sample(times), frame_ms, Path(audio).read_bytes(), out,
+                      phones=segments, words=words_of(segments), duration_ms=end_ms, size=size)
+
+
+def words_of(phones: Sequence[Segment]) -> list[Segment]:
+    """The words of a phone sequence: each run of phones of one word (pauses, word "", end a run).
+
+    >>> words_of([Segment("p", 0, 10, "Pappa"), Segment("a", 10, 20, "Pappa"), Segment("#", 20, 30, "")])
+    [Segment(label='Pappa', start_ms=0, end_ms=20, word='')]
+    """
+    words: list[Segment] = []
+    previous = ""
+    for phone in phones:
+        if phone.word and phone.word == previous:
+            last = words[-1]
+            words[-1] = Segment(last.label, last.start_ms, phone.end_ms)
+        elif phone.word:
+            words.append(Segment(phone.word, phone.start_ms, phone.end_ms))
+        previous = phone.word
+    return words
+
+
+def _part_shading(model: Model) -> dict[str, dict[str, float]]:
+    """Each part's shading as the engine's renderer gives it (ambient, diffuse, specular, power)."""
+    from engine.outputs.part_layout import PartLayout
+    from engine.outputs.part_materials import part_material
+
+    shading = {}
+    for part in PartLayout(model).parts:
+        _, ambient, diffuse, specular, power = part_material(part, model.part_colors)
+        shading[part] = {"ambient": ambient, "diffuse": diffuse, "specular": specular, "power": power}
+    return shading
+
+
+def _player_file(name: str) -> str:
+    return (resources.files("engine.web") / "player" / name).read_text(encoding="utf-8")
+
+
+def _check_folder(out: Path) -> None:
+    if out.exists() and not out.is_dir():
+        raise UserError("the site must be a folder, and this is a file", file=out)
+    if out.is_dir() and any(out.iterdir()):
+        index = out / "index.html"
+        if not (index.is_file() and MARKER in index.read_text(encoding="utf-8", errors="replace")):
+            raise UserError("the folder is not empty and holds no earlier site: choose a new or empty folder",
+                            file=out)
