@@ -27,6 +27,7 @@ export class ArtificialPerson extends EventTarget {
     this.playing = false;
     this.ready = false;
     this.framesDrawn = 0;
+    this.timings = [];            // per frame while playing: performance.now(), position drawn, position heard
     this._waiters = [];
     this._readyWaiters = [];
   }
@@ -115,13 +116,24 @@ export class ArtificialPerson extends EventTarget {
 
   // -- the clock -----------------------------------------------------------------------------
 
-  _clock() {
+  /** Where the sound being heard now is, on the animation's clock (ms); null before the sound runs. */
+  heardPosition() {
     const context = this.audioContext;
-    if (this._source && context.state === "running" && context.currentTime >= this._audioWhen) {
-      const latency = (context.outputLatency || 0) * 1000;
-      return this._audioFrom + (context.currentTime - this._audioWhen) * 1000 - latency;
+    if (!this._source || context.state !== "running") return null;
+    const stamp = context.getOutputTimestamp ? context.getOutputTimestamp() : {};
+    let heard;
+    if (stamp.contextTime > 0 && stamp.performanceTime > 0) {
+      // the context time at the speaker now: the output's last stamp, carried forward on performance.now()
+      heard = stamp.contextTime + (performance.now() - stamp.performanceTime) / 1000;
+    } else {
+      heard = context.currentTime - (context.outputLatency || 0);
     }
-    return this._from + (performance.now() - this._wallStart);
+    return heard >= this._audioWhen ? this._audioFrom + (heard - this._audioWhen) * 1000 : null;
+  }
+
+  _clock() {
+    const heard = this.heardPosition();
+    return heard !== null ? heard : this._from + (performance.now() - this._wallStart);
   }
 
   _tick() {
@@ -131,6 +143,8 @@ export class ArtificialPerson extends EventTarget {
       this.position = Math.min(position, this.duration);
       this._apply(this.position);
       this._wordEvents(this.position);
+      const heard = this.heardPosition();
+      if (this.timings.length < 100000) this.timings.push({ t: performance.now(), drawn_ms: this.position, heard_ms: heard });
       if (this.position >= this.duration) {
         this._stopSound();
         this.playing = false;

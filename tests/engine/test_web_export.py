@@ -1,0 +1,167 @@
+"""``web-export``: the site's files, the compact model, the animation table, and bad input (no browser here:
+tests/engine/test_web_browser.py opens the sites in Chromium). Real Festival, real files, the real CLI."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+import pytest
+
+from engine.outputs.gltf_export import glb_bytes, gltf_document, parameter_targets
+from engine.outputs.gltf_skeleton import skeleton_parameters
+from engine.speech.say import speak
+from engine.web.animation import dequantised
+from engine.web.site import SITE_FILES, write_speech_site
+from engine.web.web_model import QUANTISATION, dequantised_target, web_glb, web_gltf_document
+from tests.engine.cli_runner import assert_user_error, run
+
+SENTENCE = "Pappa osti mummolle paljon omenoita."
+SIZE_LIMIT = 3_000_000
+
+
+@pytest.fixture(scope="module")
+def speech(head):
+    return speak(SENTENCE, head)
+
+
+@pytest.mark.slow
+def test_a_sentence_becomes_a_small_offline_site(tmp_path):
+    site = tmp_path / "site"
+    result = run("web-export", "--say", SENTENCE, "-o", site)
+    assert result.returncode == 0, result.stderr
+    for name in SITE_FILES:
+        assert (site / name).is_file(), name
+    for name in ("build/three.module.min.js", "examples/jsm/loaders/GLTFLoader.js", "LICENSE"):
+        assert (site / "three" / name).is_file(), name
+    total = sum(f.stat().st_size for f in site.rglob("*") if f.is_file())
+    assert total < SIZE_LIMIT, f"the site is {total / 1e6:.2f} MB"
+    assert "MB in all" in result.stdout
+    page = (site / "index.html").read_text()
+    imports = json.loads(re.search(r'<script type="importmap">(.*?)</script>', page, re.S).group(1))["imports"]
+    assert imports == {"three": "./three/build/three.module.min.js", "three/addons/": "./three/examples/jsm/"}
+    for name in ("index.html", "player.js"):                 # nothing named on another server
+        assert not re.search(r"https?://", (site / name).read_text()), name
+
+
+def test_morph_targets_read_back_as_the_engine_moves_the_vertices(head):
+    targets_at = {"lower_lip_raise": 0.6, "mouth_widen": -0.4}
+    document, data = web_gltf_document(head, targets_at)
+    assert QUANTISATION in document["extensionsRequired"]
+    assert document["meshes"][0]["extras"]["targetNames"] == list(targets_at)
+    joints = [node["name"] for node in document["nodes"] if "extras" in node and "parameter" in node["extras"]]
+    assert joints == skeleton_parameters(head) and "jaw_open" in joints
+    exact = parameter_targets(head, list(targets_at), targets_at)
+    worst = 0.0
+    for primitive in document["meshes"][0]["primitives"]:
+        vertices = _model_vertices(document, data, primitive)
+        for k, entry in enumerate(primitive["targets"]):
+            shown = dequantised_target(document, data, entry["POSITION"]) * 1000.0      # mm
+            worst = max(worst, float(np.abs(shown - exact[k].displacements[vertices]).max()))
+    assert 0 < worst <= 0.5 / 32767 * 1000 + 1e-9, f"{worst} mm"
+
+
+def test_the_compact_targets_are_a_small_part_of_dense_ones(head):
+    moving = {"lower_lip_raise": 0.6, "mouth_widen": 0.4, "lip_protrude": 0.7, "upper_lip_raise": 0.2,
+              "tongue_raise": 0.8}
+    bare = len(web_glb(head, {}))
+    compact = len(web_glb(head, moving)) - bare
+    dense = len(glb_bytes(*gltf_document(head, parameter_targets(head, list(moving), moving), skeleton=True))) - bare
+    assert 0 < compact < dense / 4, (compact, dense)
+
+
+def test_the_animation_table_is_the_timeline_to_its_step(head, speech, tmp_path):
+    write_speech_site(speech, head, tmp_path, fps=60.0)
+    animation = json.loads((tmp_path / "animation.json").read_text())
+    times = speech.frame_times(60.0)
+    values = speech.timeline.sample(times)
+    names = list(speech.timeline.parameters)
+    channels = {c["parameter"]: c for c in animation["channels"]}
+    moving = {n for j, n in enumerate(names) if np.any(values[:, j] != head.parameters[n].default)}
+    assert set(channels) == moving and "jaw_open" in moving
+    assert channels["jaw_open"]["kind"] == "joint" and channels["lower_lip_raise"]["kind"] == "morph"
+    for name, channel in channels.items():
+        column = values[:, names.index(name)]
+        assert np.abs(dequantised(channel) - column).max() <= channel["step"] / 2 + 1e-12, name
+    assert [w["word"] for w in animation["words"]] == ["Pappa", "osti", "mummolle", "paljon", "omenoita"]
+    assert animation["frames"] == len(times) and animation["frame_ms"] == pytest.approx(1000 / 60)
+
+
+@pytest.mark.slow
+def test_tracks_and_audio_make_the_same_animation_as_the_sentence(tmp_path):
+    made = run("say", SENTENCE, "--fps", "60", "-o", tmp_path / "s.wav", "--tracks", tmp_path / "s.csv",
+               "--phones", tmp_path / "s-phones.csv")
+    assert made.returncode == 0, made.stderr
+    assert run("web-export", "--say", SENTENCE, "-o", tmp_path / "a").returncode == 0
+    result = run("web-export", "--tracks", tmp_path / "s.csv", "--audio", tmp_path / "s.wav",
+                 "--phones", tmp_path / "s-phones.csv", "-o", tmp_path / "b")
+    assert result.returncode == 0, result.stderr
+    a, b = (json.loads((tmp_path / x / "animation.json").read_text()) for x in ("a", "b"))
+    assert [c["parameter"] for c in a["channels"]] == [c["parameter"] for c in b["channels"]]
+    for ca, cb in zip(a["channels"], b["channels"], strict=True):
+        n = min(len(ca["values"]), len(cb["values"]))
+        # the CSV holds its numbers to six digits: the two tables agree to that
+        assert np.abs(dequantised(ca)[:n] - dequantised(cb)[:n]).max() < 2e-3, ca["parameter"]
+    assert a["words"] == b["words"]
+    assert (tmp_path / "b" / "speech.wav").read_bytes() == (tmp_path / "s.wav").read_bytes()
+
+
+def test_a_site_is_written_again_over_an_earlier_one(head, speech, tmp_path):
+    write_speech_site(speech, head, tmp_path / "site")
+    write_speech_site(speech, head, tmp_path / "site")
+    assert sorted(p.name for p in (tmp_path / "site").iterdir()) == sorted([*SITE_FILES, "three"])
+
+
+# -- bad input: one line, status 2 --------------------------------------------------------------------------
+
+def test_a_broken_tracks_file_is_named_with_its_line(tmp_path):
+    tracks = tmp_path / "t.csv"
+    tracks.write_text("time_ms,jaw_open\n0,0.1\n33.3,lots\n")
+    (tmp_path / "a.wav").write_bytes(_silent_wav())
+    line = assert_user_error(run("web-export", "--tracks", tracks, "--audio", tmp_path / "a.wav", "-o",
+                                 tmp_path / "site"))
+    assert line.startswith(f"error: {tracks}:3:"), line
+    assert not (tmp_path / "site").exists()
+
+
+def test_an_audio_file_that_is_not_a_wav_is_named(tmp_path):
+    tracks = tmp_path / "t.csv"
+    tracks.write_text("time_ms,jaw_open\n0,0.1\n33.3,0.2\n")
+    audio = tmp_path / "a.wav"
+    audio.write_bytes(b"ID3\x03 not a wave at all")
+    line = assert_user_error(run("web-export", "--tracks", tracks, "--audio", audio, "-o", tmp_path / "site"))
+    assert f"{audio}" in line, line
+
+
+@pytest.mark.parametrize(("args", "says"), [
+    ((), "nothing to play"),
+    (("--tracks", "t.csv"), "--tracks needs --audio"),
+    (("--say", "Hei.", "--audio", "a.wav"), "--audio goes with --tracks"),
+    (("--tracks", "t.csv", "--audio", "a.wav", "--voice", "x"), "--voice applies to --say"),
+])
+def test_options_that_do_not_go_together_are_refused(tmp_path, args, says):
+    line = assert_user_error(run("web-export", *args, "-o", tmp_path / "site", cwd=tmp_path))
+    assert says in line, line
+
+
+def test_a_folder_holding_other_files_is_not_overwritten(tmp_path):
+    keep = tmp_path / "mine.txt"
+    keep.write_text("my notes")
+    line = assert_user_error(run("web-export", "--say", "Hei.", "-o", tmp_path))
+    assert line.startswith(f"error: {tmp_path}:") and "not empty" in line, line
+    assert keep.read_text() == "my notes" and not (tmp_path / "index.html").exists()
+
+
+def _model_vertices(document, data, primitive) -> np.ndarray:
+    from engine.formats.gltf_read import MODEL_VERTEX
+
+    accessor = document["accessors"][primitive["attributes"][MODEL_VERTEX]]
+    view = document["bufferViews"][accessor["bufferView"]]
+    return np.frombuffer(data, "<f4", accessor["count"], view["byteOffset"]).astype(int)
+
+
+def _silent_wav() -> bytes:
+    from engine.speech.synthesis import wav_bytes
+
+    return wav_bytes(np.zeros(1600, dtype=np.float32), 16000)
