@@ -2,12 +2,13 @@
 
 Pages: photographs (:mod:`.photofit_wizard_photos`), landmarks to drag
 (:mod:`.photofit_wizard_landmarks`, its own undo stack), the fit on a worker
-thread with the fitted head laid over each photograph, and the result
-(:mod:`.photofit_wizard_fit`). Cancel on any page, or Stop during the fit,
-leaves the document as it was; Finish makes the fitted head the document's
-model as one undo step ("New head from photographs") and, if asked, says a
-test sentence through the window's player as the script panel does. See
-docs/workbench-photofit.md.
+thread with the fitted head laid over each photograph
+(:mod:`.photofit_wizard_fit`), and the result in a 3-D view saying a test
+sentence (:mod:`.photofit_wizard_result`). Cancel on any page, or Stop during
+the fit, leaves the document as it was; Finish makes the fitted head the
+document's model as one undo step ("New head from photographs") and, if
+asked, says the sentence again through the window's player as the script
+panel does. See docs/workbench-photofit.md.
 """
 
 from __future__ import annotations
@@ -20,9 +21,10 @@ from PySide6.QtCore import QSize
 from PySide6.QtGui import QUndoStack
 from PySide6.QtWidgets import QMessageBox, QWidget, QWizard
 
-from .photofit_wizard_fit import FitPage, ResultPage
+from .photofit_wizard_fit import FitPage
 from .photofit_wizard_landmarks import LandmarkPage
 from .photofit_wizard_photos import PhotosPage
+from .photofit_wizard_result import ResultPage
 from .photofit_wizard_session import TITLE, PhotoFitSession
 from .undo_commands import ReplaceModelCommand
 
@@ -37,7 +39,7 @@ SCREEN_MARGIN = QSize(40, 70)             # the window frame and a panel or two
 
 
 class PhotoFitWizard(QWizard):
-    def __init__(self, session: PhotoFitSession, parent: QWidget | None = None):
+    def __init__(self, session: PhotoFitSession, parent: QWidget | None = None, voice: str | None = None):
         super().__init__(parent)
         self.session = session
         self.setWindowTitle(TITLE)
@@ -48,10 +50,11 @@ class PhotoFitWizard(QWizard):
         self.photos_page = PhotosPage(session)
         self.landmark_page = LandmarkPage(session, self.undo_stack)
         self.fit_page = FitPage(session)
-        self.result_page = ResultPage(session)
+        self.result_page = ResultPage(session, voice)
         for page in (self.photos_page, self.landmark_page, self.fit_page, self.result_page):
             self.addPage(page)
         self.rejected.connect(self.fit_page.stop)
+        self.finished.connect(self.result_page.close_view)      # Finish or Cancel: Festival and the view end
         self.resize(self.size_for_screen())
 
     def size_for_screen(self) -> QSize:
@@ -66,7 +69,9 @@ def size_for(available: QSize) -> QSize:
 
 def open_photofit_wizard(window: MainWindow) -> PhotoFitWizard:
     """Show the wizard over ``window`` (window-modal); Finish puts the head into its document."""
-    wizard = PhotoFitWizard(PhotoFitSession(window.document.model), window)
+    panel = getattr(window, "script_panel", None)
+    voice = (panel.voice_box.currentText() or None) if panel is not None else None
+    wizard = PhotoFitWizard(PhotoFitSession(window.document.model), window, voice)
     window.photofit_wizard = wizard
     wizard.accepted.connect(lambda: finish(window, wizard))
     wizard.finished.connect(wizard.deleteLater)

@@ -1,36 +1,28 @@
-"""The wizard's fit and result pages.
+"""The wizard's fit page.
 
 :class:`FitPage` runs :func:`engine.photofit.fit_photos` on a worker thread
 (:class:`~workbench.script_panel.jobs.Job`) as soon as it opens: a progress
 bar follows the fit's steps, **Stop** (or the wizard's Cancel, or Back)
-stops it at the next step and nothing is kept. When it is done each
+stops it and nothing is kept. The fit asks the job's ``cancelled`` flag
+inside its long loops (``should_stop``, :mod:`engine.photofit.stopping`),
+so the worker ends part-way through the step it is in. When it is done each
 photograph shows the fitted head through its fitted camera: its landmarks
 (green crosses, joined to the points placed) and its outline (dashed), so a
-point placed badly shows, and Back takes you to it.
-
-:class:`ResultPage` shows the textured head rendered from the front and
-three-quarter, the fit's figures, and offers to say a test sentence once the
-head is the document's model (Finish).
+point placed badly shows, and Back takes you to it. The result page is
+:mod:`.photofit_wizard_result`.
 """
 
 from __future__ import annotations
 
+from collections import Counter
+from dataclasses import dataclass, field
+
 import numpy as np
-from PySide6.QtCore import Qt
-from PySide6.QtGui import QImage, QPixmap
-from PySide6.QtWidgets import (
-    QCheckBox,
-    QHBoxLayout,
-    QLabel,
-    QLineEdit,
-    QProgressBar,
-    QPushButton,
-    QVBoxLayout,
-    QWizardPage,
-)
+from PySide6.QtWidgets import QHBoxLayout, QLabel, QProgressBar, QPushButton, QVBoxLayout, QWizardPage
 from scipy.spatial import ConvexHull
 
 from engine.photofit.fit import FIT_STEPS
+from engine.photofit.stopping import FitStopped
 
 from .photofit_wizard_canvas import PhotoCanvas
 from .photofit_wizard_session import VIEWS, PhotoFitSession
@@ -39,13 +31,21 @@ from .script_panel.jobs import Job
 STEP_TEXT = {"shape": "Fitting cameras and face shape…", "head": "Making the head…",
              "rig": "Carrying the rig over…", "texture": "Painting the photographs into the texture…",
              "eyes": "Colouring the eyes…"}
-RESULT_SIZE = (300, 400)
-TEST_SENTENCE = "Pappa ampui pallon."
 CHIN_MARGIN = 10.0                 # mm below the chin the outline still follows
 
+__all__ = ["FitPage", "FitStopped", "FitTrace"]
 
-class FitStopped(Exception):
-    """Raised from the fit's progress callback when the user stopped it."""
+
+@dataclass
+class FitTrace:
+    """What one fit's worker thread did: the steps begun, and how often it asked whether to stop in each.
+
+    ``asked_after_stop`` counts the questions answered "stop" (the fit ends at the first: it is 1 then).
+    """
+
+    steps: list[str] = field(default_factory=list)
+    questions: Counter[str] = field(default_factory=Counter)
+    asked_after_stop: int = 0
 
 
 class FitPage(QWizardPage):
@@ -53,6 +53,7 @@ class FitPage(QWizardPage):
         super().__init__()
         self.session = session
         self.job: Job | None = None
+        self.trace = FitTrace()
         self.setTitle("Fit")
         self.setSubTitle("The head is fitted to the points. Green crosses: the fitted head's landmarks, joined to "
                          "your points; dashed: its outline. Go Back to move a point and fit again.")
@@ -106,12 +107,21 @@ class FitPage(QWizardPage):
         photos = dict(self.session.photos)
         points = {view: dict(p) for view, p in self.session.points.items() if view in photos}
 
+        trace = self.trace = FitTrace()
+
         def work(job: Job):
             def progress(step: str) -> None:
-                if job.cancelled:
-                    raise FitStopped
+                trace.steps.append(step)
                 job.report(FIT_STEPS.index(step), len(FIT_STEPS))
-            return fit_photos(photos, points, progress=progress)
+
+            def should_stop() -> bool:
+                if job.cancelled:
+                    trace.asked_after_stop += 1
+                    return True
+                trace.questions[trace.steps[-1] if trace.steps else ""] += 1
+                return False
+
+            return fit_photos(photos, points, progress=progress, should_stop=should_stop)
 
         job = self.job = Job(work)
         job.progress.connect(self._on_progress)
@@ -122,7 +132,7 @@ class FitPage(QWizardPage):
         job.start()
 
     def stop(self) -> None:
-        """Stop the fit being made (it ends at its next step; its result is thrown away)."""
+        """Stop the fit being made (its worker ends part-way through the step it is in; nothing is kept)."""
         if self.job is None:
             return
         self.job.cancel()
@@ -177,45 +187,3 @@ class FitPage(QWizardPage):
                 canvas.clear_fit()
         self.completeChanged.emit()
 
-
-class ResultPage(QWizardPage):
-    def __init__(self, session: PhotoFitSession):
-        super().__init__()
-        self.session = session
-        self.setTitle("Result")
-        self.setSubTitle("Finish makes this head the model (Edit → Undo brings the previous one back); "
-                         "File → Save model as… writes it.")
-        self.pictures = [QLabel() for _ in range(2)]
-        row = QHBoxLayout()
-        for picture in self.pictures:
-            picture.setAlignment(Qt.AlignmentFlag.AlignCenter)
-            picture.setMinimumSize(RESULT_SIZE[0] // 2, RESULT_SIZE[1] // 2)
-            row.addWidget(picture, 1)
-        self.say_box = QCheckBox("After Finish, say:")
-        self.say_box.setChecked(True)
-        self.sentence = QLineEdit(TEST_SENTENCE)
-        say_row = QHBoxLayout()
-        say_row.addWidget(self.say_box)
-        say_row.addWidget(self.sentence, 1)
-        layout = QVBoxLayout(self)
-        layout.addLayout(row, 1)
-        layout.addLayout(say_row)
-
-    def initializePage(self) -> None:
-        from engine.outputs.render import FrameRenderer
-
-        fit = self.session.fit
-        if fit is None:
-            return
-        head = fit.head
-        for picture, view in zip(self.pictures, ("front", "three-quarter"), strict=True):
-            with FrameRenderer(head, size=RESULT_SIZE, view=view) as renderer:
-                image = np.ascontiguousarray(renderer.render(head.deform()))
-            qimage = QImage(image.data, image.shape[1], image.shape[0], 3 * image.shape[1],
-                            QImage.Format.Format_RGB888)
-            picture.setPixmap(QPixmap.fromImage(qimage.copy()))
-
-    def test_sentence(self) -> str | None:
-        """The sentence to say after Finish, or ``None``."""
-        text = self.sentence.text().strip()
-        return text if self.say_box.isChecked() and text else None

@@ -161,7 +161,8 @@ def test_photographs_to_a_textured_speaking_head_in_one_undo_step(head_window, p
 
     wizard.next()
     result = wizard.result_page
-    assert all(not picture.pixmap().isNull() for picture in result.pictures)
+    assert result.document.model is fit.head and result.document is not document     # the page's own
+    assert result.viewport.textures_shown()                     # the 3-D view draws the photo texture
     assert result.test_sentence() == "Pappa ampui pallon."
     wizard.button(QWizard.WizardButton.FinishButton).click()
 
