@@ -29,7 +29,8 @@ ARKIT_TABLE: list[Entry] = [
     *_sides("browOuterUp{Side}", "AU2_{side}", 1.0, "outer brow raiser, AU2"),
     *_sides("browDown{Side}", "AU4_{side}", 1.0, "brow lowerer, AU4"),
     *_sides("cheekSquint{Side}", "AU6_{side}", 1.0, "cheek raiser, AU6"),
-    *_sides("noseSneer{Side}", "AU9_{side}_nose", 1.0, "nose wrinkler AU9: the head splits it into nose and brow"),
+    *_sides("noseSneer{Side}", "AU9_{side}_nose", 0.59, "nose wrinkler AU9, split into nose and brow; the nose part "
+           "is 1.7 × ARKit's sneer (docs/default-head.md)"),
     *_sides("noseSneer{Side}", "AU9_{side}_brow", 1.0, "AU9's pull on the brow"),
     ("jawOpen", "jaw_open", 1.0, "jawOpen 1 = jaw fully dropped; jaw_open 1 is the head's full opening"),
     ("mouthClose", "jaw_open", -1.0, "lips sealed over the open jaw (the reference poses: jawOpen + mouthClose "
