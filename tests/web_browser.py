@@ -84,11 +84,14 @@ class Browser:
         self.process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
                                         stderr=subprocess.DEVNULL, start_new_session=True)
         self.connection: Any = None
+        self._stack = contextlib.ExitStack()
         try:
             port, path = self._devtools_address()
             from websockets.sync.client import connect
 
-            self.connection = connect(f"ws://127.0.0.1:{port}{path}", max_size=None, open_timeout=REPLY_SECONDS)
+            # connect() must be entered as a context manager (websockets 17.1+)
+            self.connection = self._stack.enter_context(
+                connect(f"ws://127.0.0.1:{port}{path}", max_size=None, open_timeout=REPLY_SECONDS))
         except BaseException:
             self.close()
             raise
@@ -142,20 +145,31 @@ class Browser:
         return page
 
     def close(self) -> None:
-        """End Chromium (its whole process group) and remove its profile, whatever state it is in."""
-        if self.connection is not None:
-            with contextlib.suppress(Exception):           # a connection Chromium already broke
-                self.connection.close()
-        if self.process.poll() is None:
-            try:
-                os.killpg(self.process.pid, signal.SIGTERM)
-                self.process.wait(timeout=10)
-            except (ProcessLookupError, subprocess.TimeoutExpired):
-                pass
-        with contextlib.suppress(ProcessLookupError):      # helpers (GPU, renderer) left behind, if any
+        """End Chromium (its whole process group) and remove its profile, whatever state it is in.
+
+        Chromium is asked to quit first (so it reaps its own helpers), then the group is killed."""
+        if self.connection is not None and self.process.poll() is None:
+            with contextlib.suppress(Exception):           # a browser that no longer answers
+                self.connection.send(json.dumps({"id": -1, "method": "Browser.close"}))
+        with contextlib.suppress(Exception):               # a connection Chromium already broke
+            self._stack.close()
+        with contextlib.suppress(subprocess.TimeoutExpired):
+            self.process.wait(timeout=10)
+        with contextlib.suppress(ProcessLookupError):      # helpers left behind, if any
             os.killpg(self.process.pid, signal.SIGKILL)
         self.process.wait()
         shutil.rmtree(self.profile, ignore_errors=True)
+
+
+def live_processes(group: int) -> list[int]:
+    """The processes of a process group that still run (not zombies waiting for a parent to reap them)."""
+    alive = []
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        with contextlib.suppress(OSError, ValueError, IndexError):
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+            if int(fields[2]) == group and fields[0] != "Z":
+                alive.append(int(stat.parent.name))
+    return alive
 
 
 class Page:

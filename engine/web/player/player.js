@@ -83,8 +83,11 @@ export class ArtificialPerson extends EventTarget {
     const source = this.audioContext.createBufferSource();
     source.buffer = this.audioBuffer;
     source.connect(this.audioContext.destination);
-    this._audioWhen = this.audioContext.currentTime + 0.05;
-    this._audioFrom = this.position + 50;      // where the sound will be when it starts
+    const lead = 0.05;                         // s: the sound starts this long after start() is called
+    this._audioWhen = this.audioContext.currentTime + lead;
+    this._audioFrom = this.position;           // the sound starts where the picture is now, which waits for it
+    this._from = this.position;
+    this._wallStart = performance.now() + lead * 1000;
     if (this._audioFrom < this.audioBuffer.duration * 1000) {
       source.start(this._audioWhen, this._audioFrom / 1000);
       this._source = source;
@@ -142,9 +145,9 @@ export class ArtificialPerson extends EventTarget {
       const position = Math.max(this._clock(), this.position);   // never backwards
       this.position = Math.min(position, this.duration);
       this._apply(this.position);
-      this._wordEvents(this.position);
       const heard = this.heardPosition();
       if (this.timings.length < 100000) this.timings.push({ t: performance.now(), drawn_ms: this.position, heard_ms: heard });
+      this._wordEvents(this.position);
       if (this.position >= this.duration) {
         this._stopSound();
         this.playing = false;
