@@ -1,11 +1,14 @@
-"""The live service over loopback (issue 21), headless: how soon a request shows on the frame clock.
+"""The live service over loopback (issue 21): how soon a request shows on the frame clock, and on the screen.
 
     .venv/bin/python benchmarks/bench_serve.py [--sets 300] [--says 5] [--festival-server] [--lsl] [--json out.json]
+    xvfb-run -a .venv/bin/python benchmarks/bench_serve.py --window [--size 320x240] ...
 
 * ``set`` → the frame that shows it: the client notes ``time.monotonic()`` before sending, the server
   names the frame (``applied`` event, ``t``), and that frame's moment on the same clock is
   ``epoch_monotonic_s + t/1000`` (server and client share the computer's monotonic clock). p50/p95,
   in ms and in 60 Hz frames; also the time until the ``applied`` event is back at the client.
+  With ``--window`` (``serve --window``: a real window drawn with OpenGL) also ``set`` → the end of the
+  swap of the frame showing it (``presented_t``); headless that is the frame's moment itself.
 * ``say`` → its first audio sample (``speech_start``: sample 0 is presented at that frame), beside
   Festival's own time for the same text synthesized in this process (``FestivalSynthesizer``).
 * pipelined ``state`` requests answered per second on one connection.
@@ -14,7 +17,7 @@
 * ``--lsl``: ``serve --lsl`` (its loopback-only liblsl configuration; this process uses the same),
   and how long after its frame moment (the marker's timestamp) each marker reaches an inlet here.
 
-Real server in a subprocess (``artificial-person serve --headless --port 0``), real Festival.
+Real server in a subprocess (``artificial-person serve --headless|--window --port 0``), real Festival.
 """
 
 from __future__ import annotations
@@ -47,7 +50,8 @@ def percentile(values: list[float], q: float) -> float:
 
 
 def start_server(*options: str) -> tuple[subprocess.Popen, str]:
-    process = subprocess.Popen([sys.executable, "-m", "engine", "serve", "--headless", "--port", "0", *options],
+    shown = [] if "--window" in options else ["--headless"]
+    process = subprocess.Popen([sys.executable, "-m", "engine", "serve", *shown, "--port", "0", *options],
                                cwd=ROOT, stdout=subprocess.PIPE, text=True)
     assert process.stdout is not None
     line = process.stdout.readline()
@@ -59,7 +63,7 @@ def start_server(*options: str) -> tuple[subprocess.Popen, str]:
 
 
 def bench_set(head: LiveClient, count: int) -> dict[str, float]:
-    to_frame, to_event = [], []
+    to_frame, to_event, to_screen = [], [], []
     for i in range(count):
         sent = time.monotonic()
         reply = head.set({"head_turn": 0.25 if i % 2 else -0.25})
@@ -68,10 +72,13 @@ def bench_set(head: LiveClient, count: int) -> dict[str, float]:
         assert event["event"] == "applied" and event["id"] == reply["id"]
         to_frame.append((head.to_local_monotonic(event["t"]) - sent) * 1000.0)
         to_event.append((received - sent) * 1000.0)
+        to_screen.append((head.to_local_monotonic(event["presented_t"]) - sent) * 1000.0)
         time.sleep(0.003 * (i % 7))                       # requests land at different phases of the frame
     return {"set_to_frame_p50_ms": percentile(to_frame, 50), "set_to_frame_p95_ms": percentile(to_frame, 95),
             "set_to_frame_max_ms": max(to_frame), "set_to_applied_event_p50_ms": percentile(to_event, 50),
-            "set_to_applied_event_p95_ms": percentile(to_event, 95)}
+            "set_to_applied_event_p95_ms": percentile(to_event, 95),
+            "set_to_presented_p50_ms": percentile(to_screen, 50), "set_to_presented_p95_ms": percentile(to_screen, 95),
+            "set_to_presented_max_ms": max(to_screen)}
 
 
 def start_festival_server() -> tuple[subprocess.Popen, int]:
@@ -158,9 +165,11 @@ def main() -> None:
     parser.add_argument("--festival-server", action="store_true",
                         help="synthesize through a festival --server started here (serve --festival)")
     parser.add_argument("--lsl", action="store_true", help="serve --lsl, and measure the markers' delay")
+    parser.add_argument("--window", action="store_true", help="serve --window (needs a display: run under xvfb-run)")
+    parser.add_argument("--size", default="320x240", help="with --window: its size (default 320x240)")
     parser.add_argument("--json", default=None)
     args = parser.parse_args()
-    options: list[str] = []
+    options: list[str] = ["--window", "--size", args.size] if args.window else []
     festival_process, festival_port = None, None
     if args.festival_server:
         festival_process, festival_port = start_festival_server()
@@ -186,6 +195,7 @@ def main() -> None:
             os.killpg(festival_process.pid, signal.SIGTERM)
             festival_process.wait(timeout=30)
     results["set_to_frame_p95_frames"] = results["set_to_frame_p95_ms"] / FRAME_MS
+    results["set_to_presented_p95_frames"] = results["set_to_presented_p95_ms"] / FRAME_MS
     for name, value in results.items():
         print(f"{name:34s} {value:10.2f}")
     if args.json:

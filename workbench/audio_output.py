@@ -128,6 +128,14 @@ class AudioOutput:
             latency = 0.0
         return max(0.0, frame / float(clip.sample_rate) - latency)
 
+    def latency(self) -> float | None:
+        """Seconds from a sample handed to the device to its output, as PortAudio reports it (``None``: not playing)."""
+        stream = self._stream
+        try:
+            return None if stream is None else float(stream.latency)
+        except Exception:
+            return None
+
     def stop(self) -> None:
         stream, self._stream = self._stream, None
         if stream is not None:

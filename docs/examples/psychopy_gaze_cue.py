@@ -1,13 +1,16 @@
 """A gaze-cueing trial driven over the live service: speak, nod at a word, look left on cue, log every event.
 
-    artificial-person serve --headless &
+    artificial-person serve --window &          # or --headless: nothing drawn, the same events
     python docs/examples/psychopy_gaze_cue.py --url ws://127.0.0.1:8765 --log gaze_cue_log.csv
 
 Each trial: the head says a sentence whose inline ``<HeadNod/>`` nods at the word after it; when the
 sentence has finished, the head looks left 500 ms later (a ``set`` placed at a frame-clock time);
 then it looks ahead again. Every event is written to the log with the frame it was shown in (``t``),
-when it was due (``onset_t``), the audio sample clock (``sample``), and — for this computer's
-clock — the frame's ``time.monotonic()`` moment and when the event reached this script.
+when it was due (``onset_t``), when that frame was on the screen (``presented_t``: with
+``serve --window`` the end of its swap, headless the frame's moment), the audio sample clock
+(``sample``; ``audio_t``, in a window, when the first sample reached the sound output), and — for
+this computer's clock — the frame's and the presentation's ``time.monotonic()`` moments and when the
+event reached this script.
 
 The same script works unchanged when the server synthesizes with a Festival server on another
 computer (``serve --headless --festival speech-pc:1314``) or also sends every event to an EEG
@@ -34,15 +37,17 @@ SENTENCE = "Katso <HeadNod amplitude='40'/> tänne, ja sitten vasemmalle."
 LOOK_LEFT = {"head_turn": 0.3, "eye_left_turn": 0.4, "eye_right_turn": 0.4}   # + towards the head's own left
 LOOK_AHEAD = {"head_turn": 0.0, "eye_left_turn": 0.0, "eye_right_turn": 0.0}
 CUE_DELAY_MS = 500.0
-COLUMNS = ("trial", "request", "event", "word", "phone", "command", "t", "onset_t", "sample", "sample_rate",
-           "frame_monotonic_s", "received_monotonic_s")
+COLUMNS = ("trial", "request", "event", "word", "phone", "command", "t", "onset_t", "presented_t", "sample",
+           "sample_rate", "audio_t", "frame_monotonic_s", "presented_monotonic_s", "received_monotonic_s")
 
 
 def run_trial(head: LiveClient, trial: int, log: csv.DictWriter) -> None:
     def write(event: dict, request: str) -> None:
         row = {name: event.get(name, "") for name in COLUMNS}
+        received = time.monotonic()
         row.update(trial=trial, request=request, frame_monotonic_s=f"{head.to_local_monotonic(event['t']):.6f}",
-                   received_monotonic_s=f"{time.monotonic():.6f}")
+                   presented_monotonic_s=f"{head.to_local_monotonic(event['presented_t']):.6f}",
+                   received_monotonic_s=f"{received:.6f}")
         log.writerow(row)
 
     say_id = head.say(SENTENCE)

@@ -2,7 +2,10 @@
 
 Safe by default: it listens on 127.0.0.1; any address that is not loopback needs a token
 (``--token`` or the environment variable ``AP_SERVE_TOKEN``), and a client without it is refused.
-This version is headless only (``--headless``); ``--festival HOST:PORT`` synthesizes with a Festival
+``--window`` shows the head in a window of its own (the workbench package's
+:mod:`workbench.live_window`, found through the entry point group
+``artificial_person.windows``: the engine imports no Qt), at the display's refresh rate, with
+sound; ``--headless`` renders nothing. ``--festival HOST:PORT`` synthesizes with a Festival
 server (``festival --server``) instead of a local Festival; ``--lsl`` pushes every event to a Lab
 Streaming Layer marker outlet too, liblsl kept to this computer unless told otherwise.
 
@@ -21,23 +24,32 @@ import os
 from pathlib import Path
 from typing import Any
 
-from engine.cli.common import add_library_option, add_model_option
+from engine.cli.common import add_library_option, add_model_option, size
 from engine.errors import UserError
 
 TOKEN_VARIABLE = "AP_SERVE_TOKEN"
+#: Entry point group through which a package offers the window of ``serve --window``: ``serve(make_server,
+#: fullscreen, size, ready)``, ``make_server(presenter)`` making the server (``engine.live.presentation``).
+WINDOW_GROUP = "artificial_person.windows"
 LOOPBACK_NAMES = ("localhost",)
 
 
 def add_verbs(verbs: Any) -> None:
-    p = verbs.add_parser("serve", help="the live animator over WebSocket/JSON (headless in this version)")
+    p = verbs.add_parser("serve", help="the live animator over WebSocket/JSON, in a window of its own or headless")
     add_model_option(p)
     add_library_option(p)
     p.add_argument("--host", default="127.0.0.1", metavar="H",
                    help="address to listen on (default 127.0.0.1; any other needs --token)")
     p.add_argument("--port", type=port_number, default=8765, metavar="P", help="port (default 8765; 0: any free one)")
-    p.add_argument("--headless", action="store_true",
-                   help="render nothing: parameter values and events only, on a 60 Hz frame clock (required "
-                        "in this version)")
+    shown = p.add_mutually_exclusive_group(required=True)
+    shown.add_argument("--window", action="store_true",
+                       help="show the head in a window of its own at the display's refresh rate, with sound; "
+                            "events are stamped with the moment their frame was on the screen")
+    shown.add_argument("--headless", action="store_true",
+                       help="render nothing: parameter values and events only, on a 60 Hz frame clock")
+    p.add_argument("--fullscreen", action="store_true", help="with --window: full screen, no cursor (F11 toggles)")
+    p.add_argument("--size", type=size, default=(600, 800), metavar="WxH",
+                   help="with --window: the window's size in pixels (default 600x800)")
     p.add_argument("--festival", default=None, metavar="HOST:PORT",
                    help="synthesize with the Festival server (festival --server) at HOST:PORT instead of a local "
                         "Festival; the same phones, words and waves")
@@ -62,8 +74,12 @@ def run_serve(args: argparse.Namespace) -> int:
     from engine.cli.common import load_model_argument
     from engine.commands import load_library
 
-    if not args.headless:
-        raise UserError("serve needs --headless in this version (the window mode is to come: docs/serve.md)")
+    if args.headless and (args.fullscreen or args.size != (600, 800)):
+        raise UserError("--fullscreen and --size are for --window, not --headless")
+    if args.window and not any(os.environ.get(name) for name in ("DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM")):
+        raise UserError("--window needs a display, and DISPLAY is not set: run it on the computer's screen (or "
+                        "under xvfb-run), or use --headless")
+    window = find_window() if args.window else None
     token = args.token if args.token is not None else os.environ.get(TOKEN_VARIABLE) or None
     if token is not None and (not token.strip() or any(ord(c) < 33 or ord(c) > 126 for c in token)):
         raise UserError("--token must be printable ASCII without spaces")
@@ -86,12 +102,33 @@ def run_serve(args: argparse.Namespace) -> int:
     library = load_library(args.library)
     from engine.live.server import LiveServer
 
-    server = LiveServer(model, host=args.host, port=args.port, token=token, library=library,
-                        synthesizer=synthesizer, lsl=args.lsl, model_folders=folders,
-                        model_name=Path(args.model).name if args.model else "head.xml",
-                        model_reader=load_model_argument)
-    asyncio.run(server.run(ready=lambda line: print(line, flush=True)))
+    def make_server(presenter: Any = None) -> LiveServer:
+        return LiveServer(model, host=args.host, port=args.port, token=token, library=library,
+                          synthesizer=synthesizer, lsl=args.lsl, model_folders=folders,
+                          model_name=Path(args.model).name if args.model else "head.xml",
+                          model_reader=load_model_argument, presenter=presenter)
+
+    def ready(line: str) -> None:
+        print(line, flush=True)
+
+    if window is not None:
+        window(make_server, args.fullscreen, args.size, ready)
+    else:
+        asyncio.run(make_server().run(ready=ready))
     return 0
+
+
+def find_window() -> Any:
+    """The ``serve`` function of the installed window package, or a :class:`UserError` saying what is missing."""
+    from importlib.metadata import entry_points
+
+    found = [entry for entry in entry_points(group=WINDOW_GROUP) if entry.name == "serve"]
+    if not found:
+        raise UserError("--window needs the workbench package (PySide6) installed; use --headless without it")
+    try:
+        return found[0].load()
+    except ImportError as exc:
+        raise UserError(f"--window cannot open a window here: {exc}; use --headless") from None
 
 
 def served_model_folders(model: str | None, libraries: list[str], extra: list[str]) -> list[Path]:

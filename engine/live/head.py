@@ -89,6 +89,11 @@ class LiveHead:
         """Every parameter's value in the last frame."""
         return dict(zip(self.names, self._current.tolist(), strict=True))
 
+    @property
+    def current(self) -> np.ndarray:
+        """Every parameter's value in the last frame, in the model's tree order (a copy)."""
+        return self._current.copy()
+
     def playing(self) -> list[dict[str, Any]]:
         """What is running or waiting to start: id, kind, start and end on the frame clock."""
         return [{"id": p.request_id, "kind": p.kind, "start_t": p.start_t, "end_t": p.end_t}
@@ -154,9 +159,10 @@ class LiveHead:
         self.pending_sets = [s for s in self.pending_sets if not chosen(s.request_id, s.owner)]
         return out
 
-    def forget(self, owner: object) -> None:
-        """Drop everything ``owner`` started (a client gone): its performances end, its sets do not happen."""
-        self.stop(owner=owner, every_owner=False)
+    def forget(self, owner: object) -> list[tuple[object, Event]]:
+        """Drop everything ``owner`` started (a client gone): its performances end (their ``finished`` events
+        are returned), its sets do not happen."""
+        return self.stop(owner=owner, every_owner=False)
 
     # -- frames --------------------------------------------------------------------------
 

@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import asyncio
 import hmac
-import json
 import math
 import signal
 import sys
@@ -41,8 +40,10 @@ from websockets.http11 import Response as HttpResponse
 from engine.commands import Library, load_library, parse_commands_text, translate
 from engine.commands.command_files import Activation, HighLevelCommand
 from engine.errors import UserError
+from engine.live.connection import Client
 from engine.live.head import Event, LiveHead
 from engine.live.lsl import STREAM_NAME, MarkerOutlet, lsl_source_id
+from engine.live.presentation import PresentationStamps, Presenter, Sound, SoundKey, stopped_sounds
 from engine.live.protocol import (
     EVENT_TYPES,
     MAX_AHEAD_MS,
@@ -52,7 +53,6 @@ from engine.live.protocol import (
     MAX_SCHEDULED,
     MAX_TEXT_CHARS,
     MAX_WAITING_UTTERANCES,
-    RATE_BURST,
     RATE_PER_SECOND,
     REQUEST_TYPES,
     SCHEMA_VERSION,
@@ -67,64 +67,21 @@ from engine.model.model import Model
 from engine.speech.synthesis import Synthesizer
 
 FPS = 60.0
-#: Messages waiting to be sent to one client; a client that reads slower than that is disconnected.
-MAX_OUTBOX = 50_000
 TOKEN_HEADER = "Authorization"
 
 
-class Client:
-    """One connection: its outbox (sent in order by a writer task), its rate budget, its waiting utterances."""
-
-    def __init__(self, connection: ServerConnection, markers: Callable[[dict[str, Any]], None] | None = None):
-        self.connection = connection
-        self.markers = markers
-        self.outbox: asyncio.Queue[str | None] = asyncio.Queue()
-        self.allowance = RATE_BURST
-        self.last_check = time.monotonic()
-        self.waiting_utterances: set[RequestId] = set()
-        self.cancelled: set[RequestId] = set()
-        self.closed = False
-        self.closing: asyncio.Future[None] | None = None
-
-    def send(self, message: dict[str, Any]) -> None:
-        if self.closed:
-            return
-        if self.markers is not None and "event" in message:
-            self.markers(message)
-        if self.outbox.qsize() >= MAX_OUTBOX:
-            self.closed = True
-            self.closing = asyncio.ensure_future(self.connection.close(1008, "the client does not read its messages"))
-            return
-        self.outbox.put_nowait(json.dumps(message, ensure_ascii=False, allow_nan=False))
-
-    def within_rate(self) -> bool:
-        now = time.monotonic()
-        self.allowance = min(RATE_BURST, self.allowance + (now - self.last_check) * RATE_PER_SECOND)
-        self.last_check = now
-        if self.allowance < 1.0:
-            return False
-        self.allowance -= 1.0
-        return True
-
-    async def write(self) -> None:
-        while True:
-            text = await self.outbox.get()
-            if text is None:
-                return
-            try:
-                await self.connection.send(text)
-            except ConnectionClosed:
-                return
-
-
 class LiveServer:
-    """The head of ``model`` served on ``host:port`` (port 0: any free port), headless."""
+    """The head of ``model`` served on ``host:port`` (port 0: any free port): headless, or shown by ``presenter``
+    (a window, :mod:`engine.live.presentation`; the frame clock then runs at its refresh rate)."""
 
     def __init__(self, model: Model, host: str = "127.0.0.1", port: int = 8765, token: str | None = None,
                  library: Library | None = None, synthesizer: Synthesizer | None = None, fps: float = FPS,
                  lsl: bool = False, model_folders: Sequence[str | Path] = (), model_name: str = "",
-                 model_reader: Callable[[str], Model] | None = None):
+                 model_reader: Callable[[str], Model] | None = None, presenter: Presenter | None = None):
         self.model = model
+        self.presenter = presenter
+        self._stamps = PresentationStamps()
+        self._loop: asyncio.AbstractEventLoop | None = None
         if model_reader is None:
             from engine.formats.model_files import load_model
 
@@ -147,7 +104,7 @@ class LiveServer:
 
             synthesizer = FestivalSynthesizer()
         self.synthesizer = synthesizer
-        self.fps = float(fps)
+        self.fps = float(presenter.fps if presenter is not None else fps)
         self.head = LiveHead(model)
         self.epoch = time.monotonic()
         self.epoch_unix = time.time()
@@ -165,6 +122,7 @@ class LiveServer:
         self._synthesis_lock = asyncio.Lock()
         self._loading = asyncio.Lock()
         self._stopping = asyncio.Event()
+        self._loop = asyncio.get_running_loop()
         await asyncio.to_thread(self.voices)                   # Festival asked once, before any client waits
         loop = asyncio.get_running_loop()
         for signum in (signal.SIGINT, signal.SIGTERM):
@@ -177,7 +135,7 @@ class LiveServer:
             shown = f"[{host}]" if ":" in host else host
             self.epoch = time.monotonic()
             self.epoch_unix = time.time()
-            line = f"serving ws://{shown}:{port} headless {self.fps:g} Hz"
+            line = f"serving ws://{shown}:{port} {self.mode} {self.fps:g} Hz"
             if self.lsl:
                 source_id = lsl_source_id(shown, port)
                 self.markers = MarkerOutlet(source_id, self.epoch)
@@ -191,8 +149,35 @@ class LiveServer:
                 await clock
 
     def close(self) -> None:
+        """End :meth:`run` (from the server's own thread; from another, :meth:`close_soon`)."""
         if self._stopping is not None:
             self._stopping.set()
+
+    def close_soon(self) -> None:
+        """End :meth:`run`, called from any thread (a window being closed)."""
+        loop = self._loop
+        if loop is not None and not loop.is_closed():
+            with suppress(RuntimeError):                       # the loop has just ended
+                loop.call_soon_threadsafe(self.close)
+
+    @property
+    def mode(self) -> str:
+        return "headless" if self.presenter is None else "window"
+
+    def presented(self, frame: int, swap_s: float, audio: dict[SoundKey, float | None]) -> None:
+        """Frame ``frame`` was on the screen at ``swap_s`` (``time.monotonic()``), and the sounds in ``audio``
+        started reaching the output at the moment given (or are silent: ``None``). Any thread may call it."""
+        loop = self._loop
+        if loop is not None and not loop.is_closed():
+            with suppress(RuntimeError):
+                loop.call_soon_threadsafe(self._on_presented, frame, swap_s, audio)
+
+    def _on_presented(self, frame: int, swap_s: float, audio: dict[SoundKey, float | None]) -> None:
+        def ms(seconds: float) -> float:
+            return round((seconds - self.epoch) * 1000.0, 3)
+
+        self._deliver(self._stamps.presented(frame, ms(swap_s), {key: None if at is None else ms(at)
+                                                                   for key, at in audio.items()}))
 
     def frame_time(self, frame: int) -> float:
         """Frame ``frame``'s time, ms on the frame clock."""
@@ -216,8 +201,12 @@ class LiveServer:
             try:
                 t = self.frame_time(self.frame)
                 announced, self._announcements = self._announcements, []
-                self._deliver([(owner, {**event, "t": t}) for owner, event in announced])
-                self._deliver(self.head.advance(t))
+                events = [(owner, {**event, "t": t}) for owner, event in announced] + self.head.advance(t)
+                if self.presenter is None:
+                    self._deliver(events)
+                else:                                     # they leave when the frame is on the screen
+                    self._stamps.hold(self.frame, events)
+                    self.presenter.show(self.frame, t, self.model, self.head.current)
             except Exception:                             # a bug of ours: said, and the clock keeps going
                 print(f"internal error in frame {self.frame}:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
                 self._deliver(self.head.stop())
@@ -230,9 +219,13 @@ class LiveServer:
             print(f"internal error pushing an LSL marker:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
 
     def _deliver(self, events: list[tuple[object, Event]]) -> None:
+        """Send each event to its client; one that no frame shows (a stop's ``finished``) has presented_t = t."""
+        if self.presenter is not None:
+            for key in stopped_sounds(events):
+                self.presenter.silence(key)
         for owner, event in events:
             if isinstance(owner, Client):
-                owner.send(event)
+                owner.send(event if "presented_t" in event else {**event, "presented_t": event["t"]})
 
     # -- connections ---------------------------------------------------------------------
 
@@ -260,7 +253,7 @@ class LiveServer:
             client.closed = True
             self._clients.discard(client)
             client.cancelled.update(client.waiting_utterances)
-            self.head.forget(client)
+            self._deliver(self.head.forget(client))            # to no one: the client is gone (sounds end)
             client.outbox.put_nowait(None)
             with suppress(asyncio.CancelledError, ConnectionClosed):
                 await writer
@@ -399,7 +392,10 @@ class LiveServer:
             client.send({"event": "failed", "id": request.id, "t": self.head.t,
                          "error": "another model was loaded while Festival synthesized this utterance; say it again"})
             return
-        self.head.add_speech(self.next_frame_time(at), request.id, client, speech)
+        performance = self.head.add_speech(self.next_frame_time(at), request.id, client, speech)
+        if self.presenter is not None:
+            self.presenter.play(Sound((id(client), request.id), speech.utterance.samples,
+                                      speech.utterance.sample_rate, performance.start_t))
 
     # -- load ----------------------------------------------------------------------------------
 
@@ -450,7 +446,7 @@ class LiveServer:
         tree = self.model.parameters
         parameters = [{"name": name, "min": tree[name].minimum, "max": tree[name].maximum,
                        "default": tree[name].default} for name in self.head.names]
-        return {"schema_version": SCHEMA_VERSION, "mode": "headless", "model": self.model_name,
+        return {"schema_version": SCHEMA_VERSION, "mode": self.mode, "model": self.model_name,
                 "requests": list(REQUEST_TYPES),
                 "events": list(EVENT_TYPES), "parameters": parameters, "voices": self.voices(),
                 "commands": sorted(self.library.names()), "clock": self.clock(),

@@ -51,8 +51,8 @@ if TYPE_CHECKING:
     """A part's VTK points and normals arrays, each with a writable numpy view on it."""
 
 # VIEWS (engine.outputs.camera) and write_png (engine.outputs.png_file) are importable from here too.
-__all__ = ["BACKGROUND", "DEFAULT_SIZE", "MAX_SIZE", "VIEWS", "FrameRenderer", "check_size", "render_model",
-           "write_png"]
+__all__ = ["BACKGROUND", "DEFAULT_SIZE", "MAX_SIZE", "VIEWS", "FrameRenderer", "aim_camera", "check_size",
+           "copy_pose", "render_model", "scene_renderer", "write_png"]
 
 DEFAULT_SIZE = (600, 800)
 MAX_SIZE = 8192
@@ -153,13 +153,7 @@ class FrameRenderer:
         positions = np.asarray(positions, dtype=float)
         if positions.shape != (self.model.n_vertices, 3):
             raise ValueError(f"expected ({self.model.n_vertices}, 3) positions, got shape {positions.shape}")
-        points, normals = self._layout.points_and_normals(positions)
-        for (start, stop), (point_array, point_view, normal_array, normal_view) in zip(
-                self._layout.slices, self._meshes, strict=True):
-            point_view[...] = points[start:stop]
-            normal_view[...] = normals[start:stop]
-            point_array.Modified()
-            normal_array.Modified()
+        copy_pose(self._layout, self._meshes, positions)
         return self._grab()
 
     def _grab(self) -> np.ndarray:
@@ -205,11 +199,30 @@ def check_size(size: Iterable[SupportsInt]) -> tuple[int, int]:
 
 def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height: int,
                  antialias: bool) -> tuple[vtkRenderWindow, list[_MeshArrays]]:
-    """Render window with the background, one actor per part (at the rest pose),
-    lights, camera and anti-aliasing.
+    """An offscreen render window with :func:`scene_renderer`'s scene in it, and anti-aliasing.
 
     Returns the window and, per part, the VTK points and normals arrays with
     writable numpy views on them, for :meth:`FrameRenderer.render` to fill.
+    """
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow
+
+    renderer, meshes = scene_renderer(model, layout, view, width, height)
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(8 if antialias else 0)
+    window.SetSize(width, height)
+    window.AddRenderer(renderer)
+    return window, meshes
+
+
+def scene_renderer(model: Model, layout: PartLayout, view: str, width: int,
+                   height: int) -> tuple[Any, list[_MeshArrays]]:
+    """A VTK renderer with the background, one actor per part (at the rest pose),
+    lights and the camera of ``view`` for a ``width`` × ``height`` picture, to put
+    in a render window of one's own (an on-screen one: ``serve --window``).
+
+    Returns the renderer and, per part, the VTK points and normals arrays with
+    writable numpy views on them (:func:`copy_pose` fills them).
 
     The settings are those pyvista's ``Plotter`` and ``add_mesh`` used to
     make (the pictures are identical to the pixel), including one quirk:
@@ -220,7 +233,7 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
     from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
     from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
-    from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer
 
     renderer = vtkRenderer()
     renderer.SetBackground(*hex_rgb(BACKGROUND[0]))
@@ -296,6 +309,13 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
         light.SetFocalPoint(0.0, 0.0, 0.0)
         light.SetIntensity(intensity)
         renderer.AddLight(light)
+    aim_camera(renderer, model, view, width, height)
+    return renderer, meshes
+
+
+def aim_camera(renderer: Any, model: Model, view: str, width: int, height: int) -> None:
+    """Point ``renderer``'s camera as ``render --view`` does for a ``width`` × ``height`` picture
+    (framing the rest pose: every pose is seen from the same place)."""
     camera = renderer.GetActiveCamera()
     focal, position, up, near_far = camera_pose(framed_points(model), VIEWS[view], width, height)
     camera.SetFocalPoint(*focal)
@@ -303,12 +323,17 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
     camera.SetViewUp(*up)
     camera.SetViewAngle(VIEW_ANGLE)
     camera.SetClippingRange(*near_far)
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(8 if antialias else 0)
-    window.SetSize(width, height)
-    window.AddRenderer(renderer)
-    return window, meshes
+
+
+def copy_pose(layout: PartLayout, meshes: list[_MeshArrays], positions: np.ndarray) -> None:
+    """Put the vertices at ``positions`` (N × 3, mm) into a scene's meshes, with their normals."""
+    points, normals = layout.points_and_normals(positions)
+    for (start, stop), (point_array, point_view, normal_array, normal_view) in zip(
+            layout.slices, meshes, strict=True):
+        point_view[...] = points[start:stop]
+        normal_view[...] = normals[start:stop]
+        point_array.Modified()
+        normal_array.Modified()
 
 
 def vtk_texture(pixels: np.ndarray, largest: int) -> Any:

@@ -170,7 +170,7 @@ def test_set_shows_in_state_from_the_frame_the_reply_names(client):
             break
         assert state["values"]["head_turn"] == before["values"]["head_turn"]
     applied = client.next_event()
-    assert applied == {"event": "applied", "id": reply["id"], "t": reply["t"]}
+    assert applied == {"event": "applied", "id": reply["id"], "t": reply["t"], "presented_t": reply["t"]}
     client.set({"head_turn": 0})
 
 
@@ -278,11 +278,13 @@ def test_an_address_beyond_loopback_needs_a_token_and_nothing_is_bound_without_o
 
 
 @pytest.mark.parametrize("args, expected", [
-    (["serve"], "needs --headless"),
-    (["serve", "--headless", "--window"], "unrecognized arguments: --window"),
+    (["serve"], "one of the arguments --window --headless is required"),
+    (["serve", "--headless", "--window"], "not allowed with argument"),
+    (["serve", "--headless", "--fullscreen"], "--fullscreen and --size are for --window"),
+    (["serve", "--window", "--size", "0x10"], "width and height must be"),
     (["serve", "--headless", "--port", "70000"], "not a port number"),
 ])
-def test_what_this_version_does_not_do_is_refused(args, expected):
+def test_bad_serve_arguments_are_refused(args, expected):
     result = run_cli(*args)
     assert result.returncode == 2 and expected in result.stderr and "Traceback" not in result.stderr
 
@@ -570,6 +572,8 @@ def check_gaze_cue_log(rows: list[dict[str, str]]) -> None:
         # the first frame at its onset (a set's onset is the example's own sum: ±1e-9 ms of float rounding)
         assert -1e-9 <= t - float(row["onset_t"]) < FRAME_MS
         assert float(row["received_monotonic_s"]) >= float(row["frame_monotonic_s"])  # never heard before shown
+        assert float(row["presented_t"]) >= t                                         # presented at or after it
+        assert float(row["received_monotonic_s"]) >= float(row["presented_monotonic_s"])
         if row["request"] == "say" and row["sample"]:                                 # the audio clock agrees
             assert float(row["onset_t"]) - start_t == pytest.approx(int(row["sample"]) * 1000 / rate, abs=0.05)
     [nod] = [r for r in say if r["event"] == "command_start"]

@@ -63,7 +63,8 @@ def test_a_model_from_a_served_folder_replaces_the_head_from_the_frame_the_reply
         stopped = next(e for e in events if e["id"] == far["id"])
         loaded = next(e for e in events if e["id"] == reply["id"])
         assert stopped["event"] == "finished" and stopped["stopped"] is True     # what ran on the old head ended
-        assert loaded == {"event": "loaded", "id": reply["id"], "t": reply["t"], "model": "people/anna.xml"}
+        assert loaded == {"event": "loaded", "id": reply["id"], "t": reply["t"], "model": "people/anna.xml",
+                          "presented_t": reply["t"]}
         state = head.state()
         assert state["model"] == "people/anna.xml" and state["values"]["head_turn"] == pytest.approx(0.2)
         caps = head.capabilities()
