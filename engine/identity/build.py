@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import cache
 
 import numpy as np
@@ -88,24 +89,28 @@ def identity_vertex_displacement(model: Model, identity: Identity,
     return D, rigid
 
 
-def make_identity_head(identity: Identity, base: Model | None = None) -> Model:
+def make_identity_head(identity: Identity, base: Model | None = None,
+                       between_stages: Callable[[], object] | None = None) -> Model:
     """The head of ``identity``: ``base`` (the default head by default) reshaped, its rig carried over.
 
     ``base`` must have the default head's vertices and no identity of its own
     (a default head whose rig was edited keeps its edits). The result carries
-    ``identity`` and is named after it.
+    ``identity`` and is named after it. ``between_stages()`` is called before each of the
+    build's stages; an exception it raises ends the build (how a photo fit is stopped part-way).
     """
+    checkpoint = between_stages if between_stages is not None else (lambda: None)
     base = base if base is not None else _default_head()
     if getattr(base, "identity", None) is not None and base.identity != Identity():
         raise IdentityError("this model already is an identity; make identities from the default head")
     D, rigid = identity_vertex_displacement(base, identity)
+    checkpoint()
     head = carry_rig_over(base, base.vertices + D, rigid)
     if identity != Identity():
-        line_fields_with_the_skin(base, head)
-        refit_articulation(base, head)
-        refit_eyelid_angles(base, head)
-        keep_fields_off_the_eyes(head)
-        keep_lids_off_the_eyes(head)
+        for stage in (lambda: line_fields_with_the_skin(base, head), lambda: refit_articulation(base, head),
+                      lambda: refit_eyelid_angles(base, head), lambda: keep_fields_off_the_eyes(head),
+                      lambda: keep_lids_off_the_eyes(head)):
+            checkpoint()
+            stage()
     head.identity = identity
     head.name = identity_name(identity)
     head.description = (f"{base.description} Identity: "

@@ -55,7 +55,8 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     report("shape")
     shape = fit_shape(base, {v: p for v, p in points.items() if v in photos}, photos.get("side"), should_stop)
     report("head")
-    head = make_identity_head(shape.identity, base) if shape.identity.values else base.copy()
+    head = (make_identity_head(shape.identity, base, lambda: stop_if_asked(should_stop)) if shape.identity.values
+            else base.copy())
     moved = head.vertices + shape.warp
     rigid: dict[str, Similarity] = {}
     for part in ("eye_left", "eye_right"):

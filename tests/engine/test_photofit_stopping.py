@@ -77,13 +77,15 @@ def full_fit_questions(head, photo_and_points):
 
 def test_a_full_fit_asks_often_inside_its_long_steps(full_fit_questions):
     # the shape step asks once per sampled identity parameter and per evaluation of the optimiser;
+    # the head step between the stages of making the identity's head; the rig step between its refits;
     # the texture step every 128 triangles drawn (atlas and visibility buffers)
     assert full_fit_questions["shape"] > 20, full_fit_questions
+    assert full_fit_questions["head"] >= 6, full_fit_questions
     assert full_fit_questions["texture"] > 20, full_fit_questions
     assert full_fit_questions["rig"] >= 4, full_fit_questions
 
 
-@pytest.mark.parametrize("step", ["shape", "texture"])
+@pytest.mark.parametrize("step", ["shape", "head", "texture"])
 def test_stop_half_way_through_a_step_ends_the_fit_inside_it(head, photo_and_points, full_fit_questions, step):
     photos, points = photo_and_points
     half = full_fit_questions[step] // 2
