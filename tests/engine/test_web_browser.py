@@ -79,7 +79,8 @@ def _keep(name: str, picture: np.ndarray) -> None:
         from PIL import Image
 
         Path(folder).mkdir(parents=True, exist_ok=True)
-        Image.fromarray(picture).save(Path(folder) / name)
+        # JPEG: pictures for the docs, a sixth of the PNG's bytes (the tests measure the pixels, not these)
+        Image.fromarray(picture).save(Path(folder) / name, quality=90)
 
 
 @pytest.fixture(scope="module")
@@ -97,8 +98,8 @@ def stills(head, site, browser):
         corners = project(animation["camera"], np.array([landmarks["8.3"], landmarks["8.4"]]))
         out[kind] = {"ms": ms, "page": page, "screenshot": screenshot, "render": render, "corners": corners}
         slug = kind.replace(" ", "-")
-        _keep(f"web-{slug}-browser.png", screenshot)
-        _keep(f"web-{slug}-engine.png", render)
+        _keep(f"web-{slug}-browser.jpg", screenshot)
+        _keep(f"web-{slug}-engine.jpg", render)
     return out
 
 
