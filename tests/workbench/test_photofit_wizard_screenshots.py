@@ -1,8 +1,10 @@
 """Pictures of the photo-fit wizard for docs/workbench-photofit.md, made by the real window.
 
 A real portrait, ``skimage.data.astronaut()`` (public domain, NASA), fitted
-front-only with the landmarks of ``docs/images/photofit/astronaut_points.json``;
-and the default head rendered from the front and the side, fitted from both.
+front-only with the landmarks of ``docs/images/photofit/astronaut_points.json``,
+then saying the test sentence on the result page (real Festival; the picture
+is the frame in the middle of its longest "a", paused there); and the default
+head rendered from the front and the side, fitted from both.
 Writes ``wizard-*.png`` into ``$AP_SCREENSHOT_DIR/photofit`` when that names a
 folder (``AP_SCREENSHOT_DIR=docs/images`` refreshes the docs' pictures), else
 into the test's own temporary folder: a test run leaves the work tree alone.
@@ -22,6 +24,7 @@ from PySide6.QtCore import QRect, QRectF
 import engine
 from engine.photofit.points import REQUIRED_FRONT
 from tests.workbench.test_photofit_wizard import FIT_TIMEOUT_MS, open_wizard, photographs  # noqa: F401
+from tests.workbench.test_photofit_wizard_speaking import mouth_gap, open_vowel_ms
 from workbench.layouts import fresh_window_size
 from workbench.photofit_wizard_landmarks import MoveMarker
 from workbench.script_panel.jobs import wait_for_all
@@ -79,6 +82,15 @@ def test_screenshots_of_a_real_portrait_and_a_two_view_fit(head_window, photogra
     shoot(wizard, qtbot, shots, "wizard-fit.png")
     wizard.next()
     written = shoot(wizard, qtbot, shots, "wizard-result.png")
+    result = wizard.result_page
+    result.say_button.click()
+    qtbot.waitUntil(lambda: result.player.is_playing, timeout=FIT_TIMEOUT_MS)
+    result.player.pause()
+    result.playhead.set_time(open_vowel_ms(result.speech) / 1000)
+    head = result.document.model
+    assert mouth_gap(result.document.vertices(), head) > mouth_gap(head.vertices, head) + 2.0      # mm: open
+    result.viewport.set_view("front")
+    speaking = shoot(wizard, qtbot, shots, "wizard-result-speaking.png")
     wizard.reject()
 
     wizard = open_wizard(head_window, qtbot)
@@ -91,6 +103,6 @@ def test_screenshots_of_a_real_portrait_and_a_two_view_fit(head_window, photogra
     qtbot.waitUntil(wizard.fit_page.isComplete, timeout=FIT_TIMEOUT_MS)
     two = shoot(wizard, qtbot, shots, "wizard-fit-two-views.png")
     wizard.reject()
-    for path in (written, two):
+    for path in (written, speaking, two):
         with Image.open(path) as picture:
             assert picture.size == WIZARD_SIZE
