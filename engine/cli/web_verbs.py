@@ -3,6 +3,7 @@
 >>> from engine.cli import main
 >>> main(["web-export", "--say", "Pappa osti omenoita.", "-o", "site"])                    # doctest: +SKIP
 >>> main(["web-export", "--tracks", "t.csv", "--audio", "t.wav", "-o", "site"])           # doctest: +SKIP
+>>> main(["web-export", "--stimuli", "set", "-o", "site"])                                # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -25,6 +26,8 @@ def add_verbs(verbs: Any) -> None:
     source.add_argument("--say", metavar="TEXT", help="speak this text (with inline commands) with Festival")
     source.add_argument("--file", metavar="F", help="speak the text of this UTF-8 file")
     source.add_argument("--tracks", metavar="CSV", help="play a tracks CSV (time_ms,<parameter>,...) ...")
+    source.add_argument("--stimuli", metavar="OUTDIR", help="every stimulus of a set made by 'stimuli' (with the "
+                                                            "kinds tracks and wav): index.html?stimulus=ID")
     p.add_argument("--audio", metavar="WAV", help="... with this audio (PCM WAV, copied unchanged)")
     p.add_argument("--phones", metavar="CSV", help="... and the words of this phones CSV for the word events")
     p.add_argument("--voice", default=None, metavar="V", help="Festival voice (default suo_fi_lj_diphone)")
@@ -43,6 +46,17 @@ def run_web_export(args: argparse.Namespace) -> int:
     from engine.web.site import write_speech_site, write_tracks_site
 
     out = Path(args.output)
+    if args.stimuli is not None:
+        from engine.web.stimuli_site import write_stimuli_site
+
+        for option in ("audio", "phones", "voice"):
+            if getattr(args, option) is not None:
+                raise UserError(f"--{option} does not go with --stimuli (the set holds its own)")
+        sizes = write_stimuli_site(load_model_argument(args.model), args.stimuli, out, size=args.size)
+        count = sum(1 for name in sizes if name.endswith(".json") and name.startswith("stimuli/"))
+        print(f"wrote {out}/: {count} stimuli, head.glb ({sizes['head.glb'] / 1e3:.0f} kB); "
+              f"{sum(sizes.values()) / 1e6:.2f} MB in all")
+        return 0
     if args.tracks is not None:
         if args.audio is None:
             raise UserError("--tracks needs --audio WAV (the sound the tracks go with)")
@@ -76,7 +90,7 @@ def _text(args: argparse.Namespace) -> tuple[str, str]:
     if args.say is not None:
         return args.say, "<text>"
     if args.file is None:
-        raise UserError("nothing to play: give --say TEXT, --file F, or --tracks CSV --audio WAV")
+        raise UserError("nothing to play: give --say TEXT, --file F, --tracks CSV --audio WAV or --stimuli OUTDIR")
     try:
         return read_bounded_text(args.file, error=UserError, what="text"), args.file
     except OSError as exc:

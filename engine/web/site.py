@@ -114,36 +114,72 @@ def write_site(model: Model, names: Sequence[str], values: np.ndarray, frame_ms:
     earlier site, whose files are replaced). ``values``: frames × ``names``, frame ``n`` at ``n × frame_ms``.
     Returns each file's size in bytes (three.js as one entry, ``three/``)."""
     out = Path(out)
-    _check_folder(out)
+    check_folder(out)
+    animation = site_animation(model, names, values, frame_ms, phones, words, duration_ms, size)
+    animation.update(model="head.glb", audio="speech.wav")
+    glb = web_glb(model, morph_parameters(model, shared_targets([animation])))
+    files = {"animation.json": json_bytes(animation), "speech.wav": wav}
+    return write_folder(out, glb, files, size, "animation.json")
+
+
+def site_animation(model: Model, names: Sequence[str], values: np.ndarray, frame_ms: float,
+                   phones: Sequence[Segment] = (), words: Sequence[Segment] = (), duration_ms: float | None = None,
+                   size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, Any]:
+    """One animation JSON (without the ``model`` and ``audio`` it names): the frame table with the
+    camera, lights and shading of ``render``."""
     tree = model.parameters
     defaults = [tree[name].default for name in names]
-    joints = skeleton_parameters(model)
-    animation = animation_document(names, values, defaults, frame_ms, joints, phones, words, duration_ms)
-    moving = {c["parameter"]: c["target_value"] for c in animation["channels"] if c["kind"] == "morph"}
-    glb = web_glb(model, morph_parameters(model, moving))
-    animation.update(model="head.glb", audio="speech.wav", camera=site_camera(model, size),
-                     background={"bottom": BACKGROUND[0], "top": BACKGROUND[1]},
+    animation = animation_document(names, values, defaults, frame_ms, skeleton_parameters(model), phones, words,
+                                   duration_ms)
+    animation.update(camera=site_camera(model, size), background={"bottom": BACKGROUND[0], "top": BACKGROUND[1]},
                      lights=[{"camera_position": list(p), "intensity": i} for p, i in CAMERA_LIGHTS],
                      parts=_part_shading(model), generator=MARKER)
+    return animation
+
+
+def shared_targets(animations: Sequence[dict[str, Any]]) -> dict[str, float]:
+    """The morph targets one model needs for all ``animations``: each morph parameter at the value farthest
+    from its default that any of them reaches; every animation's channels are set to that target value."""
+    peaks: dict[str, float] = {}
+    for animation in animations:
+        for channel in animation["channels"]:
+            if channel["kind"] == "morph":
+                name, value = channel["parameter"], channel["target_value"]
+                if name not in peaks or abs(value - channel["default"]) > abs(peaks[name] - channel["default"]):
+                    peaks[name] = value
+    for animation in animations:
+        for channel in animation["channels"]:
+            if channel["kind"] == "morph":
+                channel["target_value"] = peaks[channel["parameter"]]
+    return peaks
+
+
+def json_bytes(document: dict[str, Any]) -> bytes:
+    return json.dumps(document, separators=(",", ":"), ensure_ascii=False).encode("utf-8")
+
+
+def write_folder(out: Path, glb: bytes, files: dict[str, bytes], size: tuple[int, int],
+                 first_animation: str) -> dict[str, int]:
+    """The page, the player, three.js and the model, with ``files`` (path in the site → bytes), into ``out``;
+    the page opens ``first_animation`` unless its address names a stimulus. Each file replaces its old one
+    whole (written beside it, then renamed). Returns each file's size (three.js as one entry, ``three/``)."""
     out.mkdir(parents=True, exist_ok=True)
-    page = _player_file("index.html").replace("{{WIDTH}}", str(size[0])).replace("{{HEIGHT}}", str(size[1]))
-    files: dict[str, bytes] = {
-        "index.html": page.encode("utf-8"),
-        "player.js": _player_file("player.js").encode("utf-8"),
-        "head.glb": glb,
-        "animation.json": json.dumps(animation, separators=(",", ":")).encode("utf-8"),
-        "speech.wav": wav,
-    }
-    for name, blob in files.items():
-        temporary = out / f".{name}.part"
+    page = (_player_file("index.html").replace("{{WIDTH}}", str(size[0])).replace("{{HEIGHT}}", str(size[1]))
+            .replace("{{ANIMATION}}", first_animation))
+    everything = {"index.html": page.encode("utf-8"), "player.js": _player_file("player.js").encode("utf-8"),
+                  "head.glb": glb, **files}
+    for name, blob in everything.items():
+        target = out / name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        temporary = target.with_name(f".{target.name}.part")
         temporary.write_bytes(blob)
-        temporary.replace(out / name)
+        temporary.replace(target)
     three = out / "three"
     if three.exists():
         shutil.rmtree(three)
     with resources.as_file(resources.files("engine.web") / "vendor" / "three") as vendored:
         shutil.copytree(vendored, three, ignore=shutil.ignore_patterns("README.md"))
-    sizes = {name: len(blob) for name, blob in files.items()}
+    sizes = {name: len(blob) for name, blob in everything.items()}
     sizes["three/"] = sum(f.stat().st_size for f in three.rglob("*") if f.is_file())
     return sizes
 
@@ -203,7 +239,8 @@ def _player_file(name: str) -> str:
     return (resources.files("engine.web") / "player" / name).read_text(encoding="utf-8")
 
 
-def _check_folder(out: Path) -> None:
+def check_folder(out: Path) -> None:
+    """Refuse a file, or a folder that holds anything but an earlier site."""
     if out.exists() and not out.is_dir():
         raise UserError("the site must be a folder, and this is a file", file=out)
     if out.is_dir() and any(out.iterdir()):

@@ -3,8 +3,12 @@ tests/engine/test_web_browser.py opens the sites in Chromium). Real Festival, re
 
 from __future__ import annotations
 
+import csv
+import io
 import json
 import re
+import shutil
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -165,3 +169,98 @@ def _silent_wav() -> bytes:
     from engine.speech.synthesis import wav_bytes
 
     return wav_bytes(np.zeros(1600, dtype=np.float32), 16000)
+
+
+# -- a stimulus set: --stimuli OUTDIR --------------------------------------------------------------------------
+
+DESIGN = """[factors]
+text = ["Pappa ampui pallon.", "Maija meni kotiin."]
+av_offset_ms = [0, 200]
+[output]
+kinds = ["wav", "tracks", "phones"]
+fps = 30
+"""
+
+
+@pytest.fixture(scope="module")
+def stimulus_set(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("stimuli")
+    (folder / "design.toml").write_text(DESIGN)
+    made = run("stimuli", folder / "design.toml", "-o", folder / "set", "--workers", "1")
+    assert made.returncode == 0, made.stderr
+    return folder / "set"
+
+
+@pytest.mark.slow
+def test_a_stimulus_set_becomes_one_site_with_one_head(stimulus_set, tmp_path):
+    site = tmp_path / "site"
+    result = run("web-export", "--stimuli", stimulus_set, "-o", site)
+    assert result.returncode == 0, result.stderr
+    manifest = list(csv.DictReader(io.StringIO((stimulus_set / "manifest.csv").read_text())))
+    listing = json.loads((site / "stimuli.json").read_text())
+    assert [s["id"] for s in listing["stimuli"]] == [row["id"] for row in manifest] == ["0001", "0002", "0003", "0004"]
+    glb = (site / "head.glb").read_bytes()
+    document = json.loads(glb[20:20 + int.from_bytes(glb[12:16], "little")])
+    target_values = {t["name"]: t["value"] for t in document["meshes"][0]["extras"]["targets"]}
+    for row in manifest:
+        animation = json.loads((site / "stimuli" / f"{row['id']}.json").read_text())
+        assert (site / "stimuli" / f"{row['id']}.wav").read_bytes() == (stimulus_set / row["file_wav"]).read_bytes()
+        for channel in animation["channels"]:
+            if channel["kind"] == "morph":              # every stimulus drives the one head's targets
+                assert channel["target_value"] == target_values[channel["parameter"]]
+        onsets = [float(t) for t in row["word_onsets_ms"].split(";")]
+        assert [w["start_ms"] for w in animation["words"]] == pytest.approx(onsets, abs=1e-3)
+        assert animation["model"] == "../head.glb" and animation["audio"] == f"{row['id']}.wav"
+    # the face starts 200 ms before the sound in 0002: its first motion is 200 ms before 0001's, on the clip's clock
+    first, second = (json.loads((site / "stimuli" / f"{i}.json").read_text()) for i in ("0001", "0002"))
+    assert second["words"][0]["start_ms"] == pytest.approx(first["words"][0]["start_ms"] + 200, abs=1e-3)
+    assert _first_motion_ms(second) == pytest.approx(_first_motion_ms(first), abs=1.0)
+
+
+def _first_motion_ms(animation) -> float:
+    moved = [int(np.flatnonzero(np.asarray(c["values"]) != 0)[0]) for c in animation["channels"] if any(c["values"])]
+    return min(moved) * animation["frame_ms"]
+
+
+def _edited_set(stimulus_set, tmp_path, edit) -> Path:
+    copy = tmp_path / "set"
+    shutil.copytree(stimulus_set, copy)
+    manifest = copy / "manifest.csv"
+    manifest.write_text(edit(manifest.read_text()))
+    return copy
+
+
+def test_a_set_without_tracks_is_refused_by_its_manifest(stimulus_set, tmp_path):
+    def without_tracks(text: str) -> str:
+        rows = list(csv.reader(io.StringIO(text)))
+        keep = [i for i, name in enumerate(rows[0]) if name not in ("file_tracks", "sha256_tracks")]
+        out = io.StringIO()
+        csv.writer(out, lineterminator="\n").writerows([[row[i] for i in keep] for row in rows])
+        return out.getvalue()
+
+    copy = _edited_set(stimulus_set, tmp_path, without_tracks)
+    line = assert_user_error(run("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
+    assert line.startswith(f"error: {copy / 'manifest.csv'}:1:") and '"tracks"' in line, line
+
+
+def test_a_set_of_several_heads_is_refused_with_the_row(stimulus_set, tmp_path):
+    def with_models(text: str) -> str:
+        lines = text.splitlines()
+        return "\n".join([lines[0] + ",model"] + [line + ",other-head.xml" for line in lines[1:]]) + "\n"
+
+    copy = _edited_set(stimulus_set, tmp_path, with_models)
+    line = assert_user_error(run("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
+    assert line.startswith(f"error: {copy / 'manifest.csv'}:2:") and "'model'" in line, line
+
+
+def test_a_missing_stimulus_file_is_named_with_its_row(stimulus_set, tmp_path):
+    copy = _edited_set(stimulus_set, tmp_path, lambda text: text)
+    (copy / "0003.wav").unlink()
+    line = assert_user_error(run("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
+    assert line.startswith(f"error: {copy / 'manifest.csv'}:4:") and "0003.wav" in line, line
+    assert not (tmp_path / "site").exists()
+
+
+def test_a_folder_that_is_no_set_is_refused(tmp_path):
+    line = assert_user_error(run("web-export", "--stimuli", tmp_path, "-o", tmp_path / "site"))
+    assert line.startswith(f"error: {tmp_path / 'manifest.csv'}:") and "no manifest.csv" in line, line

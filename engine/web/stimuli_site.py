@@ -1,0 +1,146 @@
+"""The site of a whole stimulus set (``web-export --stimuli OUTDIR``): one head, one page, every stimulus.
+
+A set made by ``artificial-person stimuli`` with the kinds ``tracks`` and ``wav`` (and, for word
+events with their ends, ``phones``) holds every stimulus's performance on its own clip's clock —
+the expression, the audio–visual offset, the noise already in. The site keeps them so:
+
+=========================  =============================================================
+``stimuli/ID.json``         the stimulus's animation (as ``animation.json`` of one sentence)
+``stimuli/ID.wav``          its sound, copied unchanged from the set
+``stimuli.json``            the list: each stimulus's id, its manifest row, its files
+``head.glb``                one model with every morph target any stimulus moves
+=========================  =============================================================
+
+``index.html?stimulus=ID`` plays one (``&t=MS``: paused at MS); ``index.html`` plays the first.
+The set's stimuli must share one head: sets with ``model`` or identity factors are refused.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from engine.errors import UserError
+from engine.formats.text_files import read_bounded_text
+from engine.speech.synthesis import Segment, read_phones_csv, read_wav
+from engine.timeline.tracks import read_tracks_csv
+from engine.web.site import (
+    DEFAULT_SIZE,
+    check_folder,
+    json_bytes,
+    shared_targets,
+    site_animation,
+    words_of,
+    write_folder,
+)
+from engine.web.web_model import morph_parameters, web_glb
+
+if TYPE_CHECKING:
+    from engine.model import Model
+
+__all__ = ["HEAD_FACTORS", "STIMULI_FORMAT", "write_stimuli_site"]
+
+STIMULI_FORMAT = "artificial-person-web-stimuli"
+#: Factors that give stimuli heads of their own, which one site does not hold yet.
+HEAD_FACTORS = ("model", "identity", "identity_b", "identity_morph")
+_ID = re.compile(r"^[A-Za-z0-9_-]+$")
+
+
+def write_stimuli_site(model: Model, set_folder: str | Path, out: str | Path,
+                       size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
+    """Write the site of the stimulus set in ``set_folder`` (its ``manifest.csv``) into ``out``."""
+    set_folder, out = Path(set_folder), Path(out)
+    manifest = set_folder / "manifest.csv"
+    rows = _manifest_rows(manifest)
+    check_folder(out)
+    animations, files, listed = [], {}, []
+    for line, row in rows:
+        animation, wav = _stimulus(model, set_folder, manifest, line, row, size)
+        animation.update(model="../head.glb", audio=f"{row['id']}.wav", stimulus=row["id"])
+        animations.append(animation)
+        files[f"stimuli/{row['id']}.wav"] = wav
+        listed.append({"id": row["id"], "animation": f"stimuli/{row['id']}.json", "audio": f"stimuli/{row['id']}.wav",
+                       "duration_ms": animation["duration_ms"], "manifest": row})
+    glb = web_glb(model, morph_parameters(model, shared_targets(animations)))
+    for animation in animations:
+        files[f"stimuli/{animation['stimulus']}.json"] = json_bytes(animation)
+    files["stimuli.json"] = json_bytes({"format": STIMULI_FORMAT, "version": 1, "set": str(set_folder.name),
+                                        "stimuli": listed})
+    return write_folder(out, glb, files, size, listed[0]["animation"])
+
+
+def _manifest_rows(manifest: Path) -> list[tuple[int, dict[str, str]]]:
+    """The manifest's rows with their line numbers, checked for what a site needs."""
+    if not manifest.is_file():
+        raise UserError("no manifest.csv here: give the folder a stimulus set was made in", file=manifest)
+    try:
+        text = read_bounded_text(manifest, error=UserError, what="manifest")
+    except OSError as exc:
+        raise UserError(f"cannot read the manifest: {exc.strerror or exc}", file=manifest) from None
+    reader = csv.DictReader(io.StringIO(text))
+    header = reader.fieldnames or []
+    if "id" not in header:
+        raise UserError("not a stimulus set's manifest (no 'id' column)", file=manifest, line=1)
+    missing = [kind for kind in ("tracks", "wav") if f"file_{kind}" not in header]
+    if missing:
+        raise UserError(f"the set has no {' and no '.join(missing)} files: make it with \"tracks\" and \"wav\" "
+                        "among [output] kinds", file=manifest, line=1)
+    rows = []
+    for row in reader:
+        line = reader.line_num
+        if None in row or any(value is None for value in row.values()):
+            raise UserError("a row with more or fewer cells than the header", file=manifest, line=line)
+        if not _ID.match(row["id"]):
+            raise UserError(f"stimulus id {row['id']!r} is not letters, digits, '-' or '_'", file=manifest, line=line)
+        heads = [f for f in HEAD_FACTORS if row.get(f)]
+        if heads:
+            raise UserError(f"stimuli with heads of their own (factor '{heads[0]}') are not supported by web-export "
+                            "yet: one site holds one head", file=manifest, line=line)
+        rows.append((line, row))
+    if not rows:
+        raise UserError("the manifest lists no stimulus", file=manifest, line=1)
+    if len({row["id"] for _, row in rows}) != len(rows):
+        raise UserError("two stimuli have the same id", file=manifest)
+    return rows
+
+
+def _stimulus(model: Model, set_folder: Path, manifest: Path, line: int, row: dict[str, str],
+              size: tuple[int, int]) -> tuple[dict[str, Any], bytes]:
+    tracks, audio = (_inside(set_folder, row[f"file_{kind}"], manifest, line) for kind in ("tracks", "wav"))
+    table = read_tracks_csv(tracks, model)
+    samples, rate = read_wav(audio)
+    phones: list[Segment] = []
+    if row.get("file_phones"):
+        phones = read_phones_csv(_inside(set_folder, row["file_phones"], manifest, line))
+    words = words_of(phones) if phones else _manifest_words(row, manifest, line)
+    end_ms = max(table.end, 1000.0 * len(samples) / rate, phones[-1].end_ms if phones else 0.0)
+    frame_ms = 1000.0 / table.fps
+    times = np.arange(max(1, int(np.ceil(end_ms / frame_ms - 1e-9)) + 1)) * frame_ms
+    animation = site_animation(model, table.parameters, table.sample(times), frame_ms, phones, words, end_ms, size)
+    return animation, audio.read_bytes()
+
+
+def _inside(set_folder: Path, name: str, manifest: Path, line: int) -> Path:
+    """A file the manifest names, which must be in the set's folder."""
+    path = set_folder / name
+    if not name or Path(name).is_absolute() or ".." in Path(name).parts or not path.is_file():
+        raise UserError(f"the file {name!r} is not in the set's folder", file=manifest, line=line)
+    return path
+
+
+def _manifest_words(row: dict[str, str], manifest: Path, line: int) -> list[Segment]:
+    """Words from the manifest's ``words`` and ``word_onsets_ms`` (each ending where the next starts)."""
+    words = [w for w in row.get("words", "").split(";") if w]
+    try:
+        onsets = [float(t) for t in row.get("word_onsets_ms", "").split(";") if t]
+    except ValueError:
+        raise UserError("word_onsets_ms: not numbers", file=manifest, line=line) from None
+    if len(words) != len(onsets):
+        raise UserError("words and word_onsets_ms do not pair up", file=manifest, line=line)
+    ends = [*onsets[1:], onsets[-1]] if onsets else []
+    return [Segment(w, s, e) for w, s, e in zip(words, onsets, ends, strict=True)]
