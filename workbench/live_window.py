@@ -24,6 +24,7 @@ serving ws://127.0.0.1:8765 window 60 Hz
 
 from __future__ import annotations
 
+import os
 import re
 import signal
 import sys
@@ -31,7 +32,7 @@ import threading
 import time
 import traceback
 from collections.abc import Callable
-from typing import Any
+from typing import Any, NoReturn
 
 import numpy as np
 from PySide6.QtCore import QObject, Qt, QTimer, Signal
@@ -88,9 +89,10 @@ class LiveWindow(QWidget):
         super().closeEvent(event)
 
     def pixel_size(self) -> tuple[int, int]:
-        """The view's size in device pixels."""
-        ratio = self.view.devicePixelRatioF()
-        return max(1, round(self.view.width() * ratio)), max(1, round(self.view.height() * ratio))
+        """The view's size in device pixels: the window's (the view fills it, and is laid out only after the
+        window's own resize event)."""
+        ratio = self.devicePixelRatioF()
+        return max(1, round(self.width() * ratio)), max(1, round(self.height() * ratio))
 
 
 class WindowPresenter(QObject):
@@ -205,7 +207,8 @@ class WindowPresenter(QObject):
 def serve_in_window(make_server: Callable[[WindowPresenter], Any], fullscreen: bool, size: tuple[int, int],
                     ready: Callable[[str], None]) -> None:
     """Open the window, serve with :class:`WindowPresenter` (``make_server(presenter)`` makes the server) on a
-    second thread until the window closes or SIGINT/SIGTERM comes; the server's failure is raised here."""
+    second thread until the window closes or SIGINT/SIGTERM comes, then end the process (:func:`leave_process`:
+    run it in a process of its own, as the CLI does); a failure to serve (the port taken) is raised instead."""
     app = QApplication.instance() or QApplication([sys.argv[0]])
     window = LiveWindow(size)
     screen = window.screen() or app.primaryScreen()
@@ -228,6 +231,8 @@ def serve_in_window(make_server: Callable[[WindowPresenter], Any], fullscreen: b
 
     window.closing = server.close_soon
     if fullscreen:
+        if screen is not None:
+            window.setGeometry(screen.geometry())     # what full screen is where no window manager honours the state
         window.showFullScreen()
         window.setCursor(Qt.CursorShape.BlankCursor)
     else:
@@ -257,7 +262,20 @@ def serve_in_window(make_server: Callable[[WindowPresenter], Any], fullscreen: b
         if isinstance(exc, (UserError, OSError)):
             raise exc
         print(f"internal error in the live server:\n{''.join(traceback.format_exception(exc))}", file=sys.stderr)
-        raise SystemExit(1)
+        leave_process(1)
+    leave_process(0)
+
+
+def leave_process(status: int) -> NoReturn:
+    """End the process now, after the exit handlers and with the output flushed, but without the interpreter's
+    last garbage collection: there PySide6's and VTK's wrappers, torn down in whatever order it finds them,
+    sometimes crash (``bool_dealloc``, SIGABRT) although everything was closed above."""
+    import atexit
+
+    atexit._run_exitfuncs()
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(status)
 
 
 def close_window(window: LiveWindow) -> None:

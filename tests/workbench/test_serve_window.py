@@ -145,7 +145,11 @@ def screen_when(screen: Screen, settled: object, seconds: float = 20.0) -> np.nd
         picture = screen.grab()
         if settled(picture):
             return picture
-        assert time.monotonic() < deadline, "the screen never showed it"
+        if time.monotonic() > deadline:
+            from engine.outputs.png_file import write_png
+
+            write_png(screen.framebuffer.with_name("never-settled.png"), picture)
+            pytest.fail(f"the screen never showed it (what it showed: {screen.framebuffer.parent}/never-settled.png)")
         time.sleep(0.02)
 
 
@@ -223,6 +227,21 @@ def test_the_gaze_cue_example_runs_against_the_window_and_its_log_agrees_with_wh
     [start] = [r for r in rows if r["event"] == "speech_start"]
     assert float(start["audio_t"]) >= float(start["t"]) - 1000.0 / 60      # the sound device played it
     assert any(float(r["presented_t"]) > float(r["t"]) for r in rows), "window frames are stamped at their swap"
+
+
+def test_fullscreen_fills_the_screen_and_the_window_ends_its_server_when_closed(screen, tmp_path):
+    served = start_window_server(screen, tmp_path, "--fullscreen")
+    try:
+        with LiveClient(served.url) as head:
+            applied(head, {"jaw_open": 0.3})
+        picture = screen_when(screen, lambda picture: (picture.sum(axis=2) == 0).mean() < 0.001)
+        assert picture.shape[:2] == (SCREEN[1], SCREEN[0])      # the whole screen is the window: no bare root left
+    finally:
+        served.process.send_signal(signal.SIGINT)
+        assert served.process.wait(timeout=30) == 0
+        assert served.process.stdout is not None
+        served.process.stdout.close()
+    assert "Traceback" not in served.stderr()
 
 
 def test_without_a_display_the_window_is_refused_in_one_line():
