@@ -20,6 +20,7 @@ from __future__ import annotations
 import csv
 import io
 import re
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -43,7 +44,7 @@ from engine.web.web_model import morph_parameters, web_glb
 if TYPE_CHECKING:
     from engine.model import Model
 
-__all__ = ["HEAD_FACTORS", "STIMULI_FORMAT", "write_stimuli_site"]
+__all__ = ["HEAD_FACTORS", "STIMULI_FORMAT", "ListedStimulus", "read_set_listing", "write_stimuli_site"]
 
 STIMULI_FORMAT = "artificial-person-web-stimuli"
 #: Factors that give stimuli heads of their own, which one site does not hold yet.
@@ -51,21 +52,48 @@ HEAD_FACTORS = ("model", "identity", "identity_b", "identity_morph")
 _ID = re.compile(r"^[A-Za-z0-9_-]+$")
 
 
+@dataclass
+class ListedStimulus:
+    """One row of a set's manifest, checked: its id, its files (in the set's folder), its words from the manifest."""
+
+    id: str
+    line: int
+    row: dict[str, str]
+    tracks: Path
+    audio: Path
+    phones: Path | None
+    manifest_words: list[Segment]
+
+
+def read_set_listing(set_folder: str | Path) -> list[ListedStimulus]:
+    """The stimuli of the set in ``set_folder`` as its ``manifest.csv`` lists them, every row checked before
+    anything is read or written; a mistake raises :class:`UserError` naming the manifest and the row."""
+    set_folder = Path(set_folder)
+    manifest = set_folder / "manifest.csv"
+    listed = []
+    for line, row in _manifest_rows(manifest):
+        tracks, audio = (_inside(set_folder, row[f"file_{kind}"], manifest, line) for kind in ("tracks", "wav"))
+        phones = _inside(set_folder, row["file_phones"], manifest, line) if row.get("file_phones") else None
+        listed.append(ListedStimulus(row["id"], line, row, tracks, audio, phones,
+                                     _manifest_words(row, manifest, line)))
+    return listed
+
+
 def write_stimuli_site(model: Model, set_folder: str | Path, out: str | Path,
                        size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
     """Write the site of the stimulus set in ``set_folder`` (its ``manifest.csv``) into ``out``."""
     set_folder, out = Path(set_folder), Path(out)
-    manifest = set_folder / "manifest.csv"
-    rows = _manifest_rows(manifest)
+    listing = read_set_listing(set_folder)
     check_folder(out)
     animations, files, listed = [], {}, []
-    for line, row in rows:
-        animation, wav = _stimulus(model, set_folder, manifest, line, row, size)
-        animation.update(model="../head.glb", audio=f"{row['id']}.wav", stimulus=row["id"])
+    for stimulus in listing:
+        animation = _stimulus_animation(model, stimulus, size)
+        animation.update(model="../head.glb", audio=f"{stimulus.id}.wav", stimulus=stimulus.id)
         animations.append(animation)
-        files[f"stimuli/{row['id']}.wav"] = wav
-        listed.append({"id": row["id"], "animation": f"stimuli/{row['id']}.json", "audio": f"stimuli/{row['id']}.wav",
-                       "duration_ms": animation["duration_ms"], "manifest": row})
+        files[f"stimuli/{stimulus.id}.wav"] = stimulus.audio.read_bytes()
+        listed.append({"id": stimulus.id, "animation": f"stimuli/{stimulus.id}.json",
+                       "audio": f"stimuli/{stimulus.id}.wav", "duration_ms": animation["duration_ms"],
+                       "manifest": stimulus.row})
     glb = web_glb(model, morph_parameters(model, shared_targets(animations)))
     for animation in animations:
         files[f"stimuli/{animation['stimulus']}.json"] = json_bytes(animation)
@@ -83,6 +111,13 @@ def _manifest_rows(manifest: Path) -> list[tuple[int, dict[str, str]]]:
     except OSError as exc:
         raise UserError(f"cannot read the manifest: {exc.strerror or exc}", file=manifest) from None
     reader = csv.DictReader(io.StringIO(text))
+    try:
+        return _checked_rows(reader, manifest)
+    except csv.Error as exc:
+        raise UserError(f"not a CSV table: {exc}", file=manifest, line=reader.line_num) from None
+
+
+def _checked_rows(reader: csv.DictReader[str], manifest: Path) -> list[tuple[int, dict[str, str]]]:
     header = reader.fieldnames or []
     if "id" not in header:
         raise UserError("not a stimulus set's manifest (no 'id' column)", file=manifest, line=1)
@@ -109,27 +144,26 @@ def _manifest_rows(manifest: Path) -> list[tuple[int, dict[str, str]]]:
     return rows
 
 
-def _stimulus(model: Model, set_folder: Path, manifest: Path, line: int, row: dict[str, str],
-              size: tuple[int, int]) -> tuple[dict[str, Any], bytes]:
-    tracks, audio = (_inside(set_folder, row[f"file_{kind}"], manifest, line) for kind in ("tracks", "wav"))
-    table = read_tracks_csv(tracks, model)
-    samples, rate = read_wav(audio)
-    phones: list[Segment] = []
-    if row.get("file_phones"):
-        phones = read_phones_csv(_inside(set_folder, row["file_phones"], manifest, line))
-    words = words_of(phones) if phones else _manifest_words(row, manifest, line)
+def _stimulus_animation(model: Model, stimulus: ListedStimulus, size: tuple[int, int]) -> dict[str, Any]:
+    table = read_tracks_csv(stimulus.tracks, model)
+    samples, rate = read_wav(stimulus.audio)
+    phones = read_phones_csv(stimulus.phones) if stimulus.phones is not None else []
+    words = words_of(phones) if phones else stimulus.manifest_words
     end_ms = max(table.end, 1000.0 * len(samples) / rate, phones[-1].end_ms if phones else 0.0)
     frame_ms = 1000.0 / table.fps
     times = np.arange(max(1, int(np.ceil(end_ms / frame_ms - 1e-9)) + 1)) * frame_ms
-    animation = site_animation(model, table.parameters, table.sample(times), frame_ms, phones, words, end_ms, size)
-    return animation, audio.read_bytes()
+    return site_animation(model, table.parameters, table.sample(times), frame_ms, phones, words, end_ms, size)
 
 
 def _inside(set_folder: Path, name: str, manifest: Path, line: int) -> Path:
     """A file the manifest names, which must be in the set's folder."""
     path = set_folder / name
-    if not name or Path(name).is_absolute() or ".." in Path(name).parts or not path.is_file():
-        raise UserError(f"the file {name!r} is not in the set's folder", file=manifest, line=line)
+    try:
+        inside = bool(name) and not Path(name).is_absolute() and ".." not in Path(name).parts and path.is_file()
+    except (OSError, ValueError):                 # a name too long for the system, or with a NUL in it
+        inside = False
+    if not inside:
+        raise UserError(f"the file {name[:200]!r} is not in the set's folder", file=manifest, line=line)
     return path
 
 
