@@ -17,12 +17,9 @@ from engine.capture.readers import read_capture
 from engine.capture.retarget import Retargeted, nominal_fps, resample, retarget
 from engine.capture.stream import CaptureFileError, CaptureStream
 from engine.commands.limits import MAX_FRAMES, MAX_TIME_MS
-from engine.errors import UserError
-from engine.formats.atomic import atomic_write_text
 from engine.model.model import Model
-from engine.timeline.tracks import TracksTable, tracks_csv_text
-
-OUTPUT_SUFFIXES = (".csv", ".mp4")
+from engine.outputs.animation_file import check_output, write_animation
+from engine.timeline.tracks import TracksTable
 
 
 @dataclass
@@ -79,24 +76,9 @@ def animate_capture(path: str | Path, model: Model, output: str | Path, format: 
                     fps: float | None = None, audio: str | Path | None = None, size: tuple[int, int] = (640, 480),
                     view: str = "front", progress: Callable[[int, int], None] | None = None) -> CaptureAnimation:
     """Read ``path``, map it onto ``model`` and write ``output``: a tracks CSV or an MP4 (``audio``: a WAV)."""
-    out = Path(output)
-    if out.suffix.lower() not in OUTPUT_SUFFIXES:
-        raise UserError(f"unknown output extension '{out.suffix or out.name}' (use .csv or .mp4)", file=out)
-    if audio is not None and out.suffix.lower() != ".mp4":
-        raise UserError("--audio goes with a video (.mp4) output")
+    out = check_output(output, audio)
     stream = read_capture(path, format, fps)
     mapped, rate, times, values = capture_tracks(stream, model, fps)
-    names = list(model.parameters.names)
-    if out.suffix.lower() == ".csv":
-        atomic_write_text(out, tracks_csv_text(names, times, values))
-    else:
-        from engine.outputs.video_writer import write_video
-
-        samples, sample_rate = None, None
-        if audio is not None:
-            from engine.speech.synthesis import read_wav
-
-            samples, sample_rate = read_wav(audio)
-        write_video(out, model, times, values, names, fps=rate, audio=samples, sample_rate=sample_rate,
-                    size=size, view=view, progress=progress)
+    write_animation(out, model, model.parameters.names, times, values, rate, audio=audio, size=size, view=view,
+                    progress=progress)
     return CaptureAnimation(stream, mapped, rate, len(times), out)

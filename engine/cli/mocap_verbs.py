@@ -341,9 +341,10 @@ def _reference_frame(text: str) -> str | int:
 
 
 def run_animate(args: argparse.Namespace) -> int:
-    from engine.mocap.animate import animate_session, check_output, write_session_animation
+    from engine.mocap.animate import animate_session, write_session_animation
     from engine.mocap.articulation_file import load_articulation_file
     from engine.mocap.session import load_session
+    from engine.outputs.animation_file import check_output
 
     if args.audio is None and args.audio_offset != 0.0:
         raise UserError("--audio-offset needs --audio")

@@ -30,7 +30,6 @@ from pathlib import Path
 
 import numpy as np
 
-from engine.errors import UserError
 from engine.mocap.apply import AppliedArticulation, apply_articulation, component_names
 from engine.mocap.errors import MocapError
 from engine.mocap.held_out import FrameFit, fit_frames
@@ -38,8 +37,7 @@ from engine.mocap.pca import Articulation
 from engine.mocap.session import Session
 from engine.model.head_rotation import head_rotation_values
 from engine.model.model import Model
-
-OUTPUT_SUFFIXES = (".csv", ".mp4")
+from engine.outputs.animation_file import write_animation
 
 
 @dataclass
@@ -158,49 +156,9 @@ def write_session_animation(animation: SessionAnimation, output: str | Path, *, 
     session's first frame (positive: later — silence is put before it;
     negative: earlier — its first samples are dropped).
     """
-    from engine.formats.atomic import atomic_write_text
-    from engine.timeline.tracks import tracks_csv_text
-
-    out = check_output(output, audio)
-    if not np.isfinite(audio_offset_ms):
-        raise UserError(f"the audio offset must be a number of ms, not {audio_offset_ms}")
-    if out.suffix.lower() == ".csv":
-        atomic_write_text(out, tracks_csv_text(animation.names, animation.times_ms, animation.values))
-        return out
-    from engine.outputs.video_writer import write_video
-
-    samples, sample_rate = None, None
-    if audio is not None:
-        from engine.speech.synthesis import read_wav
-
-        samples, sample_rate = read_wav(audio)
-        samples = shift_audio(samples, sample_rate, audio_offset_ms)
-    fps = _frame_rate(animation.times_ms)
-    write_video(out, animation.model, animation.times_ms, animation.values, animation.names, fps=fps,
-                audio=samples, sample_rate=sample_rate, size=size, view=view, progress=progress)
-    return out
-
-
-def check_output(output: str | Path, audio: str | Path | None = None) -> Path:
-    """``output`` as a path, or a :class:`UserError` if it is neither a tracks table nor a video (with audio)."""
-    out = Path(output)
-    if out.suffix.lower() not in OUTPUT_SUFFIXES:
-        raise UserError(f"unknown output extension '{out.suffix or out.name}' (use .csv or .mp4)", file=out)
-    if audio is not None and out.suffix.lower() != ".mp4":
-        raise UserError("--audio goes with a video (.mp4) output")
-    return out
-
-
-def shift_audio(samples: np.ndarray, sample_rate: int, offset_ms: float) -> np.ndarray:
-    """``samples`` starting ``offset_ms`` later (silence before) or earlier (the first samples dropped).
-
-    >>> shift_audio(np.ones(4, np.float32), 1000, 2).tolist(), shift_audio(np.ones(4, np.float32), 1000, -3).tolist()
-    ([0.0, 0.0, 1.0, 1.0, 1.0, 1.0], [1.0])
-    """
-    n = round(abs(offset_ms) * sample_rate / 1000.0)
-    if offset_ms >= 0:
-        return np.concatenate([np.zeros(n, dtype=samples.dtype), samples])
-    return samples[n:]
+    return write_animation(output, animation.model, animation.names, animation.times_ms, animation.values,
+                           _frame_rate(animation.times_ms), audio=audio, audio_offset_ms=audio_offset_ms, size=size,
+                           view=view, progress=progress)
 
 
 def _head_rotations(session: Session, marker_to_model: np.ndarray) -> np.ndarray:

@@ -19,7 +19,7 @@ import pytest
 from engine import load_model
 from engine.errors import ParameterError
 from engine.formats.model_files import save_model
-from engine.mocap.animate import animate_session, shift_audio
+from engine.mocap.animate import animate_session
 from engine.mocap.apply import apply_articulation
 from engine.mocap.articulation_file import save_articulation_file
 from engine.mocap.importer import build_session
@@ -28,6 +28,7 @@ from engine.mocap.recording import Recording
 from engine.mocap.session import save_session
 from engine.mocap.synthetic import synthesize_recording
 from engine.model.head_rotation import head_rotation_values
+from engine.outputs.animation_file import shift_audio
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.mocap_samples import TRAINING_PHONES, parse_phones
 
