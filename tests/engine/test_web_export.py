@@ -264,3 +264,16 @@ def test_a_missing_stimulus_file_is_named_with_its_row(stimulus_set, tmp_path):
 def test_a_folder_that_is_no_set_is_refused(tmp_path):
     line = assert_user_error(run("web-export", "--stimuli", tmp_path, "-o", tmp_path / "site"))
     assert line.startswith(f"error: {tmp_path / 'manifest.csv'}:") and "no manifest.csv" in line, line
+
+
+def test_the_player_and_three_js_are_package_data():
+    """An installed toolkit (a wheel) carries the player and the vendored three.js: pyproject's package-data
+    patterns reach every file under engine/web/player and engine/web/vendor."""
+    import tomllib
+
+    root = Path(__file__).resolve().parents[2]
+    patterns = tomllib.loads((root / "pyproject.toml").read_text())["tool"]["setuptools"]["package-data"]["engine"]
+    shipped = {path for pattern in patterns for path in (root / "engine").glob(pattern) if path.is_file()}
+    needed = {path for folder in ("player", "vendor") for path in (root / "engine" / "web" / folder).rglob("*")
+              if path.is_file()}
+    assert needed and needed <= shipped, sorted(str(p) for p in needed - shipped)
