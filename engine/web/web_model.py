@@ -11,7 +11,10 @@ head's 52 parameters would be some 30 MB. A web page needs far less:
   default that the animation reaches (so a target is exact at its peak);
 * each target keeps only the vertices it moves (a glTF *sparse* accessor), their displacements
   as normalised 16-bit integers (``KHR_mesh_quantization``: 1/32767 m, 0.03 mm per step), the
-  normals' changes as normalised 16-bit integers too (clipped to ±1).
+  normals' changes as normalised 16-bit integers too (clipped to ±1);
+* the rest mesh's normals are normalised bytes (``KHR_mesh_quantization``), its vertex colours
+  normalised 16-bit integers and its skin weights normalised bytes (four summing to 255); the
+  positions stay float32.
 
 >>> from engine import load_model
 >>> head = load_model()                                                     # doctest: +SKIP
@@ -36,9 +39,9 @@ if TYPE_CHECKING:
 __all__ = ["QUANTISATION", "dequantised_target", "morph_parameters", "web_glb", "web_gltf_document"]
 
 QUANTISATION = "KHR_mesh_quantization"
-_SHORT, _FLOAT, _USHORT, _UINT = 5122, 5126, 5123, 5125
+_BYTE, _UBYTE, _SHORT, _USHORT, _UINT = 5120, 5121, 5122, 5123, 5125
+_ARRAY_BUFFER = 34962
 _STEPS = 32767.0
-_COMPONENT_BYTES = {5120: 1, 5121: 1, 5122: 2, 5123: 2, 5125: 4, 5126: 4}
 _TYPE_SIZES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
 
 
@@ -66,6 +69,8 @@ def _compacted(document: dict[str, Any], data: bytes) -> tuple[dict[str, Any], b
     """Every morph target accessor re-encoded sparse and quantised; the other arrays copied as they are."""
     in_targets = {index for mesh in document["meshes"] for primitive in mesh["primitives"]
                   for entry in primitive.get("targets", []) for index in entry.values()}
+    by_attribute = {index: name for mesh in document["meshes"] for primitive in mesh["primitives"]
+                    for name, index in primitive["attributes"].items() if name in _PACKED}
     packer = _Packer()
     accessors: list[dict[str, Any]] = []
     copied_views: dict[int, int] = {}
@@ -73,6 +78,9 @@ def _compacted(document: dict[str, Any], data: bytes) -> tuple[dict[str, Any], b
         array = _accessor_array(document, data, accessor)
         if index in in_targets:
             accessors.append(_sparse_quantised(array, packer))
+            continue
+        if index in by_attribute:
+            accessors.append(_PACKED[by_attribute[index]](array, packer))
             continue
         view = accessor["bufferView"]
         if view not in copied_views:
@@ -87,7 +95,7 @@ def _compacted(document: dict[str, Any], data: bytes) -> tuple[dict[str, Any], b
     out["bufferViews"] = packer.views
     blob = packer.data()
     out["buffers"] = [{"byteLength": len(blob)}]
-    if any("targets" in p for mesh in document["meshes"] for p in mesh["primitives"]):
+    if any("targets" in p or "NORMAL" in p["attributes"] for mesh in document["meshes"] for p in mesh["primitives"]):
         out["extensionsUsed"] = sorted({*document.get("extensionsUsed", []), QUANTISATION})
         out["extensionsRequired"] = sorted({*document.get("extensionsRequired", []), QUANTISATION})
     return out, blob
@@ -110,6 +118,34 @@ def _sparse_quantised(array: np.ndarray, packer: _Packer) -> dict[str, Any]:
             "values": {"bufferView": packer.add(quantised[rows].astype("<i2").tobytes(), None)},
         }
     return accessor
+
+
+def _packed_normals(array: np.ndarray, packer: _Packer) -> dict[str, Any]:
+    """Unit normals as normalised signed bytes (``KHR_mesh_quantization``), each padded to 4 bytes."""
+    padded = np.zeros((len(array), 4), dtype=np.int8)
+    padded[:, :3] = np.round(np.clip(array, -1.0, 1.0) * 127.0)
+    return {"bufferView": packer.add(padded.tobytes(), _ARRAY_BUFFER, stride=4), "componentType": _BYTE,
+            "normalized": True, "count": len(array), "type": "VEC3"}
+
+
+def _packed_colours(array: np.ndarray, packer: _Packer) -> dict[str, Any]:
+    """Linear colours as normalised 16-bit integers (core glTF; 8 bits would band in the darks), padded to 8 bytes."""
+    padded = np.zeros((len(array), 4), dtype="<u2")
+    padded[:, :3] = np.round(np.clip(array, 0.0, 1.0) * 65535.0)
+    return {"bufferView": packer.add(padded.tobytes(), _ARRAY_BUFFER, stride=8), "componentType": _USHORT,
+            "normalized": True, "count": len(array), "type": "VEC3"}
+
+
+def _packed_weights(array: np.ndarray, packer: _Packer) -> dict[str, Any]:
+    """Skin weights as normalised bytes (core glTF), each vertex's four still summing to exactly 255."""
+    weights = np.round(np.asarray(array, dtype=float) * 255.0).astype(int)
+    largest = np.argmax(weights, axis=1)
+    weights[np.arange(len(weights)), largest] += 255 - weights.sum(axis=1)
+    return {"bufferView": packer.add(weights.astype(np.uint8).tobytes(), _ARRAY_BUFFER), "componentType": _UBYTE,
+            "normalized": True, "count": len(array), "type": "VEC4"}
+
+
+_PACKED = {"NORMAL": _packed_normals, "COLOR_0": _packed_colours, "WEIGHTS_0": _packed_weights}
 
 
 def dequantised_target(document: dict[str, Any], data: bytes, accessor_index: int) -> np.ndarray:
@@ -148,10 +184,12 @@ class _Packer:
         self.chunks: list[bytes] = []
         self.length = 0
 
-    def add(self, block: bytes, target: int | None) -> int:
+    def add(self, block: bytes, target: int | None, stride: int | None = None) -> int:
         view = {"buffer": 0, "byteOffset": self.length, "byteLength": len(block)}
         if target is not None:
             view["target"] = target
+        if stride is not None:
+            view["byteStride"] = stride
         self.views.append(view)
         padded = block + b"\0" * (-len(block) % 4)
         self.chunks.append(padded)

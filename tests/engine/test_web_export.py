@@ -66,6 +66,30 @@ def test_morph_targets_read_back_as_the_engine_moves_the_vertices(head):
     assert 0 < worst <= 0.5 / 32767 * 1000 + 1e-9, f"{worst} mm"
 
 
+def test_the_rest_mesh_is_packed_without_moving_a_vertex(head):
+    document, data = web_gltf_document(head, {})
+    full, full_data = gltf_document(head, [], skeleton=True)
+    for packed, dense in zip(document["meshes"][0]["primitives"], full["meshes"][0]["primitives"], strict=True):
+        for name, tolerance in (("POSITION", 0.0), ("NORMAL", 0.5 / 127 + 1e-9), ("COLOR_0", 0.5 / 65535 + 1e-9)):
+            if name in dense["attributes"]:
+                shown = _attribute(document, data, packed, name)
+                assert np.abs(shown - _attribute(full, full_data, dense, name)).max() <= tolerance, name
+        assert np.all(np.round(_attribute(document, data, packed, "WEIGHTS_0").sum(axis=1) * 255) == 255)
+    assert len(glb_bytes(document, data)) < 0.8 * len(glb_bytes(full, full_data))
+
+
+def _attribute(document, data, primitive, name) -> np.ndarray:
+    """A vertex attribute as a viewer reads it (normalised integers as floats, padding dropped)."""
+    accessor = document["accessors"][primitive["attributes"][name]]
+    view = document["bufferViews"][accessor["bufferView"]]
+    dtype = np.dtype({5120: "<i1", 5121: "<u1", 5123: "<u2", 5126: "<f4"}[accessor["componentType"]])
+    width = {"VEC3": 3, "VEC4": 4}[accessor["type"]]
+    stride = view.get("byteStride", 0) // dtype.itemsize or width
+    rows = np.frombuffer(data, dtype, accessor["count"] * stride, view["byteOffset"]).reshape(-1, stride)[:, :width]
+    scale = {5120: 127.0, 5121: 255.0, 5123: 65535.0}.get(accessor["componentType"], 1.0)
+    return rows / scale if accessor.get("normalized") else rows.astype(float)
+
+
 def test_the_compact_targets_are_a_small_part_of_dense_ones(head):
     moving = {"lower_lip_raise": 0.6, "mouth_widen": 0.4, "lip_protrude": 0.7, "upper_lip_raise": 0.2,
               "tongue_raise": 0.8}
