@@ -241,10 +241,13 @@ export class ArtificialPerson extends EventTarget {
       colours.needsUpdate = true;
     }
     if (original.map) original.map.colorSpace = THREE.NoColorSpace;
+    // VTK's Phong highlight ks·(R·V)^p, as three.js's normalised Blinn–Phong draws it: the exponent on
+    // N·H is about four times that on R·V, and three.js scales its highlight by (shininess + 2) / 8.
+    const shininess = 4 * part.power;
+    const specular = part.specular * 8 / (shininess + 2);
     const material = new THREE.MeshPhongMaterial({
       color: colour.multiplyScalar(part.diffuse), map: original.map || null, vertexColors: Boolean(colours),
-      specular: new THREE.Color(part.specular, part.specular, part.specular), shininess: part.power,
-      side: THREE.DoubleSide,
+      specular: new THREE.Color(specular, specular, specular), shininess, side: THREE.DoubleSide,
     });
     // ambient light: the part's ambient share of its own colour, as the engine's renderer lights it
     material.onBeforeCompile = (shader) => {
