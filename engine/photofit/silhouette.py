@@ -31,22 +31,27 @@ FARTHEST_MOVE = 12.0                   # px: an edge farther than this from the 
 PROFILE_SPACING = 4.0                  # mm between the profile points used
 
 
-def foreground(photo: np.ndarray) -> np.ndarray | None:
+def foreground(photo: np.ndarray, both_sides: bool = False) -> np.ndarray | None:
     """(H, W) bool: pixels unlike the background, or None when the background is not plain.
 
     The background is sampled row by row at the photograph's left edge, in front of the face (a side
     photograph is taken from the subject's left, so the face looks left), which allows for the
-    vertical gradient of studio backdrops.
+    vertical gradient of studio backdrops. With ``both_sides`` (a front photograph, or the texture's
+    test of any photograph) the right edge is sampled too, and a pixel is background if it is like
+    either edge's colour in its row; the background must be plain at both.
     """
     width = photo.shape[1]
     bw = max(int(width * BORDER), 1)
-    border = photo[:, :bw].astype(float)                                  # (H, bw, 3)
-    colour = np.median(border, axis=1)                                    # (H, 3) per row
-    spread = float(np.median(np.linalg.norm(border - colour[:, None], axis=2)))
-    if spread > BUSY_BACKGROUND:
+    borders = [photo[:, :bw].astype(float)] + ([photo[:, width - bw:].astype(float)] if both_sides else [])
+    distance = np.full(photo.shape[:2], np.inf)
+    spreads = []
+    for border in borders:                                                # (H, bw, 3) each
+        colour = np.median(border, axis=1)                                # (H, 3) per row
+        spreads.append(float(np.median(np.linalg.norm(border - colour[:, None], axis=2))))
+        distance = np.minimum(distance, np.linalg.norm(photo.astype(float) - colour[:, None], axis=2))
+    if max(spreads) > BUSY_BACKGROUND:
         return None
-    distance = np.linalg.norm(photo.astype(float) - colour[:, None], axis=2)
-    return np.asarray(distance > max(MIN_CONTRAST, 4 * spread))
+    return np.asarray(distance > max(MIN_CONTRAST, 4 * max(spreads)))
 
 
 def profile_vertices(model: Model, vertices: np.ndarray) -> np.ndarray:

@@ -5,7 +5,8 @@ Every skin polygon's UV triangle is drawn into the atlas
 fitted head is projected into each photograph by its camera and sampled
 there. A photograph's weight at a texel is ``max(0, (n · v − g) / (1 − g))²`` (n the
 surface normal, v the direction towards its camera, g = :data:`GRAZING`) where the point is visible (not
-behind the head in that photograph's z-buffer), so the views blend smoothly
+behind the head in that photograph's z-buffer) and on the person, not the
+plain backdrop (:mod:`engine.photofit.backdrop`), so the views blend smoothly
 where both see the skin. What no photograph sees fades into a fill that
 continues the seen skin smoothly over the head (:func:`skin_fill`: its colour
 and shading where it meets the photographs, no edge, the mean of its borders
@@ -22,6 +23,7 @@ import numpy as np
 from engine.model import Model
 from engine.model.cells import cell_sizes, cell_starts
 from engine.model.texture import ModelTexture, TextureImage
+from engine.photofit.backdrop import subject_weight
 from engine.photofit.camera import WeakPerspective
 from engine.photofit.raster import rasterize, sample_bilinear
 from engine.photofit.stopping import ShouldStop, stop_if_asked
@@ -91,16 +93,18 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     total = np.zeros(len(points))
     colour = np.zeros((len(points), 3))
     occluders = all_triangles(model)
+    subject = {view: subject_weight(photo) for view, photo in photos.items()}
     for view, photo in photos.items():
         camera = cameras[view]
         weight = np.clip((normal @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
         weight *= _visible(points, vertices, occluders, camera, photo.shape[:2], should_stop)
+        weight *= _on_subject(subject[view], camera.project(points))
         stop_if_asked(should_stop)
         colour += weight[:, None] * sample_bilinear(photo, camera.project(points))
         total += weight
     seen = total > 0.25
     mean = (colour[seen].sum(0) / total[seen].sum()) if seen.any() else np.array([200.0, 160.0, 140.0])
-    fill = skin_fill(model, vertices, photos, cameras, normals, occluders, mean, should_stop)
+    fill = skin_fill(model, vertices, photos, cameras, normals, occluders, mean, should_stop, subject)
     texels = (colour + FILL_WEIGHT * np.einsum("nk,nkd->nd", b, fill[tri_v[t]])) / (total + FILL_WEIGHT)[:, None]
     atlas = np.empty((size, size, 3))
     atlas[:] = mean
@@ -116,7 +120,8 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
 
 def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarray],
               cameras: Mapping[str, WeakPerspective], normals: np.ndarray, occluders: np.ndarray,
-              mean: np.ndarray, should_stop: ShouldStop = None) -> np.ndarray:
+              mean: np.ndarray, should_stop: ShouldStop = None,
+              subject: Mapping[str, np.ndarray | None] | None = None) -> np.ndarray:
     """(N, 3) colours for every vertex: the photographs' where they see the skin, continued smoothly elsewhere.
 
     Each skin vertex gets the photographs' colour and weight as a texel does;
@@ -125,6 +130,7 @@ def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarra
     (``w`` = 0) each colour is the average of its neighbours', so the fill
     carries the colour and shading of the skin it meets and has no edge.
     A faint pull (1e-6) to ``mean`` decides skin no seen vertex connects to.
+    ``subject`` (view → :func:`~engine.photofit.backdrop.subject_weight`) keeps the backdrop out as for texels.
     """
     from scipy import sparse
     from scipy.sparse.linalg import spsolve
@@ -138,6 +144,7 @@ def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarra
         camera = cameras[view]
         w = np.clip((normals[skin] @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
         w *= _visible(vertices[skin], vertices, occluders, camera, photo.shape[:2], should_stop)
+        w *= _on_subject((subject or {}).get(view), camera.project(vertices[skin]))
         colour += w[:, None] * sample_bilinear(photo, camera.project(vertices[skin]))
         weight += w
     observed = np.divide(colour, weight[:, None], out=np.tile(mean, (len(skin), 1)), where=weight[:, None] > 0)
@@ -171,6 +178,13 @@ def pad_islands(atlas: np.ndarray, covered: np.ndarray, texels: int = ISLAND_PAD
         grow = ~filled & (count > 0)
         atlas[grow] = total[grow] / count[grow][:, None]
         filled |= grow
+
+
+def _on_subject(weights: np.ndarray | None, pixels: np.ndarray) -> np.ndarray:
+    """(N,) the photograph's :func:`~engine.photofit.backdrop.subject_weight` at (N, 2) pixels (1 without one)."""
+    if weights is None:
+        return np.ones(len(pixels))
+    return np.asarray(sample_bilinear(weights[..., None], pixels)[:, 0])
 
 
 def _visible(points: np.ndarray, vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective,
