@@ -184,6 +184,17 @@ def test_playing_fires_the_words_and_the_end_on_the_audio_clock(browser, site):
         assert np.abs(offsets).max() <= frame_ms
 
 
+def test_the_page_alone_plays_the_sentence_where_sound_needs_no_gesture(browser, site):
+    """index.html without ?t plays at once (Chromium runs with --autoplay-policy=no-user-gesture-required)."""
+    chromium, base = browser
+    _, animation = site
+    page = chromium.open(f"{base}/index.html", (animation["camera"]["width"], animation["camera"]["height"]))
+    page.wait_for("window.ArtificialPerson && ArtificialPerson.ready && ArtificialPerson.position > 0")
+    page.wait_for("!ArtificialPerson.playing && ArtificialPerson.position === ArtificialPerson.duration")
+    assert page.evaluate("document.getElementById('start').hidden") is True
+    assert page.problems() == [] and outside(page.requested(), base) == []
+
+
 def test_chromium_ends_with_its_whole_process_group_whatever_happens(site):
     groups = []
 
