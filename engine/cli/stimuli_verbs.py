@@ -16,7 +16,7 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("design", metavar="DESIGN.toml", help="the design: factors, levels, outputs")
     p.add_argument("-o", "--output", required=True, metavar="OUTDIR", help="folder for the set")
     p.add_argument("--workers", type=positive_int, default=None, metavar="N",
-                   help="parallel processes on this machine (default: one per core)")
+                   help="parallel processes on this machine, each kept to a core of its own (default: one per core)")
     p.add_argument("--scheduler", default=None, metavar="tcp://HOST:PORT",
                    help="make the stimuli on a running Dask cluster instead (OUTDIR must be shared with it)")
     p.add_argument("--resume", action="store_true",

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from engine.script.inline_commands import parse_script
+from engine.stimuli.cores import available_cores, kept_to_core
 from engine.stimuli.design import Design, Stimulus
 from engine.stimuli.make import make_stimulus
 
@@ -52,9 +53,9 @@ def estimate(design: Design, todo: list[Stimulus], workers: int) -> Estimate | N
     if not todo:
         return None
     sample = todo[0]
-    with tempfile.TemporaryDirectory(prefix="ap-estimate-") as folder:
+    with tempfile.TemporaryDirectory(prefix="ap-estimate-") as folder, kept_to_core(available_cores()[0]):
         start = time.perf_counter()
-        make_stimulus(design, sample, Path(folder))
+        make_stimulus(design, sample, Path(folder))                   # as a worker makes it: on one core
         took = time.perf_counter() - start
     unit = took / relative_length(design, sample)
     workers = max(1, min(workers, len(todo)))

@@ -1,9 +1,10 @@
 """Making a whole design: in parallel processes on this machine, or on a Dask cluster; resumable.
 
 Each stimulus is made by :func:`engine.stimuli.make.make_stimulus` in a worker
-(a local process, one per core by default, or a Dask worker when a scheduler
-address is given). A stimulus is done when its record is on disk and every
-file it names has the recorded SHA-256; ``resume`` skips those and makes the
+(a local process, one per core by default and each kept to a core of its own,
+:mod:`engine.stimuli.cores`; or a Dask worker when a scheduler address is
+given). A stimulus is done when its record is on disk and every file it names
+has the recorded SHA-256; ``resume`` skips those and makes the
 rest. When every stimulus is done, the manifest, the PsychoPy conditions
 table, the checks and the provenance are written together
 (:mod:`engine.stimuli.manifest`).
@@ -29,6 +30,7 @@ from typing import Any
 
 from engine.errors import UserError
 from engine.formats.atomic import finish_interrupted_writes
+from engine.stimuli.cores import available_cores, keep_to_core, kept_to_core
 from engine.stimuli.design import Design, Stimulus
 from engine.stimuli.make import RECORDS, make_stimulus, sha256_of
 from engine.stimuli.manifest import MANIFEST, write_set_files
@@ -104,15 +106,22 @@ def default_workers() -> int:
 def _run_locally(design: Design, todo: list[Stimulus], outdir: Path, workers: int | None,
                  _scheduler: str | None) -> Iterator[dict[str, Any]]:
     count = max(1, min(workers or default_workers(), len(todo)))
+    cores = available_cores()
     if count == 1:
-        for stimulus in todo:
-            yield make_stimulus(design, stimulus, outdir)
+        with kept_to_core(cores[0]):
+            for stimulus in todo:
+                yield make_stimulus(design, stimulus, outdir)
         return
     pending = list(todo)
     attempts: dict[str, int] = {}
     while pending:
         # spawn: a fresh interpreter per worker (no forked VTK or Festival state); workers die with us
-        with ProcessPoolExecutor(count, mp_context=get_context("spawn"), initializer=_worker_start) as pool:
+        context = get_context("spawn")
+        free_cores = context.Queue()
+        for k in range(count):
+            free_cores.put(cores[k % len(cores)])
+        with ProcessPoolExecutor(count, mp_context=context, initializer=_worker_start,
+                                 initargs=(free_cores,)) as pool:
             futures: dict[Future, Stimulus] = {pool.submit(make_stimulus, design, s, outdir): s for s in pending}
             pending = []
             try:
@@ -137,12 +146,11 @@ def _make_on_a_worker(design: Design, stimulus: Stimulus, outdir: Path) -> dict[
     return make_stimulus(design, stimulus, outdir)
 
 
-def _worker_start() -> None:
-    from engine.outputs.render_helper import ENVIRONMENT
+def _worker_start(free_cores: Any) -> None:
     from engine.processes import die_with_parent
 
     die_with_parent()
-    os.environ.setdefault(ENVIRONMENT, "1")      # the workers fill the cores: no second renderer each
+    keep_to_core(free_cores.get())                # a core of its own: the pool's k-th worker, the k-th core
 
 
 def _run_on_dask(design: Design, todo: list[Stimulus], outdir: Path, _workers: int | None,
