@@ -43,9 +43,10 @@ def add_verbs(verbs: Any) -> None:
 
 def run_web_export(args: argparse.Namespace) -> int:
     """Write the site and print what it holds and its size."""
-    from engine.web.site import write_speech_site, write_tracks_site
+    from engine.web.site import check_folder, write_speech_site, write_tracks_site
 
     out = Path(args.output)
+    check_folder(out)                # before any synthesis: a folder of other files is refused at once
     if args.stimuli is not None:
         from engine.web.stimuli_site import write_stimuli_site
 
