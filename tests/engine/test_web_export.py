@@ -301,3 +301,30 @@ def test_the_player_and_three_js_are_package_data():
     needed = {path for folder in ("player", "vendor") for path in (root / "engine" / "web" / folder).rglob("*")
               if path.is_file()}
     assert needed and needed <= shipped, sorted(str(p) for p in needed - shipped)
+
+
+def test_the_size_sets_the_page_and_the_camera_as_render_size_does(head, speech, tmp_path):
+    from engine.outputs.camera import VIEWS, camera_pose, framed_points
+
+    write_speech_site(speech, head, tmp_path, size=(320, 240))
+    camera = json.loads((tmp_path / "animation.json").read_text())["camera"]
+    focal, position, _, _ = camera_pose(framed_points(head), VIEWS["front"], 320, 240)
+    assert (camera["width"], camera["height"]) == (320, 240)
+    assert np.allclose(np.array(camera["position"]) * 1000, position, atol=1e-3)
+    assert np.allclose(np.array(camera["target"]) * 1000, focal, atol=1e-3)
+    page = (tmp_path / "index.html").read_text()
+    assert 'width="320" height="240"' in page and "{{" not in page
+
+
+@pytest.mark.slow
+def test_a_text_file_is_spoken_like_the_same_text(tmp_path):
+    text = tmp_path / "sentence.txt"
+    text.write_text(SENTENCE + "\n", encoding="utf-8")
+    assert run("web-export", "--file", text, "-o", tmp_path / "a").returncode == 0
+    assert run("web-export", "--say", SENTENCE, "-o", tmp_path / "b").returncode == 0
+    a, b = (json.loads((tmp_path / x / "animation.json").read_text()) for x in ("a", "b"))
+    assert a["channels"] == b["channels"] and a["words"] == b["words"]
+    broken = tmp_path / "latin1.txt"
+    broken.write_bytes("Hyvää päivää".encode("latin-1"))
+    line = assert_user_error(run("web-export", "--file", broken, "-o", tmp_path / "c"))
+    assert line.startswith(f"error: {broken}"), line
