@@ -53,7 +53,8 @@ var jsPsychArtificialPerson = (function (jspsych) {
       video_start_ms: { type: ParameterType.FLOAT },
       speech_onset_ms: { type: ParameterType.FLOAT },
       duration_ms: { type: ParameterType.FLOAT },
-      /** performance.now() of: play() called; the clip's start heard (the player's clock at 0). */
+      /** performance.now() of: play() called; the clip's start heard (the player's clock at 0, from its first
+       *  frame with sound). */
       play_t: { type: ParameterType.FLOAT },
       clip_start_t: { type: ParameterType.FLOAT },
       /** performance.now() of the sound's, the face's and the speech's start (clip_start_t + the manifest's ms). */
@@ -67,6 +68,9 @@ var jsPsychArtificialPerson = (function (jspsych) {
       response_t: { type: ParameterType.FLOAT },
       /** Whether the sound ran (false: the browser held it, and the clock was performance.now()). */
       sound: { type: ParameterType.BOOL },
+      /** How far the clip's 0 on performance.now() moved over the frames (max − min, ms): the sound's clock
+       *  against the page's; a fraction of a ms where the audio output keeps time. */
+      clock_spread_ms: { type: ParameterType.FLOAT },
       /** Frames the player drew while playing. */
       frames: { type: ParameterType.INT },
       // and the manifest row's factor levels, each in a column of its own (text, av_offset_ms, ...;
@@ -120,18 +124,23 @@ var jsPsychArtificialPerson = (function (jspsych) {
     return text === undefined || text === "" ? null : Number(text);
   }
 
-  function median(values) {
-    const sorted = [...values].sort((a, b) => a - b);
-    const middle = Math.floor(sorted.length / 2);
-    return sorted.length % 2 ? sorted[middle] : (sorted[middle - 1] + sorted[middle]) / 2;
+  /** The clip clock's 0 as performance.now() saw it, per frame the player drew while playing: from the
+   *  sound being heard (the player's clock) where the sound ran, else from the position drawn. */
+  function clipZeros(player) {
+    const heard = player.timings.filter((f) => f.heard_ms !== null).map((f) => f.t - f.heard_ms);
+    if (heard.length) return heard;
+    return player.timings.filter((f) => f.drawn_ms < player.duration).map((f) => f.t - f.drawn_ms);
   }
 
-  /** performance.now() at the clip clock's 0, from the frames the player drew: the sound's clock where it ran. */
-  function clipStart(player) {
-    const heard = player.timings.filter((f) => f.heard_ms !== null).map((f) => f.t - f.heard_ms);
-    if (heard.length) return median(heard);
-    const drawn = player.timings.filter((f) => f.drawn_ms < player.duration).map((f) => f.t - f.drawn_ms);
-    return drawn.length ? median(drawn) : null;
+  /** Where the player's clock (ms on the clip clock) was at performance.now() = ``t``: the sound heard now, carried
+   *  back to ``t``; after the sound has stopped, the last frame's, carried forward. */
+  function clockAt(player, t) {
+    const heard = player.heardPosition();
+    if (heard !== null) return heard - (performance.now() - t);
+    const frames = player.timings.filter((f) => f.heard_ms !== null);
+    const last = frames.length ? frames[frames.length - 1] : player.timings[player.timings.length - 1];
+    if (!last) return null;
+    return (last.heard_ms !== null ? last.heard_ms : last.drawn_ms) + (t - last.t);
   }
 
   /** Stop the player for good: its sound, its frame loop and its GL context (a trial makes a new one). */
@@ -166,7 +175,7 @@ var jsPsychArtificialPerson = (function (jspsych) {
         '<div id="jspsych-artificial-person" data-state="loading" data-words="0" ' +
         'style="position: relative; display: inline-block; visibility: hidden;">' +
         '<canvas aria-label="talking head" style="display: block;"></canvas>' +
-        '<button class="jspsych-btn" hidden style="position: absolute; inset: 0; margin: auto; ' +
+        '<button class="jspsych-btn" style="display: none; position: absolute; inset: 0; margin: auto; ' +
         'width: 12em; height: 3em;">Click to start</button></div>' +
         (trial.prompt !== null ? `<div id="jspsych-artificial-person-prompt">${trial.prompt}</div>` : "");
       const stage = display_element.querySelector("#jspsych-artificial-person");
@@ -200,14 +209,15 @@ var jsPsychArtificialPerson = (function (jspsych) {
         if (finished) return;
         finished = true;
         if (listener !== null) this.jsPsych.pluginAPI.cancelKeyboardResponse(listener);
-        const zero = clipStart(player);
+        const zeros = clipZeros(player);
+        const zero = zeros.length ? zeros[0] : null;
         const at = (ms) => (zero === null || ms === null ? null : zero + ms);
         const speech = number(manifest.speech_onset_ms);
         const data = {
           stimulus: listed.id,
           response: response ? response.key : null,
-          rt: response && zero !== null ? response.t - zero : null,
-          rt_speech: response && zero !== null && speech !== null ? response.t - zero - speech : null,
+          rt: response ? response.clock_ms : null,
+          rt_speech: response && response.clock_ms !== null && speech !== null ? response.clock_ms - speech : null,
           audio_start_ms: number(manifest.audio_start_ms),
           video_start_ms: number(manifest.video_start_ms),
           speech_onset_ms: speech,
@@ -221,6 +231,7 @@ var jsPsychArtificialPerson = (function (jspsych) {
           ended_t: seen.ended_t,
           response_t: response ? response.t : null,
           sound: player.timings.some((f) => f.heard_ms !== null),
+          clock_spread_ms: zeros.length ? Math.max(...zeros) - Math.min(...zeros) : null,
           frames: player.timings.length,
         };
         for (const [name, value] of Object.entries(levelsOf(manifest))) {
@@ -244,10 +255,10 @@ var jsPsychArtificialPerson = (function (jspsych) {
         player.seek(0);
         player.timings.length = 0;
         seen.play_t = null;
-        start.hidden = false;
+        start.style.display = "block";      // not `hidden`: jspsych.css displays .jspsych-btn
         stage.dataset.state = "waiting";
         await new Promise((resolve) => start.addEventListener("click", resolve, { once: true }));
-        start.hidden = true;
+        start.style.display = "none";
         await player.play();
       }
       if (finished) return;
@@ -257,7 +268,8 @@ var jsPsychArtificialPerson = (function (jspsych) {
         const listening = performance.now();
         listener = this.jsPsych.pluginAPI.getKeyboardResponse({
           callback_function: (key) => {
-            response = { key: key.key, t: listening + key.rt };
+            const t = listening + key.rt;
+            response = { key: key.key, t, clock_ms: clockAt(player, t) };
             if (trial.response_ends_trial || ended) finish();
           },
           valid_responses: trial.choices,

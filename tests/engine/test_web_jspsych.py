@@ -1,0 +1,204 @@
+"""The jsPsych plugin and its example experiment (``examples/web/``) in a real headless Chromium.
+
+``examples/web/make_experiment.py`` makes the example's stimulus set (real Festival), its site
+(``web-export --stimuli``) and adds the plugin, jsPsych and the experiment; the site is served on
+127.0.0.1 and ``experiment.html`` is run through by key presses sent over the DevTools protocol
+(``Input.dispatchKeyEvent``): the space bar for the instructions, then for each trial a key while
+the face speaks or after it has ended. The data jsPsych holds at the end must have one row per
+stimulus with the key, an rt on the player's clock, the stimulus's id and factor levels and its
+word onsets in order between the speech's start and the trial's end. ``AP_SCREENSHOT_DIR=DIR``
+also writes a screenshot of a trial there (docs/images/web/jspsych-trial.jpg).
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from tests.web_browser import CHROMIUM, Browser, outside, served
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = ROOT / "examples" / "web"
+PLUGIN = ROOT / "engine" / "web" / "jspsych" / "plugin-artificial-person.js"
+VENDORED = ROOT / "engine" / "web" / "vendor" / "jspsych"
+VIEWPORT = (640, 620)
+STAGE = "document.querySelector('#jspsych-artificial-person')"
+KEYS = {" ": ("Space", 32), "f": ("KeyF", 70), "j": ("KeyJ", 74)}
+needs_chromium = pytest.mark.skipif(CHROMIUM is None, reason="chromium is not installed (./bootstrap installs it)")
+ENDED = "s.dataset.state === 'ended'"
+SLACK_MS = 2.0       # a frame's position and the clock's zero are read a moment apart (sub-ms in practice)
+
+
+def _make_experiment(*args: str | Path) -> subprocess.CompletedProcess[str]:
+    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    return subprocess.run([sys.executable, str(EXAMPLE / "make_experiment.py"), *map(str, args)], capture_output=True,
+                          text=True, env=env, cwd=ROOT, timeout=300, check=False)
+
+
+@pytest.fixture(scope="module")
+def experiment_site(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("jspsych")
+    made = _make_experiment("-o", folder / "site", "--set", folder / "set")
+    assert made.returncode == 0, made.stderr
+    return folder / "site", folder / "set"
+
+
+def test_the_plugin_and_jspsych_point_nowhere_outside_the_site():
+    """Nothing an experiment site is given names a server: no http(s) address in the plugin or the example's
+    page and script, and no source-map comment (which developer tools would fetch from unpkg) in jsPsych."""
+    for path in (PLUGIN, EXAMPLE / "experiment.html", EXAMPLE / "experiment.js"):
+        text = path.read_text(encoding="utf-8")
+        assert "http://" not in text and "https://" not in text, path
+    for path in VENDORED.rglob("*.js"):
+        assert "sourceMappingURL" not in path.read_text(encoding="utf-8"), path
+    assert (VENDORED / "LICENSE").is_file()
+
+
+def test_a_design_that_cannot_be_made_stops_with_its_own_error(tmp_path):
+    design = tmp_path / "bad.toml"
+    design.write_text('[factors]\ntext = ["Pappa."]\n[output]\nkinds = ["wav", "tracks", "movie"]\n')
+    made = _make_experiment("-o", tmp_path / "site", "--design", design)
+    assert made.returncode == 2, made.stderr
+    assert made.stderr.startswith(f"error: {design}:") and "Traceback" not in made.stderr, made.stderr
+    assert not (tmp_path / "site").exists()
+
+
+@pytest.mark.slow
+def test_the_site_holds_the_experiment_beside_the_export(experiment_site):
+    site, _ = experiment_site
+    for name in ("experiment.html", "experiment.js", "plugin-artificial-person.js", "index.html", "player.js",
+                 "stimuli.json", "jspsych/dist/index.browser.min.js", "jspsych/css/jspsych.css",
+                 "jspsych/plugin-html-keyboard-response/dist/index.browser.min.js", "jspsych/LICENSE"):
+        assert (site / name).is_file(), name
+    assert not (site / "jspsych" / "README.md").exists()
+    assert (site / "plugin-artificial-person.js").read_bytes() == PLUGIN.read_bytes()
+
+
+def _press(page, key: str) -> None:
+    code, virtual = KEYS[key]
+    for kind in ("keyDown", "keyUp"):
+        event = {"type": kind, "key": key, "code": code, "windowsVirtualKeyCode": virtual}
+        if kind == "keyDown":
+            event["text"] = key
+        page.browser.call("Input.dispatchKeyEvent", event, page.session)
+
+
+def _wait_for_stage(page, condition: str) -> None:
+    """Wait until the trial's stage (``s``) meets ``condition``; on a timeout, say what state it was in."""
+    try:
+        page.wait_for(f"(() => {{ const s = {STAGE}; return s !== null && ({condition}); }})()")
+    except TimeoutError as exc:
+        state = page.evaluate(f"{STAGE} && [{STAGE}.dataset.state, {STAGE}.dataset.words]")
+        raise AssertionError(f"the trial's stage stayed {state}: {exc}") from None
+
+
+def _keep_screenshot(page) -> None:
+    folder = os.environ.get("AP_SCREENSHOT_DIR")
+    if folder:
+        from PIL import Image
+
+        Path(folder).mkdir(parents=True, exist_ok=True)
+        Image.fromarray(page.screenshot(VIEWPORT)).save(Path(folder) / "jspsych-trial.jpg", quality=90)
+
+
+@pytest.fixture(scope="module")
+def run_through(experiment_site):
+    """Run the experiment: the odd trials answered while the face speaks (after its first word), the even ones
+    after it has ended; returns the keys pressed, jsPsych's data, the page's problems and what it requested."""
+    site, _ = experiment_site
+    pressed = []
+    with served(site) as base, Browser() as chromium:
+        page = chromium.open(f"{base}/experiment.html", VIEWPORT)
+        page.wait_for("document.querySelector('#jspsych-html-keyboard-response-stimulus') !== null")
+        _press(page, " ")
+        trials = len(json.loads((site / "stimuli.json").read_text())["stimuli"])
+        for number in range(trials):
+            if number % 2 == 0:      # a word shown (or, on a machine too busy to draw between them, the end)
+                _wait_for_stage(page, f"(s.dataset.state === 'playing' && Number(s.dataset.words) >= 1) || {ENDED}")
+                if number == 0:
+                    _keep_screenshot(page)
+                    # the sound runs without a gesture here, so the head shows with no "Click to start" over it
+                    assert page.evaluate(f"getComputedStyle({STAGE}.querySelector('button')).display") == "none"
+            else:
+                _wait_for_stage(page, ENDED)
+            key = "fj"[number % 2]
+            _press(page, key)
+            pressed.append(key)
+            page.wait_for(f"{STAGE} === null || {STAGE}.dataset.state === 'done'")
+        page.wait_for("document.querySelector('#data') !== null")
+        # every player's frame loop has ended with its trial: no frame is asked for once the data are shown
+        frames_asked = page.evaluate("""new Promise((resolve) => {
+            let asked = 0;
+            const ask = window.requestAnimationFrame.bind(window);
+            window.requestAnimationFrame = (callback) => { asked += 1; return ask(callback); };
+            setTimeout(() => resolve(asked), 1500);
+        })""")
+        data = json.loads(page.evaluate("jsPsych.data.get().json()"))
+        shown_csv = page.evaluate("document.querySelector('#data').textContent")
+        return {"pressed": pressed, "data": data, "csv": shown_csv, "problems": page.problems(),
+                "requested": page.requested(), "base": base, "frames_asked": frames_asked}
+
+
+@pytest.mark.slow
+@needs_chromium
+def test_the_experiment_loads_only_from_its_site_and_logs_no_error(run_through):
+    assert run_through["problems"] == []
+    requested = run_through["requested"]
+    base = run_through["base"]
+    assert outside(requested, base) == []
+    assert f"{base}/jspsych/dist/index.browser.min.js" in requested and f"{base}/head.glb" in requested
+    assert run_through["frames_asked"] == 0
+
+
+@pytest.mark.slow
+@needs_chromium
+def test_each_trial_records_its_key_stimulus_levels_and_times(run_through, experiment_site):
+    _, stimulus_set = experiment_site
+    with (stimulus_set / "manifest.csv").open(newline="") as table:
+        manifest = {row["id"]: row for row in csv.DictReader(table)}
+    rows = [row for row in run_through["data"] if row["trial_type"] == "artificial-person"]
+    assert sorted(row["stimulus"] for row in rows) == sorted(manifest)              # each stimulus once
+    assert [row["response"] for row in rows] == run_through["pressed"]
+    print(f"\n{sum(r['ended_t'] is None for r in rows)} of {len(rows)} trials answered while the face spoke; "
+          f"frames drawn per trial: {[r['frames'] for r in rows]}; the sound's clock against the page's, spread "
+          f"per trial (ms): {[round(r['clock_spread_ms'], 2) for r in rows]}; play() to the clip's start heard "
+          f"(ms): {[round(r['clip_start_t'] - r['play_t'], 1) for r in rows]}")
+    for number, row in enumerate(rows):
+        listed = manifest[row["stimulus"]]
+        assert (row["text"], row["av_offset_ms"]) == (listed["text"], listed["av_offset_ms"])
+        assert row["sound"] is True and row["frames"] >= 1
+        assert row["speech_onset_ms"] == float(listed["speech_onset_ms"])
+        assert row["rt_speech"] == pytest.approx(row["rt"] - row["speech_onset_ms"])
+        assert row["speech_onset_t"] == pytest.approx(row["clip_start_t"] + row["speech_onset_ms"])
+        end = row["ended_t"] if row["ended_t"] is not None else row["response_t"]
+        words = row["word_onsets"]
+        onsets = [float(ms) for ms in listed["word_onsets_ms"].split(";")]
+        assert words and [w["word"] for w in words] == listed["words"].split(";")[:len(words)]
+        assert [w["start_ms"] for w in words] == pytest.approx(onsets[:len(words)], abs=1e-3)
+        times = [w["t"] for w in words]
+        assert row["play_t"] <= times[0] and times == sorted(times) and times[-1] <= end
+        # the key came after the last word shown: on the player's clock too
+        assert row["rt"] >= words[-1]["start_ms"] - SLACK_MS
+        if row["ended_t"] is None:                       # answered while the face spoke: the key ended the trial
+            assert number % 2 == 0
+            assert 0 <= row["rt"] < row["duration_ms"]
+        else:                                            # answered after the end: every word seen, rt after it
+            assert len(words) == len(onsets)
+            assert row["response_t"] >= row["ended_t"]
+            assert row["rt"] >= row["duration_ms"] - SLACK_MS
+        assert row["correct"] == (row["response"] == row["correct_key"])
+
+
+@pytest.mark.slow
+@needs_chromium
+def test_the_data_are_shown_as_csv_at_the_end(run_through):
+    shown = list(csv.DictReader(run_through["csv"].splitlines()))
+    assert len(shown) == len([r for r in run_through["data"] if r["trial_type"] == "artificial-person"])
+    assert {"stimulus", "response", "rt", "text", "av_offset_ms", "word_onsets", "clip_start_t"} <= set(shown[0])
+    assert json.loads(shown[0]["word_onsets"])[0]["word"]
