@@ -81,8 +81,12 @@ class Browser:
             raise RuntimeError("chromium is not installed")
         self.profile = Path(tempfile.mkdtemp(prefix="ap-chromium-"))
         command = with_parent_death_signal([CHROMIUM, *FLAGS, f"--user-data-dir={self.profile}", "about:blank"])
+        # HOME and the XDG folders in the profile too: the crash database and caches Chromium keeps outside
+        # --user-data-dir go there and are removed with it (its crash handler ends when the browser ends)
+        home = {"HOME": str(self.profile), "XDG_CONFIG_HOME": str(self.profile / ".config"),
+                "XDG_CACHE_HOME": str(self.profile / ".cache")}
         self.process = subprocess.Popen(command, stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                                        stderr=subprocess.DEVNULL, start_new_session=True)
+                                        stderr=subprocess.DEVNULL, start_new_session=True, env={**os.environ, **home})
         self.connection: Any = None
         self._stack = contextlib.ExitStack()
         try:
