@@ -4,8 +4,9 @@
   ``make_stimulus`` (wall-clock seconds per second of speech), beside Festival
   alone (the floor: nothing is faster than the synthesizer that makes the audio).
 * A set of N short clips (default 40): stimuli per minute with one local
-  worker, two local workers, and a two-worker Dask cluster of local processes
-  (127.0.0.1), and the speed-up of two over one.
+  worker, two local workers (each kept to a core of its own: a worker is a
+  core, engine/stimuli/cores.py), and one- and two-worker Dask clusters of
+  local processes (127.0.0.1), and the speed-up of two over one.
 
     .venv/bin/python benchmarks/bench_stimuli.py [--clips 40] [--json out.json]
 """
@@ -72,13 +73,18 @@ def main(argv: list[str] | None = None) -> int:
         print(f"{args.clips} clips, 2 local workers: {two:5.1f} stimuli/min ({two / one:.2f}×)", flush=True)
         from distributed import LocalCluster
 
-        with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
-                          dashboard_address=None, silence_logs=50) as cluster:
-            dask = clip_set(folder, args.clips, 2, cluster.scheduler_address)
-        print(f"{args.clips} clips, 2 Dask workers:  {dask:5.1f} stimuli/min ({dask / one:.2f}×)", flush=True)
+        dask = {}
+        for workers in (1, 2):
+            with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+                              dashboard_address=None, silence_logs=50) as cluster:
+                dask[workers] = clip_set(folder, args.clips, workers, cluster.scheduler_address)
+        print(f"{args.clips} clips, 1 Dask worker:   {dask[1]:5.1f} stimuli/min", flush=True)
+        print(f"{args.clips} clips, 2 Dask workers:  {dask[2]:5.1f} stimuli/min ({dask[2] / dask[1]:.2f}× one Dask "
+              f"worker, {dask[2] / one:.2f}× one local worker)", flush=True)
     if args.json:
         args.json.write_text(json.dumps({**single, "one_worker_per_min": one, "two_workers_per_min": two,
-                                         "dask_two_workers_per_min": dask}, indent=2))
+                                         "dask_one_worker_per_min": dask[1], "dask_two_workers_per_min": dask[2]},
+                                        indent=2))
     return 0
 
 
