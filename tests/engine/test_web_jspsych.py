@@ -202,3 +202,59 @@ def test_the_data_are_shown_as_csv_at_the_end(run_through):
     assert len(shown) == len([r for r in run_through["data"] if r["trial_type"] == "artificial-person"])
     assert {"stimulus", "response", "rt", "text", "av_offset_ms", "word_onsets", "clip_start_t"} <= set(shown[0])
     assert json.loads(shown[0]["word_onsets"])[0]["word"]
+
+
+NO_GESTURE_PAGE = """<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>a trial first</title><link rel="icon" href="data:,">
+<link rel="stylesheet" href="jspsych/css/jspsych.css">
+<script type="importmap">
+{"imports": {"three": "./three/build/three.module.min.js", "three/addons/": "./three/examples/jsm/"}}
+</script>
+<script src="jspsych/dist/index.browser.min.js"></script>
+<script src="plugin-artificial-person.js"></script>
+</head><body><script>
+const jsPsych = initJsPsych();
+jsPsych.run([{ type: jsPsychArtificialPerson, stimulus: "0001", choices: ["f"], trial_ends_after_stimulus: true }]);
+</script></body></html>
+"""
+
+
+def _click(page, selector: str) -> None:
+    x, y = page.evaluate(f"(() => {{ const r = document.querySelector({json.dumps(selector)}).getBoundingClientRect();"
+                         " return [r.x + r.width / 2, r.y + r.height / 2]; })()")
+    for kind in ("mousePressed", "mouseReleased"):
+        page.browser.call("Input.dispatchMouseEvent",
+                          {"type": kind, "x": x, "y": y, "button": "left", "clickCount": 1}, page.session)
+
+
+@pytest.mark.slow
+@needs_chromium
+def test_where_sound_needs_a_gesture_the_head_waits_for_a_click_or_plays_after_the_instructions_key(
+        experiment_site, monkeypatch):
+    """Chromium's own autoplay policy (the tests' flag that lifts it left out): a trial on a page the participant
+    has not touched waits, still, under "Click to start", and plays with sound once clicked; in the example the
+    key that leaves the instructions is the gesture, and the first trial plays at once."""
+    import tests.web_browser
+
+    monkeypatch.setattr(tests.web_browser, "FLAGS", [f for f in tests.web_browser.FLAGS
+                                                     if not f.startswith("--autoplay-policy")])
+    site, _ = experiment_site
+    (site / "no-gesture.html").write_text(NO_GESTURE_PAGE, encoding="utf-8")
+    with served(site) as base, Browser() as chromium:
+        page = chromium.open(f"{base}/no-gesture.html", VIEWPORT)
+        _wait_for_stage(page, "s.dataset.state === 'waiting'")
+        assert page.evaluate(f"getComputedStyle({STAGE}.querySelector('button')).display") == "block"
+        _click(page, "#jspsych-artificial-person button")
+        page.wait_for("jsPsych.data.get().count() === 1")
+        row = json.loads(page.evaluate("jsPsych.data.get().json()"))[0]
+        assert row["sound"] is True and row["response"] is None and row["rt"] is None
+        assert row["ended_t"] is not None and len(row["word_onsets"]) == 3
+        assert row["play_t"] <= row["word_onsets"][0]["t"]       # the play that counts is the one after the click
+        assert page.problems() == []
+
+        page = chromium.open(f"{base}/experiment.html", VIEWPORT)
+        page.wait_for("document.querySelector('#jspsych-html-keyboard-response-stimulus') !== null")
+        _press(page, " ")
+        _wait_for_stage(page, "s.dataset.state === 'playing' || s.dataset.state === 'ended'")
+        assert page.evaluate(f"getComputedStyle({STAGE}.querySelector('button')).display") == "none"
+        assert page.problems() == []

@@ -37,7 +37,8 @@ var jsPsychArtificialPerson = (function (jspsych) {
       /** End the trial this many ms after the stimulus starts playing (null: no limit). */
       trial_duration: { type: ParameterType.INT, default: null },
       /** The head's size on the page, [width, height] in CSS pixels (null: the site's size, e.g. 600×800). */
-      canvas_size: { type: ParameterType.INT, array: true, default: null },
+      // (not declared an array: jsPsych 8 refuses null as the default of an array parameter)
+      canvas_size: { type: ParameterType.INT, default: null },
     },
     data: {
       /** The stimulus's id. */
@@ -141,6 +142,13 @@ var jsPsychArtificialPerson = (function (jspsych) {
     const last = frames.length ? frames[frames.length - 1] : player.timings[player.timings.length - 1];
     if (!last) return null;
     return (last.heard_ms !== null ? last.heard_ms : last.drawn_ms) + (t - last.t);
+  }
+
+  /** Whether the audio context runs, or starts within a moment (browsers that allow sound resume at once). */
+  async function soundRuns(context) {
+    if (context.state === "running") return true;
+    await Promise.race([context.resume().catch(() => {}), new Promise((resolve) => setTimeout(resolve, 300))]);
+    return context.state === "running";
   }
 
   /** Stop the player for good: its sound, its frame loop and its GL context (a trial makes a new one). */
@@ -249,17 +257,19 @@ var jsPsychArtificialPerson = (function (jspsych) {
         if (trial.trial_ends_after_stimulus || response !== null) finish();
       });
 
-      // Sound needs a gesture in some browsers: then the head waits, still, for a click.
-      if (!(await player.play())) {
-        player.pause();
-        player.seek(0);
-        player.timings.length = 0;
-        seen.play_t = null;
+      // Sound needs a gesture in some browsers (a page the participant has not yet clicked or typed in): then
+      // the head waits, still, for a click, rather than start moving in silence.
+      if (!(await soundRuns(player.audioContext))) {
         start.style.display = "block";      // not `hidden`: jspsych.css displays .jspsych-btn
         stage.dataset.state = "waiting";
-        await new Promise((resolve) => start.addEventListener("click", resolve, { once: true }));
+        await new Promise((resolve) => start.addEventListener("click", () => {
+          player.audioContext.resume().catch(() => {});           // within the gesture
+          resolve();
+        }, { once: true }));
         start.style.display = "none";
-        await player.play();
+      }
+      if (!(await player.play())) {         // the sound still held: the clock is performance.now() (sound: false)
+        console.warn(`artificial-person: stimulus ${listed.id} plays without sound`);
       }
       if (finished) return;
       stage.dataset.state = ended ? "ended" : "playing";
