@@ -53,7 +53,8 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     seconds: dict[str, float] = {"landmarks": 0.0}
     started = time.perf_counter()
     report("shape")
-    shape = fit_shape(base, {v: p for v, p in points.items() if v in photos}, photos.get("side"), should_stop)
+    shape = fit_shape(base, {v: p for v, p in points.items() if v in photos}, photos.get("side"), should_stop,
+                      photos.get("front"))
     report("head")
     head = (make_identity_head(shape.identity, base, lambda: stop_if_asked(should_stop)) if shape.identity.values
             else base.copy())

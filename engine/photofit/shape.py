@@ -22,8 +22,10 @@ from scipy.optimize import least_squares
 from engine.identity import Identity, identity_parameter, identity_vertices
 from engine.model import Model
 from engine.photofit.camera import WeakPerspective, initial_vector
+from engine.photofit.outline import LANDMARK_CLEARANCE, SkinColour, face_skin, outline_moves, outline_vertices
 from engine.photofit.silhouette import foreground, profile_moves, profile_vertices
 from engine.photofit.stopping import ShouldStop, stop_if_asked
+from engine.photofit.texture import all_triangles, vertex_normals
 
 #: The identity parameters fitted, and the step used to sample each one's effect.
 FITTED_PARAMETERS = ("sex", "age", "weight", "head-scale-horiz-decr-incr", "head-scale-vert-decr-incr",
@@ -71,11 +73,14 @@ def landmark_basis(base: Model, ids: list[str],
 
 
 def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]]],
-              side_photo: np.ndarray | None = None, should_stop: ShouldStop = None) -> ShapeFit:
+              side_photo: np.ndarray | None = None, should_stop: ShouldStop = None,
+              front_photo: np.ndarray | None = None) -> ShapeFit:
     """Fit ``base`` (the default head) to the landmarks of each view (view → id → pixel).
 
     With ``side_photo`` on a plain background, the warp also puts the face's midline profile on the
-    photograph's silhouette (:mod:`engine.photofit.silhouette`).
+    photograph's silhouette (:mod:`engine.photofit.silhouette`), and with ``front_photo`` too (the colour
+    of the skin comes from its face) the rest of the head's outline where the side photograph shows skin
+    there (:mod:`engine.photofit.outline`).
     """
     ids = sorted({k for view in points.values() for k in view})
     defaults, _, rest, basis = landmark_basis(base, ids, should_stop)
@@ -121,14 +126,18 @@ def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]
     warp = residual_warp(base, vertices, vertices[index], moves)
     stop_if_asked(should_stop)
     if side_photo is not None and "side" in cameras:
-        warp = _with_profile(base, vertices, warp, vertices[index], moves, side_photo, cameras["side"], should_stop)
+        skin = face_skin(front_photo, points["front"]) if front_photo is not None and "front" in points else None
+        warp = _with_profile(base, vertices, warp, vertices[index], moves, side_photo, cameras["side"], should_stop,
+                             skin)
     after = _rms_error(vertices[index] + warp[index], cameras, chosen)
     return ShapeFit(identity, cameras, vertices + warp, warp, before, after)
 
 
 def _with_profile(base: Model, vertices: np.ndarray, warp: np.ndarray, centres: np.ndarray, moves: np.ndarray,
-                  photo: np.ndarray, camera: WeakPerspective, should_stop: ShouldStop = None) -> np.ndarray:
-    """The warp again, with the midline profile's moves onto the side photograph's silhouette added."""
+                  photo: np.ndarray, camera: WeakPerspective, should_stop: ShouldStop = None,
+                  skin: SkinColour | None = None) -> np.ndarray:
+    """The warp again, with the moves of the midline profile and (with ``skin``) of the rest of the outline onto
+    the side photograph's silhouette added."""
     mask = foreground(photo)
     stop_if_asked(should_stop)
     if mask is None:
@@ -137,12 +146,48 @@ def _with_profile(base: Model, vertices: np.ndarray, warp: np.ndarray, centres: 
     near_landmark = np.linalg.norm(vertices[profile][:, None] - centres[None], axis=2).min(axis=1) < 4.0
     profile = profile[~near_landmark]
     trusted, extra = profile_moves(mask, camera, (vertices + warp)[profile])
-    if trusted.sum() < 3:
+    targets, target_moves = [centres], [moves]
+    if trusted.sum() >= 3:
+        targets.append(vertices[profile[trusted]])
+        target_moves.append(warp[profile[trusted]] + extra[trusted])
+    if len(targets) > 1:
+        stop_if_asked(should_stop)
+        warp = residual_warp(base, vertices, np.concatenate(targets), np.concatenate(target_moves))
+    if skin is None:
         return warp
-    profile = profile[trusted]
+    # the outline second, on the warped head, with the landmarks and the profile held where they now are
+    taken = np.concatenate(targets)
+    outline, outline_extra = _outline_targets(base, vertices, warp, taken, photo, mask, camera, skin, should_stop)
+    if not len(outline):
+        return warp
+    held = np.concatenate([_nearest(vertices, taken), outline])
     stop_if_asked(should_stop)
-    return residual_warp(base, vertices, np.concatenate([centres, vertices[profile]]),
-                         np.concatenate([moves, warp[profile] + extra[trusted]]))
+    return warp + residual_warp(base, vertices + warp, (vertices + warp)[held],
+                                np.concatenate([np.zeros((len(held) - len(outline), 3)), outline_extra]))
+
+
+def _nearest(vertices: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """(P,) the index of the vertex nearest each of (P, 3) points."""
+    return np.asarray(np.linalg.norm(points[:, None] - vertices[None], axis=2).argmin(axis=1))
+
+
+def _outline_targets(base: Model, vertices: np.ndarray, warp: np.ndarray, taken: np.ndarray, photo: np.ndarray,
+                     mask: np.ndarray,
+                     camera: WeakPerspective, skin: SkinColour,
+                     should_stop: ShouldStop = None) -> tuple[np.ndarray, np.ndarray]:
+    """Outline vertices (not within LANDMARK_CLEARANCE of a landmark or profile point, ``taken``, unwarped: the
+    face is theirs, and the slits of the lips and eyes are no outline) with a trusted skin edge, and their 3-D
+    moves onto it."""
+    shape = vertices + warp
+    triangles = all_triangles(base)
+    outline, directions = outline_vertices(base, shape, vertex_normals(shape, triangles), triangles, camera,
+                                           should_stop)
+    stop_if_asked(should_stop)
+    if len(outline) and len(taken):
+        apart = np.linalg.norm(vertices[outline][:, None] - taken[None], axis=2).min(axis=1) >= LANDMARK_CLEARANCE
+        outline, directions = outline[apart], directions[apart]
+    trusted, moves = outline_moves(photo, mask, camera, shape[outline], directions, skin)
+    return outline[trusted], moves[trusted]
 
 
 def _rms_error(shape: np.ndarray, cameras: Mapping[str, WeakPerspective],
