@@ -10,7 +10,8 @@ Steps (each one a command you could type; docs/web-jspsych.md):
 2. ``artificial-person web-export --stimuli SET -o SITE`` (``-m MODEL`` passed on);
 3. copy into ``SITE``: ``plugin-artificial-person.js`` and ``jspsych/`` (jsPsych 8 and its keyboard plugin)
    from the installed package (``engine/web/jspsych/``, ``engine/web/vendor/jspsych/``), and this folder's
-   ``experiment.html`` and ``experiment.js``.
+   ``experiment.html`` and ``experiment.js`` (the jsPsych experiment), ``embed.html`` and ``head-in-frame.js``
+   (a stimulus in an iframe, on the outer page's clock: the pattern for PsychoJS and other frameworks).
 
 A failing step ends with its own one-line error and status; nothing else is printed but what was made.
 """
@@ -25,7 +26,7 @@ from importlib import resources
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-EXPERIMENT_FILES = ("experiment.html", "experiment.js")
+EXPERIMENT_FILES = ("experiment.html", "experiment.js", "embed.html", "head-in-frame.js")
 PLUGIN = "plugin-artificial-person.js"
 
 

@@ -72,9 +72,10 @@ def test_a_design_that_cannot_be_made_stops_with_its_own_error(tmp_path):
 @pytest.mark.slow
 def test_the_site_holds_the_experiment_beside_the_export(experiment_site):
     site, _ = experiment_site
-    for name in ("experiment.html", "experiment.js", "plugin-artificial-person.js", "index.html", "player.js",
-                 "stimuli.json", "jspsych/dist/index.browser.min.js", "jspsych/css/jspsych.css",
-                 "jspsych/plugin-html-keyboard-response/dist/index.browser.min.js", "jspsych/LICENSE"):
+    for name in ("experiment.html", "experiment.js", "embed.html", "head-in-frame.js", "plugin-artificial-person.js",
+                 "index.html", "player.js", "stimuli.json", "jspsych/dist/index.browser.min.js",
+                 "jspsych/css/jspsych.css", "jspsych/plugin-html-keyboard-response/dist/index.browser.min.js",
+                 "jspsych/LICENSE"):
         assert (site / name).is_file(), name
     assert not (site / "jspsych" / "README.md").exists()
     assert (site / "plugin-artificial-person.js").read_bytes() == PLUGIN.read_bytes()
@@ -258,3 +259,27 @@ def test_where_sound_needs_a_gesture_the_head_waits_for_a_click_or_plays_after_t
         _wait_for_stage(page, "s.dataset.state === 'playing' || s.dataset.state === 'ended'")
         assert page.evaluate(f"getComputedStyle({STAGE}.querySelector('button')).display") == "none"
         assert page.problems() == []
+
+
+@pytest.mark.slow
+@needs_chromium
+def test_a_page_of_another_framework_plays_a_stimulus_in_a_frame_on_its_own_clock(experiment_site):
+    """The pattern docs/web-jspsych.md gives for PsychoJS: ``examples/web/head-in-frame.js`` opens a stimulus
+    in a same-origin iframe and plays it; its events come back on the outer page's ``performance.now()``
+    (the frame's own clock starts later: without the shift they would fall before the call)."""
+    site, _ = experiment_site
+    listed = json.loads((site / "stimuli.json").read_text())["stimuli"][1]
+    with served(site) as base, Browser() as chromium:
+        page = chromium.open(f"{base}/embed.html?stimulus={listed['id']}", VIEWPORT)
+        page.wait_for("window.headReady !== undefined")
+        shift = page.evaluate("window.headReady.then((head) => head.ours(0))")
+        played = page.evaluate("(async () => { const before = performance.now(); const record = await head.play();"
+                               " return { before, record, after: performance.now() }; })()")
+        assert page.problems() == []
+        assert outside(page.requested(), base) == [] and f"{base}/stimuli/{listed['id']}.json" in page.requested()
+    record = played["record"]
+    words = listed["manifest"]["words"].split(";")
+    assert record["sound"] is True and [w["word"] for w in record["word_onsets"]] == words
+    times = [record["play_t"], *(w["t"] for w in record["word_onsets"]), record["ended_t"]]
+    assert played["before"] <= times[0] and times == sorted(times) and times[-1] <= played["after"]
+    assert shift > 0 and record["play_t"] - shift < played["before"]        # the shift is what puts them inside
