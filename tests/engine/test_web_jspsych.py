@@ -124,6 +124,9 @@ def run_through(experiment_site):
                 _wait_for_stage(page, f"(s.dataset.state === 'playing' && Number(s.dataset.words) >= 1) || {ENDED}")
                 if number == 0:
                     _keep_screenshot(page)
+                    box = f"{STAGE}.querySelector('canvas').getBoundingClientRect()"
+                    shown = page.evaluate(f"(() => {{ const r = {box}; return [r.width, r.height]; }})()")
+                    assert shown == [300, 400]           # the example's canvas_size
                     # the sound runs without a gesture here, so the head shows with no "Click to start" over it
                     assert page.evaluate(f"getComputedStyle({STAGE}.querySelector('button')).display") == "none"
             else:
@@ -142,14 +145,15 @@ def run_through(experiment_site):
         })""")
         data = json.loads(page.evaluate("jsPsych.data.get().json()"))
         shown_csv = page.evaluate("document.querySelector('#data').textContent")
-        return {"pressed": pressed, "data": data, "csv": shown_csv, "problems": page.problems(),
+        warnings = [e["args"] for e in page.mine("Runtime.consoleAPICalled") if e["type"] == "warning"]
+        return {"pressed": pressed, "data": data, "csv": shown_csv, "problems": page.problems(), "warnings": warnings,
                 "requested": page.requested(), "base": base, "frames_asked": frames_asked}
 
 
 @pytest.mark.slow
 @needs_chromium
 def test_the_experiment_loads_only_from_its_site_and_logs_no_error(run_through):
-    assert run_through["problems"] == []
+    assert run_through["problems"] == [] and run_through["warnings"] == []
     requested = run_through["requested"]
     base = run_through["base"]
     assert outside(requested, base) == []
@@ -283,3 +287,14 @@ def test_a_page_of_another_framework_plays_a_stimulus_in_a_frame_on_its_own_cloc
     times = [record["play_t"], *(w["t"] for w in record["word_onsets"]), record["ended_t"]]
     assert played["before"] <= times[0] and times == sorted(times) and times[-1] <= played["after"]
     assert shift > 0 and record["play_t"] - shift < played["before"]        # the shift is what puts them inside
+
+
+def test_the_plugin_and_jspsych_are_package_data():
+    """An installed toolkit carries the plugin and the vendored jsPsych (make_experiment.py copies them from the
+    package): pyproject's package-data patterns reach every file under engine/web/jspsych and its vendor folder."""
+    import tomllib
+
+    patterns = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["package-data"]["engine"]
+    shipped = {path for pattern in patterns for path in (ROOT / "engine").glob(pattern) if path.is_file()}
+    needed = {path for folder in (PLUGIN.parent, VENDORED) for path in folder.rglob("*") if path.is_file()}
+    assert PLUGIN in needed and needed <= shipped, sorted(str(p) for p in needed - shipped)

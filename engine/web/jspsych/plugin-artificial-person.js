@@ -37,8 +37,8 @@ var jsPsychArtificialPerson = (function (jspsych) {
       /** End the trial this many ms after the stimulus starts playing (null: no limit). */
       trial_duration: { type: ParameterType.INT, default: null },
       /** The head's size on the page, [width, height] in CSS pixels (null: the site's size, e.g. 600×800). */
-      // (not declared an array: jsPsych 8 refuses null as the default of an array parameter)
-      canvas_size: { type: ParameterType.INT, default: null },
+      // (COMPLEX: jsPsych 8 refuses null for an array parameter, and turns an array given to an INT one into NaN)
+      canvas_size: { type: ParameterType.COMPLEX, default: null },
     },
     data: {
       /** The stimulus's id. */
