@@ -10,7 +10,8 @@ The photographs are the synthetic ground truth of ``tests/engine/test_photofit.p
 the front and the side, 1224 × 1632 = 2.0 megapixels each) written as JPEG
 files with a POINTS.json, so the time includes reading and decoding them, as
 ``fit-photos`` does. Stages: landmarks (reading the photographs and
-POINTS.json) → shape (cameras, identity, residual warp, rig carried over) →
+POINTS.json) → shape (cameras, identity, residual warp with the side profile and outline, rig carried
+over) →
 texture (z-buffers, atlas, blend). No assertions: the figures are printed.
 """
 

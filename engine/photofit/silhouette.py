@@ -43,15 +43,17 @@ def foreground(photo: np.ndarray, both_sides: bool = False) -> np.ndarray | None
     width = photo.shape[1]
     bw = max(int(width * BORDER), 1)
     borders = [photo[:, :bw].astype(float)] + ([photo[:, width - bw:].astype(float)] if both_sides else [])
-    distance = np.full(photo.shape[:2], np.inf)
-    spreads = []
+    colours, spreads = [], []
     for border in borders:                                                # (H, bw, 3) each
-        colour = np.median(border, axis=1)                                # (H, 3) per row
-        spreads.append(float(np.median(np.linalg.norm(border - colour[:, None], axis=2))))
-        distance = np.minimum(distance, np.linalg.norm(photo.astype(float) - colour[:, None], axis=2))
+        colours.append(np.median(border, axis=1))                         # (H, 3) per row
+        spreads.append(float(np.median(np.linalg.norm(border - colours[-1][:, None], axis=2))))
     if max(spreads) > BUSY_BACKGROUND:
         return None
-    return np.asarray(distance > max(MIN_CONTRAST, 4 * max(spreads)))
+    pixels = photo.astype(np.float32)
+    square = np.full(photo.shape[:2], np.inf, dtype=np.float32)
+    for colour in colours:
+        square = np.minimum(square, np.square(pixels - colour[:, None].astype(np.float32)).sum(axis=2))
+    return np.asarray(square > max(MIN_CONTRAST, 4 * max(spreads)) ** 2)
 
 
 def profile_vertices(model: Model, vertices: np.ndarray) -> np.ndarray:

@@ -57,7 +57,7 @@ def test_no_backdrop_is_baked_into_the_texture(synthetic, two_views, monkeypatch
     before = backdrop_pixels(fit_photos(photos, points).head, colours)
     print(f"rendered pixels of backdrop colour: before {before}, after {after}")
     for view in VIEWS:
-        assert before[view] > 1000, "the measure must see the rim the unmasked texture has"
+        assert before[view] > 500, "the measure must see the rim the unmasked texture has"
         assert after[view] < 100 and after[view] < 0.05 * before[view]
 
 
