@@ -298,3 +298,44 @@ def test_the_plugin_and_jspsych_are_package_data():
     shipped = {path for pattern in patterns for path in (ROOT / "engine").glob(pattern) if path.is_file()}
     needed = {path for folder in (PLUGIN.parent, VENDORED) for path in folder.rglob("*") if path.is_file()}
     assert PLUGIN in needed and needed <= shipped, sorted(str(p) for p in needed - shipped)
+
+
+OPTIONS_PAGE = """<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>the plugin's options</title><link rel="icon" href="data:,">
+<link rel="stylesheet" href="jspsych/css/jspsych.css">
+<script type="importmap">
+{"imports": {"three": "./three/build/three.module.min.js", "three/addons/": "./three/examples/jsm/"}}
+</script>
+<script src="jspsych/dist/index.browser.min.js"></script>
+<script src="plugin-artificial-person.js"></script>
+</head><body><script>
+const jsPsych = initJsPsych();
+jsPsych.run([
+  { type: jsPsychArtificialPerson, stimulus: "0001", choices: "NO_KEYS", trial_duration: 600 },
+  { type: jsPsychArtificialPerson, stimulus: "0003", choices: ["f"], response_ends_trial: false },
+  { type: jsPsychArtificialPerson, stimulus: "no-such-stimulus" },
+]);
+</script></body></html>
+"""
+
+
+@pytest.mark.slow
+@needs_chromium
+def test_trial_duration_a_response_that_does_not_end_the_trial_and_a_missing_stimulus(experiment_site):
+    site, _ = experiment_site
+    (site / "options.html").write_text(OPTIONS_PAGE, encoding="utf-8")
+    with served(site) as base, Browser() as chromium:
+        page = chromium.open(f"{base}/options.html", VIEWPORT)
+        _wait_for_stage(page, "Number(s.dataset.words) >= 1 && jsPsych.getProgress().current_trial_global === 1")
+        _press(page, "f")
+        page.wait_for("jsPsych.data.get().count() === 3")
+        timed, answered, missing = json.loads(page.evaluate("jsPsych.data.get().json()"))
+        problems = page.problems()
+    # NO_KEYS and no end after the stimulus: only trial_duration can have ended the first trial
+    assert timed["stimulus"] == "0001" and timed["response"] is None and timed["rt"] is None
+    # the key did not end the second: it ran to the stimulus's end, every word shown
+    assert answered["response"] == "f" and answered["ended_t"] is not None and len(answered["word_onsets"]) == 3
+    assert answered["rt"] >= answered["word_onsets"][0]["start_ms"] - SLACK_MS
+    # an id the site does not list: the trial ends at once, saying so in its data and on the console
+    assert "no-such-stimulus" in missing["error"]
+    assert len(problems) == 1 and "no-such-stimulus" in problems[0], problems
