@@ -153,14 +153,7 @@ var jsPsychArtificialPerson = (function (jspsych) {
 
   /** Stop the player for good: its sound, its frame loop and its GL context (a trial makes a new one). */
   function release(player) {
-    player.pause();
-    // The player has no dispose() yet: its frame loop calls this._tick anew each frame, so this ends it.
-    player._tick = () => {};
-    if (player.audioContext) player.audioContext.close().catch(() => {});
-    if (player.renderer) {
-      player.renderer.dispose();
-      player.renderer.forceContextLoss();
-    }
+    player.dispose();
   }
 
   class ArtificialPersonPlugin {

@@ -48,7 +48,7 @@ export class ArtificialPerson extends EventTarget {
     this.audioBuffer = await this.audioContext.decodeAudioData(await audio.arrayBuffer());
     this._apply(0);
     this._tick = this._tick.bind(this);
-    requestAnimationFrame(this._tick);
+    this._frameRequest = requestAnimationFrame(this._tick);
     await this.nextFrame();
     this.ready = true;
     this._readyWaiters.splice(0).forEach((resolve) => resolve());
@@ -139,8 +139,22 @@ export class ArtificialPerson extends EventTarget {
     return heard !== null ? heard : this._from + (performance.now() - this._wallStart);
   }
 
+  /** Stop for good: the sound, the frame loop, the audio context and the GL context (a page that shows
+   * stimulus after stimulus makes a player for each and disposes of the last). */
+  dispose() {
+    this.pause();
+    this.disposed = true;
+    if (this._frameRequest !== undefined) cancelAnimationFrame(this._frameRequest);
+    if (this.audioContext) this.audioContext.close().catch(() => {});
+    if (this.renderer) {
+      this.renderer.dispose();
+      this.renderer.forceContextLoss();
+    }
+  }
+
   _tick() {
-    requestAnimationFrame(this._tick);
+    if (this.disposed) return;
+    this._frameRequest = requestAnimationFrame(this._tick);
     if (this.playing) {
       const position = Math.max(this._clock(), this.position);   // never backwards
       this.position = Math.min(position, this.duration);
