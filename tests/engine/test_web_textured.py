@@ -95,7 +95,8 @@ def test_the_site_carries_the_image_in_its_glb(pictures):
 
 def test_the_browser_draws_the_texture_as_the_engine_does(pictures):
     assert pictures["problems"] == []
-    differences = {name: face_difference(pictures["browser"], pictures[name]) for name in ("engine", "flipped", "plain")}
+    differences = {name: face_difference(pictures["browser"], pictures[name])
+                   for name in ("engine", "flipped", "plain")}
     print(f"\nmean |browser − render| over the face, of 255: {differences}")
     assert differences["engine"] < 3.0
     # the measure sees an image turned upside down and an image left out
