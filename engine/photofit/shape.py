@@ -4,11 +4,15 @@ The landmark positions of an identity are close to linear in its parameters
 near the default head, so they are sampled once per parameter
 (:func:`landmark_basis`, one :func:`identity_vertices` each) and the
 optimiser works on that linear model; the cameras are fitted exactly (the
-rotation is non-linear). A prior keeps each parameter near its default, in
-units of :data:`PRIOR_SPREAD`. What the identity space cannot explain is
-taken up by a smooth warp (Gaussian radial basis functions of the landmarks'
-3-D residuals), eyes, teeth and tongue moving rigidly with it. The sampling
-and the optimiser ask ``should_stop`` as they go (:mod:`engine.photofit.stopping`).
+rotation is non-linear). The model is then made again about the estimate and
+the fit repeated (:data:`REFINEMENTS` times, :func:`linearise_at`): over the
+whole range the landmarks are not linear, and the first estimate left 5 … 6 px
+of landmark error that the identity could explain. A prior keeps each parameter
+near its default, in units of :data:`PRIOR_SPREAD` (:data:`PRIOR_SPREADS` for
+some). What the identity space cannot explain is taken up by a smooth warp
+(Gaussian radial basis functions of the landmarks' 3-D residuals), eyes,
+teeth and tongue moving rigidly with it. The sampling and the optimiser ask
+``should_stop`` as they go (:mod:`engine.photofit.stopping`).
 """
 
 from __future__ import annotations
@@ -38,6 +42,12 @@ FITTED_PARAMETERS = ("sex", "age", "weight", "head-scale-horiz-decr-incr", "head
 FIT_RANGES = {"age": (18.0, 90.0)}
 #: How far (as a fraction of each parameter's range) the prior lets a parameter move at one unit of cost.
 PRIOR_SPREAD = 0.35
+#: Tighter for the head's overall height and width: they move the skull, which the landmarks hardly see, so a
+#: loose prior let them take up landmark noise and the cameras' weak-perspective error (measured on four
+#: synthetic heads, docs/photofit.md: the skull 2 … 4 mm nearer the truth, the face no worse).
+PRIOR_SPREADS = {"head-scale-horiz-decr-incr": 0.1, "head-scale-vert-decr-incr": 0.1}
+REFINEMENTS = 2                       # times the landmark model is made again about the estimate and refitted
+REFINE_STEP = 0.05                    # of a parameter's range: the finite difference step about the estimate
 PIXEL_NOISE = 2.0                     # px: the landmark placement error the reprojection residual is scaled by
 WARP_RADIUS = 22.0                    # mm: the Gaussian warp's width
 WARP_SMOOTHING = 0.3                  # ridge on the warp's weights: close landmarks must not fold it
@@ -72,6 +82,24 @@ def landmark_basis(base: Model, ids: list[str],
     return np.array(defaults), np.array(steps), rest, np.array(basis)
 
 
+def linearise_at(base: Model, ids: list[str], values: np.ndarray,
+                 should_stop: ShouldStop = None) -> tuple[np.ndarray, np.ndarray]:
+    """Landmark positions (L, 3) of the identity with ``values`` (P,) and their change per unit (P, L, 3) there:
+    the landmark model again about the current estimate (the landmarks are not linear over the whole range)."""
+    index = np.array([base.landmarks[k] for k in ids])
+    current = {n: float(v) for n, v in zip(FITTED_PARAMETERS, values, strict=True)}
+    rest = identity_vertices(Identity(current), base)[index]
+    basis = []
+    for name, value in current.items():
+        stop_if_asked(should_stop)
+        p = identity_parameter(name)
+        step = REFINE_STEP * (p.maximum - p.minimum)
+        moved_value = value + step if value + step <= p.maximum else value - step
+        moved = identity_vertices(Identity({**current, name: moved_value}), base)[index]
+        basis.append((moved - rest) / (moved_value - value))
+    return rest, np.array(basis)
+
+
 def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]]],
               side_photo: np.ndarray | None = None, should_stop: ShouldStop = None,
               front_photo: np.ndarray | None = None) -> ShapeFit:
@@ -91,15 +119,18 @@ def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]
     chosen = {v: (np.array([ids.index(k) for k in points[v]]), np.array(list(points[v].values()), dtype=float))
               for v in views}
     P = len(FITTED_PARAMETERS)
+    spreads = np.array([PRIOR_SPREADS.get(n, PRIOR_SPREAD) for n in FITTED_PARAMETERS])
+
+    centre = defaults
 
     def landmarks(values: np.ndarray) -> np.ndarray:
-        return np.asarray(rest + np.einsum("p,pld->ld", values - defaults, basis))
+        return np.asarray(rest + np.einsum("p,pld->ld", values - centre, basis))
 
     def residuals(x: np.ndarray) -> np.ndarray:
         stop_if_asked(should_stop)               # each evaluation of the optimiser
         values = x[:P]
         shape = landmarks(values)
-        out = [(values - defaults) / (PRIOR_SPREAD * spans)]
+        out = [(values - defaults) / (spreads * spans)]
         for k, v in enumerate(views):
             camera = WeakPerspective.from_vector(v, x[P + 6 * k:P + 6 * k + 6])
             where, pixels = chosen[v]
@@ -114,6 +145,12 @@ def fit_shape(base: Model, points: Mapping[str, Mapping[str, tuple[float, float]
     x0 = np.concatenate([defaults, fixed.x])
     solved = least_squares(residuals, x0, bounds=(np.concatenate([lows, -inf]), np.concatenate([highs, inf])),
                            x_scale=np.concatenate([spans * 0.1, np.ones(6 * len(views))]))
+    for _ in range(REFINEMENTS):             # again about the estimate, where the linear model is accurate
+        centre = np.clip(solved.x[:P], lows, highs)
+        rest, basis = linearise_at(base, ids, centre, should_stop)
+        solved = least_squares(residuals, np.concatenate([centre, solved.x[P:]]),
+                               bounds=(np.concatenate([lows, -inf]), np.concatenate([highs, inf])),
+                               x_scale=np.concatenate([spans * 0.1, np.ones(6 * len(views))]))
     values = np.clip(solved.x[:P], lows, highs)
     cameras = {v: WeakPerspective.from_vector(v, solved.x[P + 6 * k:P + 6 * k + 6]) for k, v in enumerate(views)}
     identity = Identity({n: float(val) for n, val, d in zip(FITTED_PARAMETERS, values, defaults, strict=True)
