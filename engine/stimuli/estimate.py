@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from engine.script.inline_commands import parse_script
-from engine.stimuli.cores import available_cores, kept_to_core
+from engine.stimuli.cores import kept_to_a_core
 from engine.stimuli.design import Design, Stimulus
 from engine.stimuli.make import make_stimulus
 
@@ -53,7 +53,7 @@ def estimate(design: Design, todo: list[Stimulus], workers: int) -> Estimate | N
     if not todo:
         return None
     sample = todo[0]
-    with tempfile.TemporaryDirectory(prefix="ap-estimate-") as folder, kept_to_core(available_cores()[0]):
+    with tempfile.TemporaryDirectory(prefix="ap-estimate-") as folder, kept_to_a_core():
         start = time.perf_counter()
         make_stimulus(design, sample, Path(folder))                   # as a worker makes it: on one core
         took = time.perf_counter() - start

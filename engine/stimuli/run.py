@@ -30,7 +30,7 @@ from typing import Any
 
 from engine.errors import UserError
 from engine.formats.atomic import finish_interrupted_writes
-from engine.stimuli.cores import available_cores, keep_to_core, kept_to_core
+from engine.stimuli.cores import keep_to_a_core, kept_to_a_core
 from engine.stimuli.design import Design, Stimulus
 from engine.stimuli.make import RECORDS, make_stimulus, sha256_of
 from engine.stimuli.manifest import MANIFEST, write_set_files
@@ -106,9 +106,8 @@ def default_workers() -> int:
 def _run_locally(design: Design, todo: list[Stimulus], outdir: Path, workers: int | None,
                  _scheduler: str | None) -> Iterator[dict[str, Any]]:
     count = max(1, min(workers or default_workers(), len(todo)))
-    cores = available_cores()
     if count == 1:
-        with kept_to_core(cores[0]):
+        with kept_to_a_core():
             for stimulus in todo:
                 yield make_stimulus(design, stimulus, outdir)
         return
@@ -116,12 +115,7 @@ def _run_locally(design: Design, todo: list[Stimulus], outdir: Path, workers: in
     attempts: dict[str, int] = {}
     while pending:
         # spawn: a fresh interpreter per worker (no forked VTK or Festival state); workers die with us
-        context = get_context("spawn")
-        free_cores = context.Queue()
-        for k in range(count):
-            free_cores.put(cores[k % len(cores)])
-        with ProcessPoolExecutor(count, mp_context=context, initializer=_worker_start,
-                                 initargs=(free_cores,)) as pool:
+        with ProcessPoolExecutor(count, mp_context=get_context("spawn"), initializer=_worker_start) as pool:
             futures: dict[Future, Stimulus] = {pool.submit(make_stimulus, design, s, outdir): s for s in pending}
             pending = []
             try:
@@ -139,18 +133,16 @@ def _run_locally(design: Design, todo: list[Stimulus], outdir: Path, workers: in
 
 
 def _make_on_a_worker(design: Design, stimulus: Stimulus, outdir: Path) -> dict[str, Any]:
-    """:func:`make_stimulus` on a Dask worker: one core each, so no second renderer."""
-    from engine.outputs.render_helper import ENVIRONMENT
-
-    os.environ.setdefault(ENVIRONMENT, "1")
+    """:func:`make_stimulus` on a Dask worker, which keeps to a core of its own from its first stimulus on."""
+    keep_to_a_core()                              # the core it already holds, after the first time
     return make_stimulus(design, stimulus, outdir)
 
 
-def _worker_start(free_cores: Any) -> None:
+def _worker_start() -> None:
     from engine.processes import die_with_parent
 
     die_with_parent()
-    keep_to_core(free_cores.get())                # a core of its own: the pool's k-th worker, the k-th core
+    keep_to_a_core()                              # a core no other worker on this computer holds
 
 
 def _run_on_dask(design: Design, todo: list[Stimulus], outdir: Path, _workers: int | None,

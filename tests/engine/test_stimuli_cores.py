@@ -1,4 +1,4 @@
-"""A local worker of a stimulus set is one core (engine/stimuli/cores.py): real worker processes, real children."""
+"""A worker of a stimulus set is one core (engine/stimuli/cores.py): real worker processes, real children."""
 
 from __future__ import annotations
 
@@ -14,38 +14,44 @@ import pytest
 
 from engine.outputs.render_helper import ENVIRONMENT
 from engine.stimuli import make_set, parse_design
-from engine.stimuli.cores import available_cores
+from engine.stimuli.cores import available_cores, claim_a_core, release_core
 from engine.stimuli.run import _worker_start
 
 pytestmark = pytest.mark.skipif(not hasattr(os, "sched_getaffinity"), reason="no CPU affinity on this system")
 
 
-def cores_seen() -> tuple[list[int], list[int], str | None]:
+def cores_seen(_index: int = 0) -> tuple[list[int], list[int], str | None]:
     """This process's cores, those of a process it starts, and whether it may fork a second renderer."""
+    import time
+
+    time.sleep(0.2)                               # every worker gets tasks
     child = subprocess.run([sys.executable, "-c", "import os; print(sorted(os.sched_getaffinity(0)))"],
                            capture_output=True, text=True, check=True)
     return sorted(os.sched_getaffinity(0)), ast.literal_eval(child.stdout), os.environ.get(ENVIRONMENT)
 
 
-def test_each_worker_and_every_process_it_starts_keep_to_a_core_of_its_own():
-    cores = available_cores()
-    context = get_context("spawn")
-    free = context.Queue()
-    for k in range(2):
-        free.put(cores[k % len(cores)])
-    with ProcessPoolExecutor(2, mp_context=context, initializer=_worker_start, initargs=(free,)) as pool:
-        seen = list(pool.map(cores_seen_by_a_busy_worker, range(8)))
+@pytest.mark.skipif(len(available_cores()) < 2, reason="one core: nothing to share out")
+def test_each_worker_and_every_process_it_starts_keep_to_a_core_no_other_worker_holds():
+    with ProcessPoolExecutor(2, mp_context=get_context("spawn"), initializer=_worker_start) as pool:
+        seen = list(pool.map(cores_seen, range(8)))
     for own, child, renderers in seen:
         assert len(own) == 1 and child == own and renderers == "1"
-    if len(cores) >= 2:
-        assert {own[0] for own, _, _ in seen} <= set(cores[:2])
+    assert len({own[0] for own, _, _ in seen}) == 2, "the two workers hold two different cores"
 
 
-def cores_seen_by_a_busy_worker(_index: int) -> tuple[list[int], list[int], str | None]:
-    import time
-
-    time.sleep(0.2)                               # both workers get tasks
-    return cores_seen()
+@pytest.mark.skipif(len(available_cores()) < 2, reason="one core: nothing to share out")
+def test_a_second_set_at_the_same_time_takes_another_core_and_a_core_is_let_go_after():
+    mine = claim_a_core()                         # as a worker of another set running now holds it
+    assert mine == available_cores()[0]
+    try:
+        with ProcessPoolExecutor(1, mp_context=get_context("spawn"), initializer=_worker_start) as pool:
+            [(other, _, _)] = list(pool.map(cores_seen, range(1)))
+        assert len(other) == 1 and other != [mine], "a worker does not take a core another holds"
+    finally:
+        release_core(mine)
+    with ProcessPoolExecutor(1, mp_context=get_context("spawn"), initializer=_worker_start) as pool:
+        [(after, _, _)] = list(pool.map(cores_seen, range(1)))
+    assert after == [mine], "once let go, the first core is free again"
 
 
 @pytest.mark.skipif(shutil.which("festival") is None, reason="Festival is not installed")
