@@ -201,3 +201,15 @@ def either(options: tuple[str, ...]) -> str:
     '.obj, .ply or .npz'
     """
     return options[0] if len(options) == 1 else ", ".join(options[:-1]) + " or " + options[-1]
+
+
+def read_text_file(path: str) -> str:
+    """The text of a UTF-8 file named on the command line (``--file F``), or one located error line."""
+    from engine.formats.text_files import read_bounded_text
+
+    try:
+        return read_bounded_text(path, error=UserError, what="text")
+    except OSError as exc:
+        raise UserError(f"cannot read the text: {exc.strerror or exc}", file=path) from None
+    except UnicodeDecodeError:
+        raise UserError("the text file is not UTF-8", file=path) from None

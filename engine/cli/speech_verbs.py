@@ -17,11 +17,11 @@ from engine.cli.common import (
     add_model_option,
     frame_rate,
     load_model_argument,
+    read_text_file,
     seed,
     size,
 )
 from engine.errors import UserError
-from engine.formats.text_files import read_bounded_text
 
 OUTPUT_SUFFIXES = (".mp4", ".wav", ".xml")
 #: The table options, in the order the old verb checked them: each is a kind of speech file.
@@ -143,10 +143,5 @@ def _text(args: argparse.Namespace) -> tuple[str | None, str]:
             raise UserError("--festival applies to synthesis; a recording speaks with its own voice")
     if args.file is None:
         return args.text, "<text>"
-    try:
-        return read_bounded_text(args.file, error=UserError, what="text"), args.file
-    except OSError as exc:
-        raise UserError(f"cannot read the text: {exc.strerror or exc}", file=args.file) from None
-    except UnicodeDecodeError:
-        raise UserError("the text file is not UTF-8", file=args.file) from None
+    return read_text_file(args.file), args.file
 

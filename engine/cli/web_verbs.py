@@ -13,9 +13,15 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from engine.cli.common import add_library_option, add_model_option, frame_rate, load_model_argument, size
+from engine.cli.common import (
+    add_library_option,
+    add_model_option,
+    frame_rate,
+    load_model_argument,
+    read_text_file,
+    size,
+)
 from engine.errors import UserError
-from engine.formats.text_files import read_bounded_text
 
 
 def add_verbs(verbs: Any) -> None:
@@ -92,9 +98,4 @@ def _text(args: argparse.Namespace) -> tuple[str, str]:
         return args.say, "<text>"
     if args.file is None:
         raise UserError("nothing to play: give --say TEXT, --file F, --tracks CSV --audio WAV or --stimuli OUTDIR")
-    try:
-        return read_bounded_text(args.file, error=UserError, what="text"), args.file
-    except OSError as exc:
-        raise UserError(f"cannot read the text: {exc.strerror or exc}", file=args.file) from None
-    except UnicodeDecodeError:
-        raise UserError("the text file is not UTF-8", file=args.file) from None
+    return read_text_file(args.file), args.file
