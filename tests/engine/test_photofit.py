@@ -61,15 +61,16 @@ def pattern(size=1024):
     return np.clip(np.stack(rgb, axis=-1), 0, 255).astype(np.uint8)
 
 
-@pytest.fixture(scope="module")
-def synthetic():
-    truth = make_identity_head(Identity(TRUE_IDENTITY))
-    _, _, polygons = skin_triangles(truth)
-    face_image = np.full(len(cell_sizes(truth.faces)), -1)
+def skin_face_image(model):
+    """Which image each polygon shows: 0 on the skin, -1 (its part's colour) elsewhere."""
+    _, _, polygons = skin_triangles(model)
+    face_image = np.full(len(cell_sizes(model.faces)), -1)
     face_image[np.unique(polygons)] = 0
-    truth.texture = ModelTexture(truth.texture.corner_uv, [TextureImage("pattern", pattern())], face_image)
-    truth.vertex_colors = truth.vertex_colors.copy()
-    truth.vertex_colors[np.all(truth.vertex_colors == iris_colour_of(truth), axis=1)] = TRUE_IRIS
+    return face_image
+
+
+def photographed(truth):
+    """Front and side pictures of ``truth`` (rendered) and its landmarks in them, with NOISE_PX of noise."""
     rng = np.random.default_rng(19)
     photos, points = {}, {}
     for view in ("front", "side"):
@@ -78,6 +79,17 @@ def synthetic():
         # the side photograph shows the subject's left (+X) and the midline
         ids = [k for k in sorted(truth.landmarks) if view == "front" or truth.vertices[truth.landmarks[k], 0] > -3]
         points[view] = {k: tuple(pixels[truth.landmarks[k]] + rng.normal(0, NOISE_PX, 2)) for k in ids}
+    return photos, points
+
+
+@pytest.fixture(scope="module")
+def synthetic():
+    truth = make_identity_head(Identity(TRUE_IDENTITY))
+    truth.texture = ModelTexture(truth.texture.corner_uv, [TextureImage("pattern", pattern())],
+                                 skin_face_image(truth))
+    truth.vertex_colors = truth.vertex_colors.copy()
+    truth.vertex_colors[np.all(truth.vertex_colors == iris_colour_of(truth), axis=1)] = TRUE_IRIS
+    photos, points = photographed(truth)
     landmark_points = truth.vertices[list(truth.landmarks.values())]
     distance = np.linalg.norm(truth.vertices[:, None] - landmark_points[None], axis=2).min(axis=1)
     face = (truth.vertex_part == truth.parts.index("skin")) & (distance < FACE_RADIUS)

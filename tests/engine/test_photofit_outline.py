@@ -21,14 +21,12 @@ from skimage import data
 from engine.formats.model_files import load_model
 from engine.identity import Identity, make_identity_head
 from engine.identity.carry_over import similarity
-from engine.model.cells import cell_sizes
 from engine.model.texture import ModelTexture, TextureImage
-from engine.outputs.render import render_model
 from engine.photofit.outline import SkinColour, face_skin, outline_moves, outline_vertices
 from engine.photofit.shape import fit_shape
 from engine.photofit.silhouette import foreground
 from engine.photofit.texture import all_triangles, skin_triangles, vertex_normals
-from tests.engine.test_photofit import NOISE_PX, PHOTO_SIZE, TRUE_IDENTITY, project
+from tests.engine.test_photofit import NOISE_PX, TRUE_IDENTITY, photographed, skin_face_image
 
 pytestmark = pytest.mark.slow
 
@@ -56,21 +54,13 @@ def hair_polygons(truth):
 
 def make_synthetic(with_hair):
     truth = make_identity_head(Identity(TRUE_IDENTITY))
-    _, _, polygons = skin_triangles(truth)
-    face_image = np.full(len(cell_sizes(truth.faces)), -1)
-    face_image[np.unique(polygons)] = 0
+    face_image = skin_face_image(truth)
     images = [TextureImage("skin", skin_pattern())]
     if with_hair:
         face_image[hair_polygons(truth)] = 1
         images.append(TextureImage("hair", skin_pattern(colour=HAIR)))
     truth.texture = ModelTexture(truth.texture.corner_uv, images, face_image)
-    rng = np.random.default_rng(19)
-    photos, points = {}, {}
-    for view in ("front", "side"):
-        photos[view] = render_model(truth, view=view, size=PHOTO_SIZE)
-        pixels = project(truth, view, *PHOTO_SIZE)
-        ids = [k for k in sorted(truth.landmarks) if view == "front" or truth.vertices[truth.landmarks[k], 0] > -3]
-        points[view] = {k: tuple(pixels[truth.landmarks[k]] + rng.normal(0, NOISE_PX, 2)) for k in ids}
+    photos, points = photographed(truth)
     return truth, photos, points
 
 

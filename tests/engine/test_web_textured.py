@@ -18,9 +18,9 @@ import pytest
 
 from engine.model.texture import ModelTexture, TextureImage
 from engine.outputs.render import render_model
-from engine.photofit.texture import skin_triangles
 from engine.speech.say import speak
 from engine.web.site import write_speech_site
+from tests.engine.test_photofit import skin_face_image
 from tests.web_browser import CHROMIUM, Browser, served
 
 pytestmark = [pytest.mark.slow,
@@ -42,10 +42,8 @@ def ramp_image(flipped: bool = False) -> np.ndarray:
 
 def textured(head, pixels: np.ndarray):
     model = head.copy()
-    _, _, polygons = skin_triangles(model)
-    face_image = np.full(len(model.texture.face_image), -1, dtype=np.int64)
-    face_image[np.unique(polygons)] = 0
-    model.texture = ModelTexture(model.texture.corner_uv.copy(), [TextureImage("ramp", pixels)], face_image)
+    model.texture = ModelTexture(model.texture.corner_uv.copy(), [TextureImage("ramp", pixels)],
+                                 skin_face_image(model))
     return model
 
 
