@@ -209,19 +209,24 @@ def test_the_data_are_shown_as_csv_at_the_end(run_through):
     assert json.loads(shown[0]["word_onsets"])[0]["word"]
 
 
-NO_GESTURE_PAGE = """<!doctype html>
-<html lang="en"><head><meta charset="utf-8"><title>a trial first</title><link rel="icon" href="data:,">
+def jspsych_page(title: str, script: str) -> str:
+    """A page of the site running ``script`` with jsPsych and the plugin loaded."""
+    return f"""<!doctype html>
+<html lang="en"><head><meta charset="utf-8"><title>{title}</title><link rel="icon" href="data:,">
 <link rel="stylesheet" href="jspsych/css/jspsych.css">
 <script type="importmap">
-{"imports": {"three": "./three/build/three.module.min.js", "three/addons/": "./three/examples/jsm/"}}
+{{"imports": {{"three": "./three/build/three.module.min.js", "three/addons/": "./three/examples/jsm/"}}}}
 </script>
 <script src="jspsych/dist/index.browser.min.js"></script>
 <script src="plugin-artificial-person.js"></script>
 </head><body><script>
-const jsPsych = initJsPsych();
-jsPsych.run([{ type: jsPsychArtificialPerson, stimulus: "0001", choices: ["f"], trial_ends_after_stimulus: true }]);
+{script}
 </script></body></html>
 """
+
+
+NO_GESTURE_PAGE = jspsych_page("a trial first", """const jsPsych = initJsPsych();
+jsPsych.run([{ type: jsPsychArtificialPerson, stimulus: "0001", choices: ["f"], trial_ends_after_stimulus: true }]);""")
 
 
 def _click(page, selector: str) -> None:
@@ -300,23 +305,12 @@ def test_the_plugin_and_jspsych_are_package_data():
     assert PLUGIN in needed and needed <= shipped, sorted(str(p) for p in needed - shipped)
 
 
-OPTIONS_PAGE = """<!doctype html>
-<html lang="en"><head><meta charset="utf-8"><title>the plugin's options</title><link rel="icon" href="data:,">
-<link rel="stylesheet" href="jspsych/css/jspsych.css">
-<script type="importmap">
-{"imports": {"three": "./three/build/three.module.min.js", "three/addons/": "./three/examples/jsm/"}}
-</script>
-<script src="jspsych/dist/index.browser.min.js"></script>
-<script src="plugin-artificial-person.js"></script>
-</head><body><script>
-const jsPsych = initJsPsych();
+OPTIONS_PAGE = jspsych_page("the plugin's options", """const jsPsych = initJsPsych();
 jsPsych.run([
   { type: jsPsychArtificialPerson, stimulus: "0001", choices: "NO_KEYS", trial_duration: 600 },
   { type: jsPsychArtificialPerson, stimulus: "0003", choices: ["f"], response_ends_trial: false },
   { type: jsPsychArtificialPerson, stimulus: "no-such-stimulus" },
-]);
-</script></body></html>
-"""
+]);""")
 
 
 @pytest.mark.slow
