@@ -35,17 +35,24 @@ FIT_TIMEOUT_MS = 300_000              # the fit on a loaded 2-core machine; norm
 SCREENSHOTS = Path(__file__).resolve().parents[2] / "docs" / "images" / "photofit"
 
 
+def write_photographs(folder, head, size, decimals=None):
+    """Front and side PNGs of ``head`` at ``size`` in ``folder``, and points.json with its landmarks' true pixels
+    (rounded to ``decimals`` when given); returns the points."""
+    points = {}
+    for view in ("front", "side"):
+        Image.fromarray(render_model(head, view=view, size=size)).save(folder / f"{view}.png")
+        pixels = project(head, view, *size)
+        points[view] = {k: [float(c) if decimals is None else round(float(c), decimals)
+                            for c in pixels[head.landmarks[k]]] for k in visible_landmarks(head, view)}
+    (folder / "points.json").write_text(json.dumps(points))
+    return points
+
+
 @pytest.fixture(scope="module")
 def photographs(tmp_path_factory, head):
     """Front and side PNGs of the default head, and POINTS.json with its landmarks' true pixels."""
     folder = tmp_path_factory.mktemp("photographs")
-    points = {}
-    for view in ("front", "side"):
-        Image.fromarray(render_model(head, view=view, size=PHOTO_SIZE)).save(folder / f"{view}.png")
-        pixels = project(head, view, *PHOTO_SIZE)
-        points[view] = {k: [round(float(c), 2) for c in pixels[head.landmarks[k]]]
-                        for k in visible_landmarks(head, view)}
-    (folder / "points.json").write_text(json.dumps(points))
+    points = write_photographs(folder, head, PHOTO_SIZE, decimals=2)
     (folder / "front-points.json").write_text(json.dumps({"front": points["front"]}))
     return folder
 

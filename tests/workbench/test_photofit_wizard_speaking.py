@@ -10,26 +10,22 @@ begun. No assertion reads a clock.
 
 from __future__ import annotations
 
-import json
 import os
 
 import numpy as np
 import pytest
-from PIL import Image
 from PySide6.QtCore import Qt, QTimer
 from PySide6.QtWidgets import QWizard
 
-from engine.outputs.render import render_model
-from engine.photofit.initial_points import visible_landmarks
 from engine.speech.festival import SynthesisCancelled
 from tests.engine.test_long_speech import LONG_TEXT, alive, festival_children, wait_for
-from tests.engine.test_photofit import project
 from tests.workbench.test_photofit_wizard import (  # noqa: F401  (fixtures)
     FIT_TIMEOUT_MS,
     head_window,
     open_wizard,
     photographs,
     wait_for_jobs,
+    write_photographs,
 )
 from workbench.photofit_wizard_fit import FitStopped
 
@@ -41,12 +37,7 @@ QUESTIONS_BEFORE_STOP = 10               # the texture step asks hundreds of tim
 def large_photographs(tmp_path_factory, head):
     """Front and side PNGs of the default head at 2 megapixels, and POINTS.json with the true pixels."""
     folder = tmp_path_factory.mktemp("large")
-    points = {}
-    for view in ("front", "side"):
-        Image.fromarray(render_model(head, view=view, size=TWO_MEGAPIXELS)).save(folder / f"{view}.png")
-        pixels = project(head, view, *TWO_MEGAPIXELS)
-        points[view] = {k: [float(c) for c in pixels[head.landmarks[k]]] for k in visible_landmarks(head, view)}
-    (folder / "points.json").write_text(json.dumps(points))
+    write_photographs(folder, head, TWO_MEGAPIXELS)
     return folder
 
 
