@@ -7,8 +7,10 @@ or could crash it; no check in Python can stop that once the call is made.
 file holds — reached through hard links, within the size bound of
 :mod:`engine.formats.hdf5_reading` — in a child process with a time limit;
 only a file the child read completely is then read here. Forked from this
-process where that is safe (one thread), else a fresh interpreter running
-this file, which needs nothing but h5py and numpy.
+process where that is safe (one thread), else forked by a helper
+interpreter that does nothing else (:mod:`engine.formats.hdf5_probe_helper`),
+or, where no helper can be had, read by a fresh interpreter running this
+file, which needs nothing but h5py and numpy.
 
 The time limit is ``AP_HDF5_PROBE_SECONDS`` if set, else 10 s plus 1 s per
 20 MB of file.
@@ -19,6 +21,7 @@ from __future__ import annotations
 import contextlib
 import faulthandler
 import gc
+import json
 import math
 import os
 import select
@@ -33,6 +36,7 @@ from pathlib import Path
 import h5py
 import numpy as np
 
+from engine.formats import hdf5_probe_helper
 from engine.processes import die_with_parent, with_parent_death_signal
 
 #: Objects (groups and datasets) a probe visits at most: our files hold a few hundred.
@@ -93,7 +97,21 @@ def probe_in_child(path: str | Path, budget: int, allowed_filters: frozenset[int
     if hasattr(os, "fork") and _one_thread():
         _probe_forked(path, budget, allowed_filters, seconds)
     else:
-        _probe_spawned(path, budget, allowed_filters, seconds)
+        _probe_in_helper(path, budget, allowed_filters, seconds)
+
+
+def _probe_in_helper(path: Path, budget: int, allowed_filters: frozenset[int], seconds: float) -> None:
+    request = {"path": os.path.abspath(path), "budget": budget, "filters": sorted(allowed_filters),
+               "seconds": seconds}
+    answer = hdf5_probe_helper.ask_helper(request, seconds + hdf5_probe_helper.ANSWER_MARGIN)
+    if answer is None:                   # no helper to be had: this file the old way
+        probe_spawned(path, budget, allowed_filters, seconds)
+    elif "failed" in answer:
+        raise ProbeFailed(str(answer["failed"]))
+    elif "error" in answer:
+        raise OSError(str(answer["error"]))
+    else:
+        judge(int(answer["status"]), str(answer["message"]))
 
 
 def _one_thread() -> bool:
@@ -111,6 +129,11 @@ def _one_thread() -> bool:
 
 
 def _probe_forked(path: Path, budget: int, allowed_filters: frozenset[int], seconds: float) -> None:
+    judge(*read_in_fork(path, budget, allowed_filters, seconds))
+
+
+def read_in_fork(path: Path, budget: int, allowed_filters: frozenset[int], seconds: float) -> tuple[int, str]:
+    """Fork a reader of ``path``: its wait status and its message; :class:`ProbeFailed` if it hangs."""
     read_end, write_end = os.pipe()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", DeprecationWarning)       # Python 3.12 warns of the idle BLAS threads
@@ -144,7 +167,7 @@ def _probe_forked(path: Path, budget: int, allowed_filters: frozenset[int], seco
     finally:
         os.close(read_end)
     _, status = os.waitpid(pid, 0)
-    _judge(status, message.decode("utf-8", "replace"))
+    return status, message.decode("utf-8", "replace")
 
 
 def _read_until_closed(fd: int, seconds: float) -> bytes:
@@ -163,7 +186,7 @@ def _read_until_closed(fd: int, seconds: float) -> bytes:
         chunks.append(chunk)
 
 
-def _probe_spawned(path: Path, budget: int, allowed_filters: frozenset[int], seconds: float) -> None:
+def probe_spawned(path: Path, budget: int, allowed_filters: frozenset[int], seconds: float) -> None:
     command = [sys.executable, "-I", str(Path(__file__).resolve()), str(path), str(budget),
                ",".join(map(str, sorted(allowed_filters)))]
     try:
@@ -173,15 +196,41 @@ def _probe_spawned(path: Path, budget: int, allowed_filters: frozenset[int], sec
     status = done.returncode
     wait_status = (-status) if status < 0 else (status << 8)        # as os.waitpid reports it
     last_lines = done.stderr.decode("utf-8", "replace").strip().splitlines()[-1:]
-    _judge(wait_status, last_lines[0] if last_lines else "")
+    judge(wait_status, last_lines[0] if last_lines else "")
 
 
-def _judge(wait_status: int, message: str) -> None:
+def judge(wait_status: int, message: str) -> None:
     if os.WIFSIGNALED(wait_status):
         raise ProbeFailed(f"the HDF5 library crashed reading it (signal {os.WTERMSIG(wait_status)})")
     if os.WEXITSTATUS(wait_status) != 0:
         raise ProbeFailed(" ".join(message.split())[:300] or "the HDF5 library failed reading it")
 
 
+def serve_as_helper() -> None:
+    """The helper's loop (:mod:`engine.formats.hdf5_probe_helper`): a request a line from stdin, an answer a
+    line to stdout, until stdin closes."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)     # Ctrl-C is for the program we serve; it closes our pipe
+    for line in sys.stdin.buffer:
+        try:
+            request = json.loads(line)
+            status, message = read_in_fork(Path(request["path"]), int(request["budget"]),
+                                           frozenset(int(f) for f in request["filters"]), float(request["seconds"]))
+            answer: dict[str, object] = {"status": status, "message": message}
+        except ProbeFailed as exc:
+            answer = {"failed": exc.reason}
+        except (ValueError, KeyError, TypeError) as exc:
+            answer = {"error": f"a request the helper cannot read ({exc})"}
+        except OSError as exc:
+            answer = {"error": f"no process to read the file in ({exc.strerror or exc})"}
+        try:
+            sys.stdout.buffer.write(json.dumps(answer).encode() + b"\n")
+            sys.stdout.buffer.flush()
+        except OSError:                  # the program we serve has gone
+            return
+
+
 if __name__ == "__main__":
-    read_everything(sys.argv[1], int(sys.argv[2]), frozenset(int(c) for c in sys.argv[3].split(",") if c))
+    if sys.argv[1:] == ["--serve"]:
+        serve_as_helper()
+    else:
+        read_everything(sys.argv[1], int(sys.argv[2]), frozenset(int(c) for c in sys.argv[3].split(",") if c))

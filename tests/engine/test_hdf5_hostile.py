@@ -307,11 +307,15 @@ def test_a_crash_of_the_library_while_reading_is_the_formats_error(tmp_path, mon
     refuse(KINDS[0], written, "crashed", f"signal {int(signal.SIGSEGV)}")
 
 
-def test_the_probe_in_a_fresh_interpreter_reads_good_files_and_stops_hanging_ones(tmp_path, monkeypatch):
-    """Where forking is not safe (threads, a Qt application) the file is read by a new interpreter."""
-    from engine.formats import hdf5_probe
+@pytest.mark.parametrize("where", ["helper", "fresh interpreter"])
+def test_the_probe_away_from_here_reads_good_files_and_stops_hanging_ones(tmp_path, monkeypatch, where):
+    """Where forking is not safe (threads, a Qt application) the file is read by a reader the helper
+    forks, or, where no helper can be had, by a new interpreter."""
+    from engine.formats import hdf5_probe, hdf5_probe_helper
 
     monkeypatch.setattr(hdf5_probe, "_one_thread", lambda: False)
+    if where == "fresh interpreter":
+        monkeypatch.setattr(hdf5_probe_helper, "ask_helper", lambda *_: None)
     written = save_model(small_model(), tmp_path / "m.xml")
     assert load_model(written).n_vertices == 6
     data = bytearray(written.with_suffix(".h5").read_bytes())
