@@ -4,6 +4,7 @@
 >>> main(["web-export", "--say", "Pappa osti omenoita.", "-o", "site"])                    # doctest: +SKIP
 >>> main(["web-export", "--tracks", "t.csv", "--audio", "t.wav", "-o", "site"])           # doctest: +SKIP
 >>> main(["web-export", "--stimuli", "set", "-o", "site"])                                # doctest: +SKIP
+>>> main(["web-export", "--stimuli", "set", "--design", "identities.toml", "-o", "site"])   # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -34,6 +35,9 @@ def add_verbs(verbs: Any) -> None:
     source.add_argument("--tracks", metavar="CSV", help="play a tracks CSV (time_ms,<parameter>,...) ...")
     source.add_argument("--stimuli", metavar="OUTDIR", help="every stimulus of a set made by 'stimuli' (with the "
                                                             "kinds tracks and wav): index.html?stimulus=ID")
+    p.add_argument("--design", metavar="DESIGN.toml", help="with --stimuli: the design the set was made from, "
+                                                           "for a set with model or identity factors (each "
+                                                           "stimulus's head is made again from it)")
     p.add_argument("--audio", metavar="WAV", help="... with this audio (PCM WAV, copied unchanged)")
     p.add_argument("--phones", metavar="CSV", help="... and the words of this phones CSV for the word events")
     p.add_argument("--voice", default=None, metavar="V", help="Festival voice (default suo_fi_lj_diphone)")
@@ -59,11 +63,23 @@ def run_web_export(args: argparse.Namespace) -> int:
         for option in ("audio", "phones", "voice"):
             if getattr(args, option) is not None:
                 raise UserError(f"--{option} does not go with --stimuli (the set holds its own)")
-        sizes = write_stimuli_site(load_model_argument(args.model), args.stimuli, out, size=args.size)
+        heads = None
+        if args.design is not None:
+            if args.model is not None:
+                raise UserError("-m does not go with --design (the design names each stimulus's head)")
+            from engine.stimuli.design import load_design
+            from engine.stimuli.set_heads import DesignHeads
+
+            heads = DesignHeads(load_design(args.design), args.stimuli)
+        model = load_model_argument(args.model) if heads is None else None
+        sizes = write_stimuli_site(model, args.stimuli, out, size=args.size, heads=heads)
         count = sum(1 for name in sizes if name.endswith(".json") and name.startswith("stimuli/"))
-        print(f"wrote {out}/: {count} stimuli, head.glb ({sizes['head.glb'] / 1e3:.0f} kB); "
-              f"{sum(sizes.values()) / 1e6:.2f} MB in all")
+        glbs = sorted(name for name in sizes if name.endswith(".glb"))
+        print(f"wrote {out}/: {count} stimuli, {len(glbs)} head{'s' if len(glbs) > 1 else ''} "
+              f"({sum(sizes[name] for name in glbs) / 1e3:.0f} kB); {sum(sizes.values()) / 1e6:.2f} MB in all")
         return 0
+    if args.design is not None:
+        raise UserError("--design goes with --stimuli OUTDIR")
     if args.tracks is not None:
         if args.audio is None:
             raise UserError("--tracks needs --audio WAV (the sound the tracks go with)")

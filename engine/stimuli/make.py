@@ -29,7 +29,6 @@ import numpy as np
 from engine.commands import Library, load_library, translate
 from engine.commands.command_files import HighLevelCommand
 from engine.formats.atomic import atomic_files, atomic_write_text
-from engine.formats.model_files import load_model
 from engine.model.model import Model
 from engine.outputs.png_file import write_png
 from engine.outputs.video_writer import check_video, encode_video
@@ -44,6 +43,7 @@ from engine.stimuli.audio import (
     speech_mask,
 )
 from engine.stimuli.design import Design, DesignError, Stimulus
+from engine.stimuli.heads import stimulus_head
 from engine.timeline.timeline import Timeline
 from engine.timeline.tracks import tracks_csv_text
 
@@ -59,7 +59,7 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     """Make every file of ``stimulus`` in ``outdir`` and return (and write) its record."""
     outdir = Path(outdir)
     levels = stimulus.levels
-    model = _head(design, levels)
+    model = stimulus_head(design, levels)
     name = f"{design.path.name}: stimulus {stimulus.id}"
     if "audio" in levels:               # a recorded voice: its audio unchanged, the face from its labels
         from engine.speech.recorded import speak_recording
@@ -338,41 +338,6 @@ def _still(model: Model, timeline: Timeline, at_ms: float, design: Design, desti
     with FrameRenderer(model, size=design.output.size, view=design.output.view) as renderer:
         image = renderer.render(model.deform(values))
     write_png(destination, image)
-
-
-def _head(design: Design, levels: dict[str, Any]) -> Model:
-    """The stimulus's head: its ``model`` file, or the head of its ``identity`` (at ``identity_morph`` % of the
-    way to ``identity_b``), made on the ``model`` (default: the default head)."""
-    base = str(design.extra_files[levels["model"]]) if "model" in levels else ""
-    if "identity" not in levels and "identity_b" not in levels:
-        return _model(base)
-    ends = [_identity_values(design, levels.get(key, {})) for key in ("identity", "identity_b")]
-    share = float(levels.get("identity_morph", 0.0)) / 100.0
-    return _identity_head(base, ends[0], ends[1], share)
-
-
-def _identity_values(design: Design, level: Any) -> tuple[tuple[str, float], ...]:
-    """An identity level as sorted (name, value) pairs: a table, or the identity of a model file."""
-    if isinstance(level, str):
-        record = _model(str(design.extra_files[level])).identity
-        return tuple(sorted(record.values.items())) if record is not None else ()
-    return tuple(sorted((str(k), float(v)) for k, v in dict(level).items()))
-
-
-@functools.lru_cache(maxsize=16)
-def _identity_head(base: str, a: tuple[tuple[str, float], ...], b: tuple[tuple[str, float], ...],
-                   share: float) -> Model:
-    """An identity's head per worker process, made once (engine.identity: the rig carried over)."""
-    from engine.identity import Identity, make_identity_head, morph
-
-    identity = morph(Identity(dict(a)), Identity(dict(b)), share) if b or share else Identity(dict(a))
-    return make_identity_head(identity, _model(base) if base else None)
-
-
-@functools.lru_cache(maxsize=8)
-def _model(path: str) -> Model:
-    """A model per worker process, loaded once (the default head for ``""``)."""
-    return load_model(path or None)
 
 
 @functools.lru_cache(maxsize=1)

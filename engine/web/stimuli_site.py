@@ -1,4 +1,4 @@
-"""The site of a whole stimulus set (``web-export --stimuli OUTDIR``): one head, one page, every stimulus.
+"""The site of a whole stimulus set (``web-export --stimuli OUTDIR``): one page, every stimulus, every head.
 
 A set made by ``artificial-person stimuli`` with the kinds ``tracks`` and ``wav`` (and, for word
 events with their ends, ``phones``) holds every stimulus's performance on its own clip's clock —
@@ -8,11 +8,13 @@ the expression, the audio–visual offset, the noise already in. The site keeps 
 ``stimuli/ID.json``         the stimulus's animation (as ``animation.json`` of one sentence)
 ``stimuli/ID.wav``          its sound, copied unchanged from the set
 ``stimuli.json``            the list: each stimulus's id, its manifest row, its files
-``head.glb``                one model with every morph target any stimulus moves
+``head.glb``                the head, with every morph target any of its stimuli moves
+``head-2.glb`` …            the other heads of a set with ``model`` or identity factors
 =========================  =============================================================
 
 ``index.html?stimulus=ID`` plays one (``&t=MS``: paused at MS); ``index.html`` plays the first.
-The set's stimuli must share one head: sets with ``model`` or identity factors are refused.
+A set whose stimuli have heads of their own is written with the heads made again from its
+design (``web-export --stimuli OUTDIR --design DESIGN.toml``: engine.stimuli.set_heads).
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ from __future__ import annotations
 import csv
 import io
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -44,11 +47,14 @@ from engine.web.web_model import morph_parameters, web_glb
 if TYPE_CHECKING:
     from engine.model import Model
 
-__all__ = ["HEAD_FACTORS", "STIMULI_FORMAT", "ListedStimulus", "read_set_listing", "write_stimuli_site"]
+__all__ = ["HEAD_FACTORS", "STIMULI_FORMAT", "HeadsOf", "ListedStimulus", "read_set_listing", "write_stimuli_site"]
 
 STIMULI_FORMAT = "artificial-person-web-stimuli"
-#: Factors that give stimuli heads of their own, which one site does not hold yet.
+#: Factors that give stimuli heads of their own (as engine.stimuli.heads.HEAD_FACTORS, which this layer
+#: does not import): each head is made again from the design (``heads``).
 HEAD_FACTORS = ("model", "identity", "identity_b", "identity_morph")
+#: A stimulus id → (the key of its head, the head); stimuli with one key share one head.
+HeadsOf = Callable[[str], "tuple[str, Model]"]
 _ID = re.compile(r"^[A-Za-z0-9_-]+$")
 
 
@@ -79,27 +85,53 @@ def read_set_listing(set_folder: str | Path) -> list[ListedStimulus]:
     return listed
 
 
-def write_stimuli_site(model: Model, set_folder: str | Path, out: str | Path,
-                       size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
-    """Write the site of the stimulus set in ``set_folder`` (its ``manifest.csv``) into ``out``."""
+def write_stimuli_site(model: Model | None, set_folder: str | Path, out: str | Path,
+                       size: tuple[int, int] = DEFAULT_SIZE, heads: HeadsOf | None = None) -> dict[str, int]:
+    """Write the site of the stimulus set in ``set_folder`` (its ``manifest.csv``) into ``out``.
+
+    Every stimulus wears ``model``, unless ``heads`` (stimulus id → (key, model); one key, one head) gives
+    each its own (``model`` may then be None): every head is in the site, the first as ``head.glb``, the
+    next ``head-2.glb`` … A set whose manifest has head factors needs ``heads``."""
+    if heads is None and model is None:
+        raise ValueError("a model for every stimulus, or heads for each")
     set_folder, out = Path(set_folder), Path(out)
     listing = read_set_listing(set_folder)
+    if heads is None:
+        _refuse_heads_of_their_own(listing, set_folder / "manifest.csv")
     check_folder(out)
-    animations, files, listed = [], {}, []
+    groups: dict[str, tuple[Model, list[dict[str, Any]]]] = {}
+    files, listed = {}, []
     for stimulus in listing:
-        animation = _stimulus_animation(model, stimulus, size)
-        animation.update(model="../head.glb", audio=f"{stimulus.id}.wav", stimulus=stimulus.id)
-        animations.append(animation)
+        key, head = heads(stimulus.id) if heads is not None else ("", model)
+        assert head is not None
+        group = groups.setdefault(key, (head, []))
+        number = list(groups).index(key) + 1
+        glb_name = "head.glb" if number == 1 else f"head-{number}.glb"
+        animation = _stimulus_animation(group[0], stimulus, size)
+        animation.update(model=f"../{glb_name}", audio=f"{stimulus.id}.wav", stimulus=stimulus.id)
+        group[1].append(animation)
         files[f"stimuli/{stimulus.id}.wav"] = stimulus.audio.read_bytes()
         listed.append({"id": stimulus.id, "animation": f"stimuli/{stimulus.id}.json",
-                       "audio": f"stimuli/{stimulus.id}.wav", "duration_ms": animation["duration_ms"],
-                       "manifest": stimulus.row})
-    glb = web_glb(model, morph_parameters(model, shared_targets(animations)))
-    for animation in animations:
-        files[f"stimuli/{animation['stimulus']}.json"] = json_bytes(animation)
+                       "audio": f"stimuli/{stimulus.id}.wav", "model": glb_name,
+                       "duration_ms": animation["duration_ms"], "manifest": stimulus.row})
+    glbs = [web_glb(head, morph_parameters(head, shared_targets(animations))) for head, animations in groups.values()]
+    for number, glb in enumerate(glbs[1:], start=2):
+        files[f"head-{number}.glb"] = glb
+    for _, animations in groups.values():
+        for animation in animations:
+            files[f"stimuli/{animation['stimulus']}.json"] = json_bytes(animation)
     files["stimuli.json"] = json_bytes({"format": STIMULI_FORMAT, "version": 1, "set": str(set_folder.name),
-                                        "stimuli": listed})
-    return write_folder(out, glb, files, size, listed[0]["animation"])
+                                        "heads": len(glbs), "stimuli": listed})
+    return write_folder(out, glbs[0], files, size, listed[0]["animation"])
+
+
+def _refuse_heads_of_their_own(listing: list[ListedStimulus], manifest: Path) -> None:
+    for stimulus in listing:
+        factors = [f for f in HEAD_FACTORS if stimulus.row.get(f)]
+        if factors:
+            raise UserError(f"stimuli with heads of their own (factor '{factors[0]}'): give --design with the design "
+                            "the set was made from, so that each head can be made again", file=manifest,
+                            line=stimulus.line)
 
 
 def _manifest_rows(manifest: Path) -> list[tuple[int, dict[str, str]]]:
@@ -132,10 +164,6 @@ def _checked_rows(reader: csv.DictReader[str], manifest: Path) -> list[tuple[int
             raise UserError("a row with more or fewer cells than the header", file=manifest, line=line)
         if not _ID.match(row["id"]):
             raise UserError(f"stimulus id {row['id']!r} is not letters, digits, '-' or '_'", file=manifest, line=line)
-        heads = [f for f in HEAD_FACTORS if row.get(f)]
-        if heads:
-            raise UserError(f"stimuli with heads of their own (factor '{heads[0]}') are not supported by web-export "
-                            "yet: one site holds one head", file=manifest, line=line)
         rows.append((line, row))
     if not rows:
         raise UserError("the manifest lists no stimulus", file=manifest, line=1)

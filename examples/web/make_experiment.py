@@ -7,7 +7,8 @@ Steps (each one a command you could type; docs/web-jspsych.md):
 
 1. ``artificial-person stimuli DESIGN -o SET`` — unless ``SET`` already holds a set (its ``manifest.csv``);
    the design is ``examples/web/design.toml`` unless ``--design`` names another;
-2. ``artificial-person web-export --stimuli SET -o SITE`` (``-m MODEL`` passed on);
+2. ``artificial-person web-export --stimuli SET --design DESIGN -o SITE`` (each stimulus's head made again
+   from the design: identities too), or with ``-m MODEL`` instead of ``--design`` when one is given;
 3. copy into ``SITE``: ``plugin-artificial-person.js`` and ``jspsych/`` (jsPsych 8 and its keyboard plugin)
    from the installed package (``engine/web/jspsych/``, ``engine/web/vendor/jspsych/``), and this folder's
    ``experiment.html`` and ``experiment.js`` (the jsPsych experiment), ``embed.html`` and ``head-in-frame.js``
@@ -62,8 +63,8 @@ def main(argv: list[str] | None = None) -> None:
     stimulus_set = args.set or site.with_name(site.name + "-set")
     if not (stimulus_set / "manifest.csv").is_file():
         artificial_person("stimuli", args.design, "-o", stimulus_set)
-    artificial_person("web-export", *(["-m", args.model] if args.model else []), "--stimuli", stimulus_set,
-                      "-o", site)
+    heads = ["-m", args.model] if args.model else ["--design", args.design]     # the design's heads (identities)
+    artificial_person("web-export", *heads, "--stimuli", stimulus_set, "-o", site)
     add_experiment(site)
     print(f"the experiment is {site / 'experiment.html'}: serve {site} (python3 -m http.server -d {site}) "
           "and open experiment.html")

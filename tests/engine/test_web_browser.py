@@ -209,40 +209,54 @@ def test_chromium_ends_with_its_whole_process_group_whatever_happens(site):
 
 
 @pytest.fixture(scope="module")
-def stimulus_site(head, tmp_path_factory):
-    """A site of a one-stimulus set whose sound starts 200 ms after the face (``av_offset_ms = 200``)."""
+def stimulus_site(tmp_path_factory):
+    """A site of a set of two identities whose sound starts 200 ms after the face (``av_offset_ms = 200``),
+    with the heads made again from the design: (the site, each stimulus's head)."""
+    from engine.stimuli.design import load_design
+    from engine.stimuli.set_heads import DesignHeads
     from engine.web.stimuli_site import write_stimuli_site
     from tests.engine.cli_runner import run
 
     folder = tmp_path_factory.mktemp("stimuli")
     (folder / "design.toml").write_text('[factors]\ntext = ["Pappa ampui pallon."]\nav_offset_ms = [200]\n'
+                                        'identity = [{sex = 0.0, age = 30}, {sex = 1.0, age = 60, weight = 0.8}]\n'
                                         '[output]\nkinds = ["wav", "tracks", "phones"]\nfps = 30\n')
     made = run("stimuli", folder / "design.toml", "-o", folder / "set", "--workers", "1")
     assert made.returncode == 0, made.stderr
-    write_stimuli_site(head, folder / "set", folder / "site")
-    return folder / "site"
+    heads = DesignHeads(load_design(folder / "design.toml"), folder / "set")
+    write_stimuli_site(None, folder / "set", folder / "site", heads=heads)
+    return folder / "site", {stimulus: heads(stimulus)[1] for stimulus in ("0001", "0002")}
 
 
-def test_a_stimulus_of_a_set_shows_its_face_at_its_own_time(head, stimulus_site):
-    animation = json.loads((stimulus_site / "stimuli" / "0001.json").read_text())
-    listing = json.loads((stimulus_site / "stimuli.json").read_text())["stimuli"][0]["manifest"]
-    face_later = float(listing["video_start_ms"]) - float(listing["audio_start_ms"])     # -200: the face leads
-    heard = next(p for p in animation["phones"] if p["phone"] == "p:")                   # on the sound's clock
-    ms = round((heard["start_ms"] + heard["end_ms"]) / 2 + face_later, 3)               # the face's p:
-    size = (animation["camera"]["width"], animation["camera"]["height"])
-    values = _values_at(animation, ms)
-    render = render_model(head, values, size=size)
-    landmarks = head.landmark_positions(values)
-    corners = project(animation["camera"], np.array([landmarks["8.3"], landmarks["8.4"]]))
-    with served(stimulus_site) as base, Browser() as chromium:
-        page = chromium.open(f"{base}/index.html?stimulus=0001&t={ms}", size)
-        page.ready()
-        screenshot = page.screenshot(size)
-        assert page.problems() == []
-        assert outside(page.requested(), base) == []
-        assert f"{base}/stimuli/0001.json" in page.requested()
-    assert mouth_opening_px(screenshot, corners) < 1.0 and mouth_opening_px(render, corners) < 1.0
-    assert max(feature_distance_px(screenshot, render)) <= TOLERANCE_PX
-    # at the heard p:'s middle, 200 ms later, the face has moved on and the lips are apart
-    later = _values_at(animation, ms - face_later)
-    assert head.landmark_positions(later)["2.2"][1] - head.landmark_positions(later)["2.3"][1] > 1.0
+def test_each_stimulus_of_a_set_shows_its_own_face_at_its_own_time(stimulus_site):
+    site, heads = stimulus_site
+    screenshots = {}
+    with served(site) as base, Browser() as chromium:
+        for stimulus, head in heads.items():
+            animation = json.loads((site / "stimuli" / f"{stimulus}.json").read_text())
+            listed = next(s for s in json.loads((site / "stimuli.json").read_text())["stimuli"] if s["id"] == stimulus)
+            face_later = float(listed["manifest"]["video_start_ms"]) - float(listed["manifest"]["audio_start_ms"])
+            assert face_later == -200                                                  # the face leads
+            heard = next(p for p in animation["phones"] if p["phone"] == "p:")          # on the sound's clock
+            ms = round((heard["start_ms"] + heard["end_ms"]) / 2 + face_later, 3)      # the face's p:
+            size = (animation["camera"]["width"], animation["camera"]["height"])
+            values = _values_at(animation, ms)
+            render = render_model(head, values, size=size)
+            landmarks = head.landmark_positions(values)
+            corners = project(animation["camera"], np.array([landmarks["8.3"], landmarks["8.4"]]))
+            page = chromium.open(f"{base}/index.html?stimulus={stimulus}&t={ms}", size)
+            page.ready()
+            screenshot = screenshots[stimulus] = page.screenshot(size)
+            _keep(f"web-stimulus-{stimulus}-browser.jpg", screenshot)
+            assert page.problems() == []
+            assert outside(page.requested(), base) == []
+            assert f"{base}/{listed['model']}" in page.requested()
+            assert mouth_opening_px(screenshot, corners) < 1.0 and mouth_opening_px(render, corners) < 1.0
+            assert max(feature_distance_px(screenshot, render)) <= TOLERANCE_PX, stimulus
+            # at the heard p:'s middle, 200 ms later, the face has moved on and the lips are apart
+            later = head.landmark_positions(_values_at(animation, ms - face_later))
+            assert later["2.2"][1] - later["2.3"][1] > 1.0
+    first, second = (screenshots[stimulus].astype(float) for stimulus in ("0001", "0002"))
+    assert np.abs(first - second).mean() > 2.0, "two identities, two faces"
+    assert [s["model"] for s in json.loads((site / "stimuli.json").read_text())["stimuli"]] == ["head.glb",
+                                                                                                  "head-2.glb"]

@@ -167,6 +167,7 @@ def test_an_audio_file_that_is_not_a_wav_is_named(tmp_path):
     (("--tracks", "t.csv"), "--tracks needs --audio"),
     (("--say", "Hei.", "--audio", "a.wav"), "--audio goes with --tracks"),
     (("--tracks", "t.csv", "--audio", "a.wav", "--voice", "x"), "--voice applies to --say"),
+    (("--say", "Hei.", "--design", "d.toml"), "--design goes with --stimuli"),
 ])
 def test_options_that_do_not_go_together_are_refused(tmp_path, args, says):
     line = assert_user_error(run("web-export", *args, "-o", tmp_path / "site", cwd=tmp_path))
@@ -267,14 +268,76 @@ def test_a_set_without_tracks_is_refused_by_its_manifest(stimulus_set, tmp_path)
     assert line.startswith(f"error: {copy / 'manifest.csv'}:1:") and '"tracks"' in line, line
 
 
-def test_a_set_of_several_heads_is_refused_with_the_row(stimulus_set, tmp_path):
+def test_a_set_of_several_heads_needs_its_design_and_is_refused_with_the_row(stimulus_set, tmp_path):
     def with_models(text: str) -> str:
         lines = text.splitlines()
         return "\n".join([lines[0] + ",model"] + [line + ",other-head.xml" for line in lines[1:]]) + "\n"
 
     copy = _edited_set(stimulus_set, tmp_path, with_models)
     line = assert_user_error(run("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
-    assert line.startswith(f"error: {copy / 'manifest.csv'}:2:") and "'model'" in line, line
+    assert line.startswith(f"error: {copy / 'manifest.csv'}:2:") and "'model'" in line and "--design" in line, line
+
+
+IDENTITIES = """[factors]
+text = ["Pappa ampui pallon."]
+identity = [{sex = 0.0, age = 30}, {sex = 1.0, age = 60, weight = 0.8}]
+av_offset_ms = [0, 100]
+[output]
+kinds = ["wav", "tracks"]
+fps = 30
+"""
+
+
+@pytest.fixture(scope="module")
+def identity_set(tmp_path_factory):
+    folder = tmp_path_factory.mktemp("identities")
+    (folder / "design.toml").write_text(IDENTITIES)
+    made = run("stimuli", folder / "design.toml", "-o", folder / "set", "--workers", "1")
+    assert made.returncode == 0, made.stderr
+    return folder
+
+
+@pytest.mark.slow
+def test_a_set_of_identities_becomes_one_site_with_each_head(identity_set, tmp_path):
+    from engine.stimuli.design import load_design
+    from engine.stimuli.heads import stimulus_head
+
+    site = tmp_path / "site"
+    refused = assert_user_error(run("web-export", "--stimuli", identity_set / "set", "-o", site))
+    assert "factor 'identity'" in refused and "--design" in refused, refused
+    result = run("web-export", "--stimuli", identity_set / "set", "--design", identity_set / "design.toml", "-o", site)
+    assert result.returncode == 0, result.stderr
+    assert "4 stimuli, 2 heads" in result.stdout, result.stdout
+    listing = json.loads((site / "stimuli.json").read_text())
+    assert listing["heads"] == 2
+    # the design crosses identity × offset: 0001, 0002 the first identity, 0003, 0004 the second
+    assert [s["model"] for s in listing["stimuli"]] == ["head.glb", "head.glb", "head-2.glb", "head-2.glb"]
+    design = load_design(identity_set / "design.toml")
+    for stimulus, glb_name in zip(design.stimuli, ("head.glb", "head.glb", "head-2.glb", "head-2.glb"), strict=True):
+        animation = json.loads((site / "stimuli" / f"{stimulus.id}.json").read_text())
+        assert animation["model"] == f"../{glb_name}"
+        head = stimulus_head(design, stimulus.levels)
+        glb = (site / glb_name).read_bytes()
+        document = json.loads(glb[20:20 + int.from_bytes(glb[12:16], "little")])
+        data = glb[28 + int.from_bytes(glb[12:16], "little"):]
+        dense, dense_data = gltf_document(head, [], skeleton=True)
+        for packed, full in zip(document["meshes"][0]["primitives"], dense["meshes"][0]["primitives"], strict=True):
+            assert np.array_equal(_attribute(document, data, packed, "POSITION"),
+                                  _attribute(dense, dense_data, full, "POSITION")), "each head is its identity's"
+    first, second = ((site / name).read_bytes() for name in ("head.glb", "head-2.glb"))
+    assert first != second
+
+
+def test_a_design_the_set_was_not_made_from_is_refused(identity_set, tmp_path):
+    other = tmp_path / "other.toml"
+    other.write_text(IDENTITIES.replace("age = 60", "age = 61"))
+    line = assert_user_error(run("web-export", "--stimuli", identity_set / "set", "--design", other,
+                                 "-o", tmp_path / "site"))
+    assert line.startswith(f"error: {other}:") and "not the design this set was made from" in line, line
+    line = assert_user_error(run("web-export", "--stimuli", identity_set / "set", "--design",
+                                 identity_set / "design.toml", "-m", "x.xml", "-o", tmp_path / "site"))
+    assert "-m does not go with --design" in line, line
+    assert not (tmp_path / "site").exists()
 
 
 def test_a_missing_stimulus_file_is_named_with_its_row(stimulus_set, tmp_path):
