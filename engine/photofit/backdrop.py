@@ -4,7 +4,9 @@ A texel whose point on the fitted head projects onto the backdrop (the
 fitted scalp a little outside the true one, an ear's rim) must not take the
 backdrop's colour. On a plain backdrop (:func:`engine.photofit.silhouette.foreground`,
 sampled at both side edges) the person is the foreground with its holes filled
-(a highlight on the skin as pale as the backdrop is still the person); the
+(a highlight on the skin as pale as the backdrop is still the person) and
+whatever lies well inside the fitted head's outline (a whole face as pale
+as the backdrop, as in many studio portraits); the
 weight is 0 within :data:`EDGE_MARGIN` px of the backdrop, where the lens and
 anti-aliasing blend the two, and rises to 1 over :data:`FEATHER` px, so the
 photograph fades out towards its outline instead of stopping at an edge. A
@@ -30,11 +32,17 @@ EDGE_MARGIN = 1.5                  # px from the backdrop where a pixel is not u
 FEATHER = 4.0                      # px over which the weight then rises to 1
 
 
-def subject_weight(photo: np.ndarray) -> np.ndarray | None:
-    """(H, W) weights in 0 … 1 of the photograph's pixels for the texture, or None on a busy backdrop."""
+def subject_weight(photo: np.ndarray, inside: np.ndarray | None = None) -> np.ndarray | None:
+    """(H, W) weights in 0 … 1 of the photograph's pixels for the texture, or None on a busy backdrop.
+
+    ``inside`` (H, W) bool marks pixels that are the person whatever their colour: the fitted head's
+    outline in the photograph, shrunk well inside its rim (:func:`engine.photofit.texture.well_inside_head`).
+    A face as pale as the backdrop, whose skin meets the backdrop along the jaw or the neck, is no hole in
+    the foreground; without it such a face would count as backdrop and take no colour from the photograph.
+    """
     mask = foreground(photo, both_sides=True)
     if mask is None:
         return None
-    person = binary_fill_holes(mask)
+    person = binary_fill_holes(mask if inside is None else mask | inside)
     distance = distance_transform_edt(person)
     return np.asarray(np.clip((distance - EDGE_MARGIN) / FEATHER, 0.0, 1.0))

@@ -19,6 +19,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 
 import numpy as np
+from scipy.ndimage import distance_transform_edt
 
 from engine.model import Model
 from engine.model.cells import cell_sizes, cell_starts
@@ -36,6 +37,7 @@ FILL_WEIGHT = 0.04                  # weight of the fill everywhere (what no pho
 FILL_SMOOTHNESS = 1.0               # weight of each skin edge's colour difference in the fill
 IMAGE_NAME = "photo"
 ISLAND_PADDING = 4                  # texels each UV island's colours are grown outwards (no seams when filtered)
+INSIDE_MARGIN = 0.10                # of the head's width: the rim of its outline not taken as the person unasked
 
 
 def skin_triangles(model: Model) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -57,10 +59,11 @@ def skin_triangles(model: Model) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def all_triangles(model: Model) -> np.ndarray:
+    """(T, 3) vertex indices: every polygon of the model as a fan from its first corner."""
     sizes = cell_sizes(model.faces)
     starts = cell_starts(sizes)
     out = [(model.faces[s + 1], model.faces[s + 1 + k], model.faces[s + 2 + k])
-           for n, s in zip(sizes, starts, strict=True) for k in range(n - 2)]
+           for n, s in zip(sizes, starts, strict=True) for k in range(1, n - 1)]
     return np.array(out)
 
 
@@ -93,7 +96,9 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     total = np.zeros(len(points))
     colour = np.zeros((len(points), 3))
     occluders = all_triangles(model)
-    subject = {view: subject_weight(photo) for view, photo in photos.items()}
+    subject = {view: subject_weight(photo, well_inside_head(vertices, occluders, cameras[view], photo.shape[:2],
+                                                            should_stop))
+               for view, photo in photos.items()}
     for view, photo in photos.items():
         camera = cameras[view]
         weight = np.clip((normal @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
@@ -178,6 +183,25 @@ def pad_islands(atlas: np.ndarray, covered: np.ndarray, texels: int = ISLAND_PAD
         grow = ~filled & (count > 0)
         atlas[grow] = total[grow] / count[grow][:, None]
         filled |= grow
+
+
+def well_inside_head(vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective, shape: tuple[int, ...],
+                     should_stop: ShouldStop = None) -> np.ndarray:
+    """(H, W) bool: the photograph's pixels within the fitted head's outline and farther than
+    :data:`INSIDE_MARGIN` of its width from it (the rim, where the fit may lie outside the person, left out)."""
+    height, width = shape[0], shape[1]
+    factor = ZBUFFER_SIDE / max(height, width)
+    w, h = max(round(width * factor), 1), max(round(height * factor), 1)
+    hit, _, _ = rasterize(camera.project(vertices)[triangles] * factor, w, h, should_stop=should_stop)
+    outline = hit >= 0
+    if not outline.any():
+        return np.zeros((height, width), dtype=bool)
+    columns = np.flatnonzero(outline.any(axis=0))
+    margin = INSIDE_MARGIN * (columns[-1] - columns[0] + 1)
+    inner = distance_transform_edt(outline) > margin
+    rows = np.minimum((np.arange(height) * factor).astype(int), h - 1)
+    cols = np.minimum((np.arange(width) * factor).astype(int), w - 1)
+    return np.asarray(inner[rows[:, None], cols[None, :]])
 
 
 def _on_subject(weights: np.ndarray | None, pixels: np.ndarray) -> np.ndarray:

@@ -154,7 +154,8 @@ def test_a_hair_outline_is_not_fitted():
           f"on skin: {int((~on_hair).sum())}, trusted {int((~on_hair & trusted).sum())}")
     # a few at the hairline, where the fitted vertex is on the painted hair but the photograph a few px inside
     # the edge already shows the forehead's skin
-    assert on_hair.sum() > 30 and (on_hair & trusted).sum() <= 0.1 * on_hair.sum()
+    # (29 outline points on the hair since the outline is found on whole polygons, 0 of them trusted; 31+ before)
+    assert on_hair.sum() >= 20 and (on_hair & trusted).sum() <= 0.1 * on_hair.sum()
     assert (~on_hair & trusted).sum() > 30             # the under-chin line and the neck are still fitted
 
 
