@@ -96,20 +96,20 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     total = np.zeros(len(points))
     colour = np.zeros((len(points), 3))
     occluders = all_triangles(model)
-    subject = {view: subject_weight(photo, well_inside_head(vertices, occluders, cameras[view], photo.shape[:2],
-                                                            should_stop))
+    buffers = {view: DepthBuffer.of(vertices, occluders, cameras[view], photo.shape[:2], should_stop)
                for view, photo in photos.items()}
+    subject = {view: subject_weight(photo, buffers[view].well_inside()) for view, photo in photos.items()}
     for view, photo in photos.items():
         camera = cameras[view]
         weight = np.clip((normal @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
-        weight *= _visible(points, vertices, occluders, camera, photo.shape[:2], should_stop)
+        weight *= buffers[view].visible(points)
         weight *= _on_subject(subject[view], camera.project(points))
         stop_if_asked(should_stop)
         colour += weight[:, None] * sample_bilinear(photo, camera.project(points))
         total += weight
     seen = total > 0.25
     mean = (colour[seen].sum(0) / total[seen].sum()) if seen.any() else np.array([200.0, 160.0, 140.0])
-    fill = skin_fill(model, vertices, photos, cameras, normals, occluders, mean, should_stop, subject)
+    fill = skin_fill(model, vertices, photos, cameras, normals, occluders, mean, should_stop, subject, buffers)
     texels = (colour + FILL_WEIGHT * np.einsum("nk,nkd->nd", b, fill[tri_v[t]])) / (total + FILL_WEIGHT)[:, None]
     atlas = np.empty((size, size, 3))
     atlas[:] = mean
@@ -126,7 +126,8 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
 def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarray],
               cameras: Mapping[str, WeakPerspective], normals: np.ndarray, occluders: np.ndarray,
               mean: np.ndarray, should_stop: ShouldStop = None,
-              subject: Mapping[str, np.ndarray | None] | None = None) -> np.ndarray:
+              subject: Mapping[str, np.ndarray | None] | None = None,
+              buffers: Mapping[str, DepthBuffer] | None = None) -> np.ndarray:
     """(N, 3) colours for every vertex: the photographs' where they see the skin, continued smoothly elsewhere.
 
     Each skin vertex gets the photographs' colour and weight as a texel does;
@@ -135,7 +136,8 @@ def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarra
     (``w`` = 0) each colour is the average of its neighbours', so the fill
     carries the colour and shading of the skin it meets and has no edge.
     A faint pull (1e-6) to ``mean`` decides skin no seen vertex connects to.
-    ``subject`` (view → :func:`~engine.photofit.backdrop.subject_weight`) keeps the backdrop out as for texels.
+    ``subject`` (view → :func:`~engine.photofit.backdrop.subject_weight`) keeps the backdrop out as for texels;
+    ``buffers`` (view → :class:`DepthBuffer`) are the photographs' depth buffers if already drawn.
     """
     from scipy import sparse
     from scipy.sparse.linalg import spsolve
@@ -148,7 +150,9 @@ def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarra
     for view, photo in photos.items():
         camera = cameras[view]
         w = np.clip((normals[skin] @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
-        w *= _visible(vertices[skin], vertices, occluders, camera, photo.shape[:2], should_stop)
+        buffer = buffers[view] if buffers is not None else DepthBuffer.of(vertices, occluders, camera,
+                                                                            photo.shape[:2], should_stop)
+        w *= buffer.visible(vertices[skin])
         w *= _on_subject((subject or {}).get(view), camera.project(vertices[skin]))
         colour += w[:, None] * sample_bilinear(photo, camera.project(vertices[skin]))
         weight += w
@@ -185,25 +189,6 @@ def pad_islands(atlas: np.ndarray, covered: np.ndarray, texels: int = ISLAND_PAD
         filled |= grow
 
 
-def well_inside_head(vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective, shape: tuple[int, ...],
-                     should_stop: ShouldStop = None) -> np.ndarray:
-    """(H, W) bool: the photograph's pixels within the fitted head's outline and farther than
-    :data:`INSIDE_MARGIN` of its width from it (the rim, where the fit may lie outside the person, left out)."""
-    height, width = shape[0], shape[1]
-    factor = ZBUFFER_SIDE / max(height, width)
-    w, h = max(round(width * factor), 1), max(round(height * factor), 1)
-    hit, _, _ = rasterize(camera.project(vertices)[triangles] * factor, w, h, should_stop=should_stop)
-    outline = hit >= 0
-    if not outline.any():
-        return np.zeros((height, width), dtype=bool)
-    columns = np.flatnonzero(outline.any(axis=0))
-    margin = INSIDE_MARGIN * (columns[-1] - columns[0] + 1)
-    inner = distance_transform_edt(outline) > margin
-    rows = np.minimum((np.arange(height) * factor).astype(int), h - 1)
-    cols = np.minimum((np.arange(width) * factor).astype(int), w - 1)
-    return np.asarray(inner[rows[:, None], cols[None, :]])
-
-
 def _on_subject(weights: np.ndarray | None, pixels: np.ndarray) -> np.ndarray:
     """(N,) the photograph's :func:`~engine.photofit.backdrop.subject_weight` at (N, 2) pixels (1 without one)."""
     if weights is None:
@@ -211,17 +196,57 @@ def _on_subject(weights: np.ndarray | None, pixels: np.ndarray) -> np.ndarray:
     return np.asarray(sample_bilinear(weights[..., None], pixels)[:, 0])
 
 
+class DepthBuffer:
+    """The fitted head drawn into one photograph's frame at :data:`ZBUFFER_SIDE` px: which polygon covers
+    each pixel and how near it is. Drawn once per photograph for the texture, the fill and the outline test."""
+
+    def __init__(self, camera: WeakPerspective, shape: tuple[int, ...], hit: np.ndarray, depth: np.ndarray) -> None:
+        self.camera, self.shape, self.hit, self.depth = camera, (shape[0], shape[1]), hit, depth
+        self.factor = ZBUFFER_SIDE / max(shape[0], shape[1])
+
+    @classmethod
+    def of(cls, vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective, shape: tuple[int, ...],
+           should_stop: ShouldStop = None) -> DepthBuffer:
+        height, width = shape[0], shape[1]
+        factor = ZBUFFER_SIDE / max(height, width)
+        w, h = max(round(width * factor), 1), max(round(height * factor), 1)
+        projected = camera.project(vertices) * factor
+        depth = camera.depth(vertices)
+        hit, _, zbuf = rasterize(projected[triangles], w, h, depth[triangles], should_stop)
+        return cls(camera, shape, hit, zbuf)
+
+    def visible(self, points: np.ndarray) -> np.ndarray:
+        """(N,) 1 where a point is the nearest surface in the photograph, else 0 (a coarse z-buffer)."""
+        h, w = self.depth.shape
+        xy = self.camera.project(points) * self.factor
+        col = np.clip(xy[:, 0].astype(int), 0, w - 1)
+        row = np.clip(xy[:, 1].astype(int), 0, h - 1)
+        inside = (xy[:, 0] >= 0) & (xy[:, 0] < w) & (xy[:, 1] >= 0) & (xy[:, 1] < h)
+        return np.asarray(inside & (self.camera.depth(points) >= self.depth[row, col] - VISIBLE_SLACK), dtype=float)
+
+    def well_inside(self) -> np.ndarray:
+        """(H, W) bool at the photograph's size: its pixels within the fitted head's outline and farther than
+        :data:`INSIDE_MARGIN` of the head's width from it (the rim, where the fit may lie outside the person,
+        left out)."""
+        height, width = self.shape
+        outline = self.hit >= 0
+        if not outline.any():
+            return np.zeros((height, width), dtype=bool)
+        columns = np.flatnonzero(outline.any(axis=0))
+        inner = distance_transform_edt(outline) > INSIDE_MARGIN * (columns[-1] - columns[0] + 1)
+        h, w = outline.shape
+        rows = np.minimum((np.arange(height) * self.factor).astype(int), h - 1)
+        cols = np.minimum((np.arange(width) * self.factor).astype(int), w - 1)
+        return np.asarray(inner[rows[:, None], cols[None, :]])
+
+
+def well_inside_head(vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective, shape: tuple[int, ...],
+                     should_stop: ShouldStop = None) -> np.ndarray:
+    """:meth:`DepthBuffer.well_inside` of the head drawn into a photograph of ``shape``."""
+    return DepthBuffer.of(vertices, triangles, camera, shape, should_stop).well_inside()
+
+
 def _visible(points: np.ndarray, vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective,
              shape: tuple[int, ...], should_stop: ShouldStop = None) -> np.ndarray:
-    """(N,) 1 where a point is the nearest surface in the photograph, else 0 (a coarse z-buffer)."""
-    height, width = shape[0], shape[1]
-    factor = ZBUFFER_SIDE / max(height, width)
-    w, h = max(round(width * factor), 1), max(round(height * factor), 1)
-    projected = camera.project(vertices) * factor
-    depth = camera.depth(vertices)
-    _, _, zbuf = rasterize(projected[triangles], w, h, depth[triangles], should_stop)
-    xy = camera.project(points) * factor
-    col = np.clip(xy[:, 0].astype(int), 0, w - 1)
-    row = np.clip(xy[:, 1].astype(int), 0, h - 1)
-    inside = (xy[:, 0] >= 0) & (xy[:, 0] < w) & (xy[:, 1] >= 0) & (xy[:, 1] < h)
-    return np.asarray(inside & (camera.depth(points) >= zbuf[row, col] - VISIBLE_SLACK), dtype=float)
+    """(N,) 1 where a point is the nearest surface in the photograph, else 0 (:meth:`DepthBuffer.visible`)."""
+    return DepthBuffer.of(vertices, triangles, camera, shape, should_stop).visible(points)
