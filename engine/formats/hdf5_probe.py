@@ -24,12 +24,10 @@ import gc
 import json
 import math
 import os
-import select
 import signal
 import subprocess
 import sys
 import threading
-import time
 import warnings
 from pathlib import Path
 
@@ -155,7 +153,7 @@ def read_in_fork(path: Path, budget: int, allowed_filters: frozenset[int], secon
         os._exit(status)
     os.close(write_end)
     try:
-        message = _read_until_closed(read_end, seconds)
+        message = hdf5_probe_helper.read_before(read_end, seconds, line=False)
     except TimeoutError:
         os.kill(pid, signal.SIGKILL)
         os.waitpid(pid, 0)
@@ -168,22 +166,6 @@ def read_in_fork(path: Path, budget: int, allowed_filters: frozenset[int], secon
         os.close(read_end)
     _, status = os.waitpid(pid, 0)
     return status, message.decode("utf-8", "replace")
-
-
-def _read_until_closed(fd: int, seconds: float) -> bytes:
-    deadline = time.monotonic() + seconds
-    chunks: list[bytes] = []
-    while True:
-        left = deadline - time.monotonic()
-        if left <= 0:
-            raise TimeoutError
-        ready, _, _ = select.select([fd], [], [], left)
-        if not ready:
-            continue
-        chunk = os.read(fd, 4096)
-        if not chunk:
-            return b"".join(chunks)
-        chunks.append(chunk)
 
 
 def probe_spawned(path: Path, budget: int, allowed_filters: frozenset[int], seconds: float) -> None:

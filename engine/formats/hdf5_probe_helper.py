@@ -91,7 +91,7 @@ def _ask(request: dict[str, Any], patience: float) -> dict[str, Any] | None:
         helper = _slot.process
         assert helper.stdin is not None and helper.stdout is not None
         helper.stdin.write(json.dumps(request).encode() + b"\n")
-        answer = json.loads(_read_line(helper.stdout.fileno(), patience))
+        answer = json.loads(read_before(helper.stdout.fileno(), patience, line=True))
         if not isinstance(answer, dict):
             raise ValueError("not an answer")
         return answer
@@ -109,8 +109,10 @@ def _start() -> subprocess.Popen[bytes]:
     return helper
 
 
-def _read_line(fd: int, patience: float) -> bytes:
-    deadline = time.monotonic() + patience
+def read_before(fd: int, seconds: float, *, line: bool) -> bytes:
+    """What ``fd`` gives within ``seconds``: up to the end of the stream, or with ``line`` up to a newline
+    (:class:`TimeoutError` when time runs out first; with ``line``, :class:`OSError` if the stream ends)."""
+    deadline = time.monotonic() + seconds
     chunks: list[bytes] = []
     while True:
         left = deadline - time.monotonic()
@@ -121,9 +123,11 @@ def _read_line(fd: int, patience: float) -> bytes:
             continue
         chunk = os.read(fd, 65536)
         if not chunk:
-            raise OSError("the helper ended")
+            if line:
+                raise OSError("the helper ended")
+            return b"".join(chunks)
         chunks.append(chunk)
-        if chunk.endswith(b"\n"):
+        if line and chunk.endswith(b"\n"):
             return b"".join(chunks)
 
 

@@ -23,3 +23,12 @@ def assert_user_error(result: subprocess.CompletedProcess) -> str:
     assert len(lines) == 1, result.stderr
     assert lines[0].startswith("error: ")
     return lines[0]
+
+
+def made_set(folder, design: str):
+    """The stimulus set of the design text ``design``, made by the CLI in ``folder`` (one worker): the
+    folder, holding ``design.toml`` and the set in ``set/``."""
+    (folder / "design.toml").write_text(design)
+    made = run("stimuli", folder / "design.toml", "-o", folder / "set", "--workers", "1")
+    assert made.returncode == 0, made.stderr
+    return folder

@@ -16,15 +16,8 @@ import pytest
 
 from engine import ModelFileError, load_model, save_model
 from engine.formats import hdf5_probe, hdf5_probe_helper
+from tests.engine.test_mesh_child import _alive
 from tests.engine.test_model_files import small_model
-
-
-def _alive(pid: int) -> bool:
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except FileNotFoundError:
-        return False
-    return state != "Z"
 
 
 @pytest.fixture

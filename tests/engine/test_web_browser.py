@@ -215,14 +215,12 @@ def stimulus_site(tmp_path_factory):
     from engine.stimuli.design import load_design
     from engine.stimuli.set_heads import DesignHeads
     from engine.web.stimuli_site import write_stimuli_site
-    from tests.engine.cli_runner import run
+    from tests.engine.cli_runner import made_set
 
-    folder = tmp_path_factory.mktemp("stimuli")
-    (folder / "design.toml").write_text('[factors]\ntext = ["Pappa ampui pallon."]\nav_offset_ms = [200]\n'
-                                        'identity = [{sex = 0.0, age = 30}, {sex = 1.0, age = 60, weight = 0.8}]\n'
-                                        '[output]\nkinds = ["wav", "tracks", "phones"]\nfps = 30\n')
-    made = run("stimuli", folder / "design.toml", "-o", folder / "set", "--workers", "1")
-    assert made.returncode == 0, made.stderr
+    folder = made_set(tmp_path_factory.mktemp("stimuli"),
+                      '[factors]\ntext = ["Pappa ampui pallon."]\nav_offset_ms = [200]\n'
+                      'identity = [{sex = 0.0, age = 30}, {sex = 1.0, age = 60, weight = 0.8}]\n'
+                      '[output]\nkinds = ["wav", "tracks", "phones"]\nfps = 30\n')
     heads = DesignHeads(load_design(folder / "design.toml"), folder / "set")
     write_stimuli_site(None, folder / "set", folder / "site", heads=heads)
     return folder / "site", {stimulus: heads(stimulus)[1] for stimulus in ("0001", "0002")}

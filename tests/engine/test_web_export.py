@@ -19,7 +19,7 @@ from engine.speech.say import speak
 from engine.web.animation import dequantised
 from engine.web.site import SITE_FILES, write_speech_site
 from engine.web.web_model import QUANTISATION, dequantised_target, web_glb, web_gltf_document
-from tests.engine.cli_runner import assert_user_error, run
+from tests.engine.cli_runner import assert_user_error, made_set, run
 
 SENTENCE = "Pappa osti mummolle paljon omenoita."
 SIZE_LIMIT = 3_000_000
@@ -209,11 +209,7 @@ fps = 30
 
 @pytest.fixture(scope="module")
 def stimulus_set(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("stimuli")
-    (folder / "design.toml").write_text(DESIGN)
-    made = run("stimuli", folder / "design.toml", "-o", folder / "set", "--workers", "1")
-    assert made.returncode == 0, made.stderr
-    return folder / "set"
+    return made_set(tmp_path_factory.mktemp("stimuli"), DESIGN) / "set"
 
 
 @pytest.mark.slow
@@ -290,11 +286,7 @@ fps = 30
 
 @pytest.fixture(scope="module")
 def identity_set(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("identities")
-    (folder / "design.toml").write_text(IDENTITIES)
-    made = run("stimuli", folder / "design.toml", "-o", folder / "set", "--workers", "1")
-    assert made.returncode == 0, made.stderr
-    return folder
+    return made_set(tmp_path_factory.mktemp("identities"), IDENTITIES)
 
 
 @pytest.mark.slow

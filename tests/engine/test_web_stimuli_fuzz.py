@@ -19,7 +19,7 @@ from hypothesis import strategies as st
 
 from engine.errors import UserError
 from engine.web.stimuli_site import read_set_listing
-from tests.engine.cli_runner import run
+from tests.engine.cli_runner import made_set
 from tests.engine.fuzz_support import FUZZ, NUMBER_TEXT, expect_clean, mutated
 
 DESIGN = """[factors]
@@ -35,11 +35,7 @@ CELLS = st.one_of(NUMBER_TEXT, st.text(max_size=12), st.sampled_from(
 
 @pytest.fixture(scope="module")
 def real_set(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("fuzz-set")
-    (folder / "design.toml").write_text(DESIGN)
-    made = run("stimuli", folder / "design.toml", "-o", folder / "set", "--workers", "1")
-    assert made.returncode == 0, made.stderr
-    return folder / "set"
+    return made_set(tmp_path_factory.mktemp("fuzz-set"), DESIGN) / "set"
 
 
 @pytest.fixture(scope="module")
