@@ -22,39 +22,56 @@ def rasterize(triangles: np.ndarray, width: int, height: int, depth: np.ndarray 
 
     Returns the triangle index of every pixel (−1 where none), the barycentric
     weights there (H, W, 3) and the depth (H, W; −inf where none). With
-    ``depth`` (T, 3) the nearest (largest) wins; without, the last drawn. ``should_stop`` is asked
-    every :data:`TRIANGLES_PER_STOP_CHECK` triangles (:mod:`engine.photofit.stopping`).
+    ``depth`` (T, 3) the nearest (largest) wins, the first drawn of equals; without, the last drawn.
+    Triangles of like size are drawn together, :data:`TRIANGLES_PER_STOP_CHECK` at a time, each batch
+    on the grid of its largest bounding box; ``should_stop`` is asked before each batch
+    (:mod:`engine.photofit.stopping`).
     """
     hit = np.full((height, width), -1, dtype=np.int64)
     bary = np.zeros((height, width, 3))
     zbuf = np.full((height, width), -np.inf)
     tri = np.asarray(triangles, dtype=float)
+    if not len(tri):
+        return hit, bary, zbuf
     lo = np.clip(np.floor(tri.min(axis=1) - 0.5).astype(int), 0, [width, height])
     hi = np.clip(np.ceil(tri.max(axis=1) - 0.5).astype(int) + 1, 0, [width, height])
     a, b, c = tri[:, 0], tri[:, 1], tri[:, 2]
     area = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (c[:, 0] - a[:, 0]) * (b[:, 1] - a[:, 1])
-    for drawn, t in enumerate(np.flatnonzero((np.abs(area) > 1e-12) & np.all(hi > lo, axis=1))):
-        if drawn % TRIANGLES_PER_STOP_CHECK == 0:
-            stop_if_asked(should_stop)
-        xs = np.arange(lo[t, 0], hi[t, 0]) + 0.5
-        ys = np.arange(lo[t, 1], hi[t, 1]) + 0.5
-        X, Y = np.meshgrid(xs, ys)
-        w1 = ((X - a[t, 0]) * (c[t, 1] - a[t, 1]) - (c[t, 0] - a[t, 0]) * (Y - a[t, 1])) / area[t]
-        w2 = ((b[t, 0] - a[t, 0]) * (Y - a[t, 1]) - (X - a[t, 0]) * (b[t, 1] - a[t, 1])) / area[t]
+    drawn = np.flatnonzero((np.abs(area) > 1e-12) & np.all(hi > lo, axis=1))
+    extent = hi[drawn] - lo[drawn]
+    drawn = drawn[np.lexsort((extent[:, 0], extent[:, 1]))]          # like sizes together: little padding
+    found: list[tuple[np.ndarray, ...]] = []
+    for start in range(0, len(drawn), TRIANGLES_PER_STOP_CHECK):
+        stop_if_asked(should_stop)
+        t = drawn[start:start + TRIANGLES_PER_STOP_CHECK]
+        span = (hi[t] - lo[t]).max(axis=0)
+        xs = (lo[t, 0][:, None, None] + np.arange(span[0])[None, None, :]) + 0.5          # (n, 1, w)
+        ys = (lo[t, 1][:, None, None] + np.arange(span[1])[None, :, None]) + 0.5          # (n, h, 1)
+        at, bt, ct = a[t][:, None, None, :], b[t][:, None, None, :], c[t][:, None, None, :]
+        w1 = ((xs - at[..., 0]) * (ct[..., 1] - at[..., 1]) - (ct[..., 0] - at[..., 0]) * (ys - at[..., 1])) \
+            / area[t][:, None, None]
+        w2 = ((bt[..., 0] - at[..., 0]) * (ys - at[..., 1]) - (xs - at[..., 0]) * (bt[..., 1] - at[..., 1])) \
+            / area[t][:, None, None]
         w0 = 1.0 - w1 - w2
-        inside = (w0 >= -1e-9) & (w1 >= -1e-9) & (w2 >= -1e-9)
-        if not inside.any():
-            continue
-        rows, cols = np.nonzero(inside)
-        rows_g, cols_g = rows + lo[t, 1], cols + lo[t, 0]
-        weights = np.stack([w0[inside], w1[inside], w2[inside]], axis=1)
-        if depth is not None:
-            z = weights @ depth[t]
-            nearer = z > zbuf[rows_g, cols_g]
-            rows_g, cols_g, weights, z = rows_g[nearer], cols_g[nearer], weights[nearer], z[nearer]
-            zbuf[rows_g, cols_g] = z
-        hit[rows_g, cols_g] = t
-        bary[rows_g, cols_g] = weights
+        right, bottom = hi[t, 0][:, None, None], hi[t, 1][:, None, None]       # each triangle's own box
+        inside = (w0 >= -1e-9) & (w1 >= -1e-9) & (w2 >= -1e-9) & (xs < right) & (ys < bottom)
+        k, rows, cols = np.nonzero(inside)
+        found.append((t[k], rows + lo[t[k], 1], cols + lo[t[k], 0], w0[inside], w1[inside], w2[inside]))
+    if not found:
+        return hit, bary, zbuf
+    which, rows, cols, w0, w1, w2 = (np.concatenate(parts) for parts in zip(*found, strict=True))
+    weights = np.stack([w0, w1, w2], axis=1)
+    pixel = rows * width + cols
+    if depth is not None:
+        z = np.einsum("nk,nk->n", weights, np.asarray(depth, dtype=float)[which])
+        order = np.lexsort((which, -z, pixel))          # per pixel: the nearest, then the first drawn
+    else:
+        order = np.lexsort((-which, pixel))              # per pixel: the last drawn
+    first = order[np.r_[True, pixel[order][1:] != pixel[order][:-1]]]
+    hit[rows[first], cols[first]] = which[first]
+    bary[rows[first], cols[first]] = weights[first]
+    if depth is not None:
+        zbuf[rows[first], cols[first]] = z[first]
     return hit, bary, zbuf
 
 
