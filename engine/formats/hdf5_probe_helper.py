@@ -48,6 +48,7 @@ HELPER_SCRIPT = Path(__file__).resolve().with_name("hdf5_probe.py")
 #: Seconds an answer may take beyond the reader's own time limit before the helper counts as stuck.
 ANSWER_MARGIN = 30.0
 
+
 class _Slot:
     """The helper now running (if any), and the lock that lets one thread at a time talk to it."""
 

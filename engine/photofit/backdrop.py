@@ -36,7 +36,7 @@ def subject_weight(photo: np.ndarray, inside: np.ndarray | None = None) -> np.nd
     """(H, W) weights in 0 … 1 of the photograph's pixels for the texture, or None on a busy backdrop.
 
     ``inside`` (H, W) bool marks pixels that are the person whatever their colour: the fitted head's
-    outline in the photograph, shrunk well inside its rim (:func:`engine.photofit.texture.well_inside_head`).
+    outline in the photograph, shrunk well inside its rim (:meth:`engine.photofit.texture.DepthBuffer.well_inside`).
     A face as pale as the backdrop, whose skin meets the backdrop along the jaw or the neck, is no hole in
     the foreground; without it such a face would count as backdrop and take no colour from the photograph.
     """

@@ -14,6 +14,8 @@ from engine.photofit.stopping import ShouldStop, stop_if_asked
 
 #: Triangles drawn between two questions to ``should_stop`` (a few milliseconds of drawing).
 TRIANGLES_PER_STOP_CHECK = 128
+#: Pixels of bounding boxes drawn at once at most (unless one triangle's box is larger): bounds the memory.
+PIXELS_PER_BATCH = 1 << 21
 
 
 def rasterize(triangles: np.ndarray, width: int, height: int, depth: np.ndarray | None = None,
@@ -23,8 +25,9 @@ def rasterize(triangles: np.ndarray, width: int, height: int, depth: np.ndarray 
     Returns the triangle index of every pixel (−1 where none), the barycentric
     weights there (H, W, 3) and the depth (H, W; −inf where none). With
     ``depth`` (T, 3) the nearest (largest) wins, the first drawn of equals; without, the last drawn.
-    Triangles of like size are drawn together, :data:`TRIANGLES_PER_STOP_CHECK` at a time, each batch
-    on the grid of its largest bounding box; ``should_stop`` is asked before each batch
+    Triangles of like size are drawn together, :data:`TRIANGLES_PER_STOP_CHECK` at a time (fewer where
+    their boxes would pass :data:`PIXELS_PER_BATCH`), each batch on the grid of its largest bounding box;
+    ``should_stop`` is asked before each batch
     (:mod:`engine.photofit.stopping`).
     """
     hit = np.full((height, width), -1, dtype=np.int64)
@@ -41,10 +44,17 @@ def rasterize(triangles: np.ndarray, width: int, height: int, depth: np.ndarray 
     extent = hi[drawn] - lo[drawn]
     drawn = drawn[np.lexsort((extent[:, 0], extent[:, 1]))]          # like sizes together: little padding
     found: list[tuple[np.ndarray, ...]] = []
-    for start in range(0, len(drawn), TRIANGLES_PER_STOP_CHECK):
+    start = 0
+    while start < len(drawn):
         stop_if_asked(should_stop)
-        t = drawn[start:start + TRIANGLES_PER_STOP_CHECK]
-        span = (hi[t] - lo[t]).max(axis=0)
+        count = TRIANGLES_PER_STOP_CHECK
+        while True:                                     # large triangles: fewer at a time, memory bounded
+            t = drawn[start:start + count]
+            span = (hi[t] - lo[t]).max(axis=0)
+            if count == 1 or len(t) * int(span[0]) * int(span[1]) <= PIXELS_PER_BATCH:
+                break
+            count //= 2
+        start += len(t)
         xs = (lo[t, 0][:, None, None] + np.arange(span[0])[None, None, :]) + 0.5          # (n, 1, w)
         ys = (lo[t, 1][:, None, None] + np.arange(span[1])[None, :, None]) + 0.5          # (n, h, 1)
         at, bt, ct = a[t][:, None, None, :], b[t][:, None, None, :], c[t][:, None, None, :]

@@ -200,20 +200,22 @@ class DepthBuffer:
     """The fitted head drawn into one photograph's frame at :data:`ZBUFFER_SIDE` px: which polygon covers
     each pixel and how near it is. Drawn once per photograph for the texture, the fill and the outline test."""
 
-    def __init__(self, camera: WeakPerspective, shape: tuple[int, ...], hit: np.ndarray, depth: np.ndarray) -> None:
-        self.camera, self.shape, self.hit, self.depth = camera, (shape[0], shape[1]), hit, depth
-        self.factor = ZBUFFER_SIDE / max(shape[0], shape[1])
+    def __init__(self, camera: WeakPerspective, shape: tuple[int, ...], hit: np.ndarray, depth: np.ndarray,
+                 factor: float) -> None:
+        self.camera, self.shape, self.hit, self.depth, self.factor = camera, (shape[0], shape[1]), hit, depth, factor
 
     @classmethod
     def of(cls, vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective, shape: tuple[int, ...],
            should_stop: ShouldStop = None) -> DepthBuffer:
+        """Draw ``triangles`` (T, 3 vertex indices) of ``vertices`` as ``camera`` sees them in a photograph of
+        ``shape``."""
         height, width = shape[0], shape[1]
         factor = ZBUFFER_SIDE / max(height, width)
         w, h = max(round(width * factor), 1), max(round(height * factor), 1)
         projected = camera.project(vertices) * factor
         depth = camera.depth(vertices)
         hit, _, zbuf = rasterize(projected[triangles], w, h, depth[triangles], should_stop)
-        return cls(camera, shape, hit, zbuf)
+        return cls(camera, shape, hit, zbuf, factor)
 
     def visible(self, points: np.ndarray) -> np.ndarray:
         """(N,) 1 where a point is the nearest surface in the photograph, else 0 (a coarse z-buffer)."""
@@ -238,15 +240,3 @@ class DepthBuffer:
         rows = np.minimum((np.arange(height) * self.factor).astype(int), h - 1)
         cols = np.minimum((np.arange(width) * self.factor).astype(int), w - 1)
         return np.asarray(inner[rows[:, None], cols[None, :]])
-
-
-def well_inside_head(vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective, shape: tuple[int, ...],
-                     should_stop: ShouldStop = None) -> np.ndarray:
-    """:meth:`DepthBuffer.well_inside` of the head drawn into a photograph of ``shape``."""
-    return DepthBuffer.of(vertices, triangles, camera, shape, should_stop).well_inside()
-
-
-def _visible(points: np.ndarray, vertices: np.ndarray, triangles: np.ndarray, camera: WeakPerspective,
-             shape: tuple[int, ...], should_stop: ShouldStop = None) -> np.ndarray:
-    """(N,) 1 where a point is the nearest surface in the photograph, else 0 (:meth:`DepthBuffer.visible`)."""
-    return DepthBuffer.of(vertices, triangles, camera, shape, should_stop).visible(points)

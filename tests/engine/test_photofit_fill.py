@@ -16,7 +16,7 @@ from scipy import sparse
 
 from engine.photofit.texture import (
     GRAZING,
-    _visible,
+    DepthBuffer,
     all_triangles,
     skin_fill,
     skin_triangles,
@@ -41,7 +41,7 @@ def filled(synthetic, front_only):  # noqa: F811
     camera = cameras["front"]
     weight = np.zeros(len(vertices))
     weight[skin] = np.clip((normals[skin] @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
-    weight[skin] *= _visible(vertices[skin], vertices, occluders, camera, photos["front"].shape[:2])
+    weight[skin] *= DepthBuffer.of(vertices, occluders, camera, photos["front"].shape[:2]).visible(vertices[skin])
     mean = np.array([180.0, 140.0, 120.0])
     fill = skin_fill(head, vertices, photos, cameras, normals, occluders, mean)
     edges = np.concatenate([tri_v[:, [0, 1]], tri_v[:, [1, 2]], tri_v[:, [2, 0]]])

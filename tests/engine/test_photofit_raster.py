@@ -60,6 +60,19 @@ def test_batches_draw_what_one_at_a_time_draws(seed, with_depth):
     assert (got[0] >= 0).sum() > 50
 
 
+def test_large_triangles_drawn_a_few_at_a_time_draw_the_same(monkeypatch):
+    from engine.photofit import raster
+
+    rng = np.random.default_rng(9)
+    corners = rng.uniform(-10, 50, size=(40, 3, 2))               # boxes of up to 40 × 40 px
+    depth = rng.uniform(0, 10, size=(40, 3))
+    monkeypatch.setattr(raster, "PIXELS_PER_BATCH", 900)          # a batch of 128 would pass it: halved down
+    got = rasterize(corners, 40, 40, depth)
+    want = one_at_a_time(corners, 40, 40, depth)
+    assert np.array_equal(got[0], want[0])
+    np.testing.assert_allclose(got[2], want[2], rtol=0, atol=1e-12)
+
+
 def test_no_triangles_draw_nothing():
     hit, bary, zbuf = rasterize(np.zeros((0, 3, 2)), 5, 4)
     assert (hit == -1).all() and not bary.any() and np.isneginf(zbuf).all()
