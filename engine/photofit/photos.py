@@ -1,4 +1,14 @@
-"""Photographs read as the user sees them: JPEG or PNG, EXIF orientation applied, RGB.
+"""Photographs read as the user sees them: JPEG (a camera's MPO too) or PNG, EXIF orientation applied, RGB.
+
+Every file the photo-fit reads goes through :func:`read_input_bytes`: a
+folder, a device (``/dev/zero``) or a named pipe is refused before it is
+opened, and no more than a bound is ever read (the photographs
+:data:`MAX_PHOTO_BYTES`, the landmark file its own bound). A photograph is
+then decoded from those bytes, refused above :data:`MAX_PIXELS` pixels,
+whatever its format claims, before its pixels are decoded (Pillow's
+decompression-bomb warning and error become the same one line). An MPO file
+(the JPEG with a second picture, or a depth map, many cameras write) is read
+as its first picture, the one every viewer shows.
 
 >>> import numpy as np, tempfile, os
 >>> from PIL import Image
@@ -10,14 +20,34 @@
 
 from __future__ import annotations
 
+import io
+import warnings
 from pathlib import Path
 
 import numpy as np
 
+from engine.formats.text_files import read_bounded_bytes
 from engine.photofit.errors import PhotoFitError
 
-FORMATS = ("JPEG", "PNG")
+FORMATS = ("JPEG", "PNG", "MPO")
 MAX_PIXELS = 80_000_000
+"""The largest photograph (80 megapixels, above any portrait camera's; the fit itself works at 600 px)."""
+MAX_PHOTO_BYTES = 256 << 20
+"""The largest photograph file read (256 MiB: an 80-megapixel JPEG is 20–60 MB, a PNG of it up to 240 MB)."""
+
+
+def read_input_bytes(path: str | Path, limit: int, what: str) -> bytes:
+    """The bytes of the regular file ``path`` (at most ``limit``), or one :class:`PhotoFitError` naming it.
+
+    A folder, device or pipe is refused before it is opened, so a FIFO with no
+    writer cannot block and ``/dev/zero`` is not read.
+    """
+    try:
+        return read_bounded_bytes(path, limit, PhotoFitError, what)
+    except PhotoFitError as exc:
+        if exc.message.startswith("cannot read"):
+            raise
+        raise PhotoFitError(f"cannot read the {what}: {exc.message}", file=path) from None
 
 
 def read_photo(path: str | Path) -> np.ndarray:
@@ -25,18 +55,24 @@ def read_photo(path: str | Path) -> np.ndarray:
     from PIL import Image, ImageOps, UnidentifiedImageError
 
     path = Path(path)
+    data = read_input_bytes(path, MAX_PHOTO_BYTES, "photograph")
+    too_large = f"more than {MAX_PIXELS} pixels; use a photograph of at most {MAX_PIXELS // 1_000_000} megapixels"
     try:
-        with Image.open(path) as image:
-            if image.format not in FORMATS:
-                raise PhotoFitError(f"a {image.format} picture; use a JPEG or PNG photograph", file=path)
-            if image.width * image.height > MAX_PIXELS:
-                raise PhotoFitError(f"{image.width}×{image.height} pixels is more than {MAX_PIXELS} pixels",
-                                    file=path)
-            upright = ImageOps.exif_transpose(image)
-            pixels = np.asarray(upright.convert("RGB"), dtype=np.uint8)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error", Image.DecompressionBombWarning)
+            with Image.open(io.BytesIO(data)) as image:
+                if image.format not in FORMATS:
+                    raise PhotoFitError(f"a {image.format} picture; use a JPEG or PNG photograph", file=path)
+                if image.width * image.height > MAX_PIXELS:
+                    raise PhotoFitError(f"{image.width}×{image.height} pixels is {too_large}", file=path)
+                image.seek(0)                           # an MPO's first picture (a no-op for JPEG and PNG)
+                upright = ImageOps.exif_transpose(image)
+                pixels = np.asarray(upright.convert("RGB"), dtype=np.uint8)
     except UnidentifiedImageError:
         raise PhotoFitError("not a picture (use a JPEG or PNG photograph)", file=path) from None
-    except (OSError, SyntaxError, ValueError, Image.DecompressionBombError) as exc:
+    except (Image.DecompressionBombWarning, Image.DecompressionBombError):
+        raise PhotoFitError(f"the picture is {too_large}", file=path) from None
+    except (OSError, SyntaxError, ValueError, EOFError) as exc:
         raise PhotoFitError(f"cannot read the photograph: {getattr(exc, 'strerror', None) or exc}",
                             file=path) from None
     return np.ascontiguousarray(pixels)

@@ -26,6 +26,7 @@ from collections.abc import Collection
 from pathlib import Path
 
 from engine.photofit.errors import PhotoFitError
+from engine.photofit.photos import read_input_bytes
 
 #: What the front photograph must show: pupils, nose tip, mouth corners, chin.
 REQUIRED_FRONT = ("3.5", "3.6", "9.3", "8.3", "8.4", "2.1")
@@ -43,14 +44,12 @@ def read_points(path: str | Path, known: Collection[str]) -> PhotoPoints:
     Raises :class:`PhotoFitError` (one line, naming the file) for anything else.
     """
     path = Path(path)
+    data = read_input_bytes(path, MAX_FILE_BYTES, "landmark file")   # no folder, device or pipe; bounded
     try:
-        size = path.stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise PhotoFitError(f"the landmark file is {size} bytes; at most {MAX_FILE_BYTES} are read", file=path)
-        text = path.read_bytes().decode("utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise PhotoFitError(f"cannot read the landmark file: {getattr(exc, 'strerror', None) or exc}",
-                            file=path) from None
+        text = data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        raise PhotoFitError(f"cannot read the landmark file: {exc}", file=path,
+                            line=data[:exc.start].count(b"\n") + 1) from None
     try:
         data = json.loads(text, parse_constant=_refuse_constant)
     except (ValueError, RecursionError) as exc:
