@@ -44,7 +44,8 @@ class ModelDocument(QObject):
     values_changed(list)
         The listed parameters have new values; read them from :attr:`values`.
     path_changed(str)
-        The file the model is associated with changed (e.g. after a save as).
+        The file the model is associated with changed (e.g. after a save as; also a new person's head made
+        from photographs, which has none, and its undo).
     parameters_changed(list)
         The parameter tree was edited (a parameter added, removed, renamed,
         moved or its properties changed; also by undo and redo). The list
@@ -67,6 +68,7 @@ class ModelDocument(QObject):
         super().__init__(parent)
         self._model = model
         self._path = Path(path) if path is not None else None
+        self._suggested_path: Path | None = None
         self._values = model.default_values()
         self._vertices: np.ndarray | None = None
         self._generation = 0
@@ -82,6 +84,11 @@ class ModelDocument(QObject):
     def path(self) -> Path | None:
         """The model's XML description on disk, or ``None`` for a model built in memory."""
         return self._path
+
+    @property
+    def suggested_path(self) -> Path | None:
+        """Where Save proposes to write a model that has no file (:attr:`path` is ``None``), if anywhere."""
+        return self._suggested_path
 
     @property
     def values(self) -> dict[str, float]:
@@ -225,6 +232,16 @@ class ModelDocument(QObject):
         self.model_replaced.emit(model)
         return old
 
+    def apply_file(self, path: str | Path | None,
+                   suggested: str | Path | None = None) -> tuple[Path | None, Path | None]:
+        """Give the model another file (``None``: none, Save asks, proposing ``suggested``) as part of an undoable
+        edit (a new person's head must not keep the previous person's file); returns the file and suggestion
+        it had, which undo gives back."""
+        before = self._path, self._suggested_path
+        self._suggested_path = Path(suggested) if suggested is not None and path is None else None
+        self._set_path(path)
+        return before
+
     def _tree_edit_done(self, undo: TreeState) -> TreeState:
         """Announce a tree edit whose undo state is ``undo`` (its parameters are the tree before)."""
         renamed = {old: new for new, old in undo.renamed.items()}
@@ -275,12 +292,14 @@ class ModelDocument(QObject):
         self._vertices = None
         self._generation += 1
         self.undo_stack.clear()          # the commands edit the old model; clear() also marks it clean
+        self._suggested_path = None
         self._set_path(path)
         self.model_replaced.emit(model)
 
     def save(self, path: str | Path) -> Path:
         """Write the model with :func:`engine.save_model`, remember the new path, mark it unmodified."""
         written = engine.save_model(self._model, path)
+        self._suggested_path = None
         self._set_path(written)
         self.undo_stack.setClean()
         return written

@@ -196,8 +196,13 @@ class FileController:
 
     def save_as_dialog(self) -> bool:
         """Ask where to save the model (.xml + .h5) and write it; ``False`` if cancelled or failed."""
-        path = self.document.path
-        start = str(path) if path is not None and not is_shipped(path) else self.start_dir()
+        path, suggested = self.document.path, self.document.suggested_path
+        if path is not None and not is_shipped(path):
+            start = str(path)
+        elif path is None and suggested is not None:
+            start = str(suggested)                  # a head from photographs: named after the photograph
+        else:
+            start = self.start_dir()
         path, _ = QFileDialog.getSaveFileName(self.window, "Save model as", start, MODEL_FILTER)
         return bool(path) and self.save_model(path)
 

@@ -6,7 +6,9 @@ thread with the fitted head laid over each photograph
 (:mod:`.photofit_wizard_fit`), and the result in a 3-D view saying a test
 sentence (:mod:`.photofit_wizard_result`). Cancel on any page, or Stop during
 the fit, leaves the document as it was; Finish makes the fitted head the
-document's model as one undo step ("New head from photographs") and, if
+document's model as one undo step ("New head from photographs"), with no
+file: Save asks, proposing a name after the front photograph, and never
+writes over the previous person's file; and, if
 asked, says the sentence again through the window's player as the script
 panel does. See docs/workbench-photofit.md.
 """
@@ -15,6 +17,7 @@ from __future__ import annotations
 
 import dataclasses
 import tempfile
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QSize
@@ -29,8 +32,10 @@ from .photofit_wizard_session import TITLE, PhotoFitSession
 from .undo_commands import ReplaceModelCommand
 
 if TYPE_CHECKING:
+    import engine
     from engine.photofit import PhotoFit
 
+    from .document import ModelDocument
     from .main_window import MainWindow
 
 UNDO_TEXT = "New head from photographs"
@@ -83,17 +88,47 @@ def finish(window: MainWindow, wizard: PhotoFitWizard) -> None:
     fit = wizard.session.fit
     if fit is None:
         return
-    adopt(window, fit)
+    adopt(window, fit, suggested_path(window, wizard.session))
     sentence = wizard.result_page.test_sentence()
     if sentence is not None:
         say_test_sentence(window, sentence)
 
 
-def adopt(window: MainWindow, fit: PhotoFit) -> None:
-    """The fitted head becomes the document's model: one undo step."""
-    window.document.push(ReplaceModelCommand(window.document, fit.head, UNDO_TEXT))
+def adopt(window: MainWindow, fit: PhotoFit, suggested: Path | None = None) -> None:
+    """The fitted head becomes the document's model, with no file (``suggested``: the name Save proposes):
+    one undo step."""
+    window.document.push(NewPersonCommand(window.document, fit.head, UNDO_TEXT, suggested))
     window.viewport.set_view("front")
-    window.statusBar().showMessage("New head from photographs: File → Save model as… writes it", 6000)
+    window.statusBar().showMessage("New head from photographs: File → Save asks where to write it", 6000)
+
+
+def suggested_path(window: MainWindow, session: PhotoFitSession) -> Path:
+    """Where Save proposes to write the new head: named after the front photograph, in the previous model's
+    folder (the file dialog's usual folder when that was the shipped head or had no file)."""
+    from .file_controller import is_shipped
+
+    previous = window.document.path
+    folder = previous.parent if previous is not None and not is_shipped(previous) else Path(window.files.start_dir())
+    photo = session.paths.get("front")
+    return folder / f"{photo.stem if photo is not None else 'person'}.xml"
+
+
+class NewPersonCommand(ReplaceModelCommand):
+    """Another person's head replaces the model: the document has no file while it is current, so Save asks
+    (proposing ``suggested``) and never writes over the previous person's file; undo gives that file back,
+    redo the file the new head was saved to meanwhile, if it was."""
+
+    def __init__(self, document: ModelDocument, model: engine.Model, text: str, suggested: Path | None):
+        super().__init__(document, model, text)
+        self.other_file: tuple[Path | None, Path | None] = (None, suggested)    # the file the other head has
+
+    def apply(self) -> None:
+        super().apply()
+        self.other_file = self.document.apply_file(*self.other_file)
+
+    def revert(self) -> None:
+        super().revert()
+        self.other_file = self.document.apply_file(*self.other_file)
 
 
 def say_test_sentence(window: MainWindow, text: str):
@@ -132,8 +167,6 @@ _SCRATCH: list[tempfile.TemporaryDirectory] = []
 
 
 def _scratch_folder():
-    from pathlib import Path
-
     if not _SCRATCH:
         _SCRATCH.append(tempfile.TemporaryDirectory(prefix="artificial-person-photofit-say-"))
     return Path(_SCRATCH[0].name)

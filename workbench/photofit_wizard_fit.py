@@ -151,12 +151,13 @@ class FitPage(QWizardPage):
         if job is not self.job:                       # stopped: its end means nothing
             return
         self.job = None
+        # The fit (or its absence) first: _show_running tells the wizard to ask isComplete() again.
+        self.session.fit = None if job.error is not None else job.result
         self._show_running(False)
         if job.error is not None:
-            self.session.fit = None
             self.status.setText(f"The fit failed: {job.error}")
             return
-        fit = self.session.fit = job.result
+        fit = self.session.fit
         self.progress.setValue(len(FIT_STEPS))
         seconds = sum(fit.seconds.values())
         self.status.setText(f"Fitted in {seconds:.1f} s: landmarks {fit.shape.error:.1f} px RMS from your points "
