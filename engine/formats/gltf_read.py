@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import base64
 import json
+import os
+import re
 import struct
 import urllib.parse
 from collections.abc import Callable, Mapping
@@ -40,8 +42,10 @@ class GltfFileError(UserError):
 
 
 def _quaternion_matrix(q: npt.ArrayLike) -> np.ndarray:
-    """Rotation matrix of a unit quaternion (x, y, z, w)."""
-    x, y, z, w = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    """Rotation matrix of a unit quaternion (x, y, z, w); any length but zero (scaled first, so that
+    a quaternion of huge or tiny numbers neither overflows nor underflows its length)."""
+    scaled = np.asarray(q, dtype=float) / np.max(np.abs(np.asarray(q, dtype=float)))
+    x, y, z, w = scaled / np.linalg.norm(scaled)
     return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
                      [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
                      [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
@@ -104,6 +108,8 @@ class GltfMesh:
         for p in self.primitives:
             if p.model_vertex is None:
                 raise UserError(f"primitive '{p.name}' has no {MODEL_VERTEX} attribute")
+            if len(p.model_vertex) and not (p.model_vertex.min() >= 0 and p.model_vertex.max() < n_vertices):
+                raise UserError(f"primitive '{p.name}': {MODEL_VERTEX} is not a vertex of the {n_vertices}")
             P = p.positions.astype(np.float64)
             for weight, target in zip(w, p.targets, strict=True):
                 if weight:
@@ -222,11 +228,8 @@ class _Reader:
         self.path, self.doc, self.fail = path, document, fail
         if not isinstance(document, dict) or str(document.get("asset", {}).get("version")) != "2.0":
             fail("not a glTF 2.0 document (asset.version must be \"2.0\")")
-        self.buffers = [self._buffer(i, b, embedded) for i, b in enumerate(document.get("buffers", []))]
+        self.buffers = [load_buffer(path, i, b, embedded, fail) for i, b in enumerate(document.get("buffers", []))]
         self.cache: dict[int, np.ndarray] = {}
-
-    def _buffer(self, i: int, spec: dict, embedded: dict[int, bytes]) -> bytes:
-        return load_buffer(self.path, i, spec, embedded, self.fail)
 
     def accessor(self, index: int) -> np.ndarray:
         if index not in self.cache:
@@ -238,9 +241,9 @@ class _Reader:
         meshes = doc.get("meshes", [])
         if not meshes:
             self.fail("the file holds no mesh")
-        for node in doc.get("nodes", []):
-            if "mesh" in node and not 0 <= node["mesh"] < len(meshes):
-                self.fail(f"node '{node.get('name', '')}' names mesh {node['mesh']}, which does not exist")
+        for n, node in enumerate(doc.get("nodes", [])):
+            if "mesh" in node:
+                index_of(node["mesh"], "meshes", len(meshes), f"node {n}", self.fail)
         spec = meshes[0]
         prims = [self.primitive(i, p) for i, p in enumerate(spec["primitives"])]
         counts = {len(p.targets) for p in prims}
@@ -258,8 +261,8 @@ class _Reader:
         holder = [n for n in doc.get("nodes", []) if n.get("mesh") == 0 and "skin" in n]
         if not holder:
             return None
-        skin = doc["skins"][holder[0]["skin"]]
-        joints = list(skin["joints"])
+        skin = element(doc, "skins", holder[0]["skin"], "the mesh's node", self.fail)
+        joints = [index_of(j, "nodes", len(doc["nodes"]), "skin", self.fail) for j in skin["joints"]]
         ibm = self.accessor(skin["inverseBindMatrices"])
         if ibm.shape != (len(joints), 16):
             self.fail(f"skin: {len(ibm)} inverse bind matrices for {len(joints)} joints")
@@ -278,7 +281,7 @@ class _Reader:
         for p in prims:
             if p.joints is None or p.weights is None:
                 self.fail(f"primitive '{p.name}' of a skinned mesh has no JOINTS_0 and WEIGHTS_0")
-            if p.joints.max(initial=0) >= len(joints):
+            if p.joints.max(initial=0) >= len(joints) or p.joints.min(initial=0) < 0:
                 self.fail(f"primitive '{p.name}': JOINTS_0 names a joint past the {len(joints)} of the skin")
             if np.any(np.abs(p.weights.sum(axis=1) - 1) > 2e-3):
                 self.fail(f"primitive '{p.name}': skin weights do not sum to 1")
@@ -302,10 +305,10 @@ class _Reader:
             if len(array) != n:
                 self.fail(f"primitive '{name}': {key} has {len(array)} elements for {n} vertices")
         if "indices" in spec:
-            flat = self.accessor(spec["indices"]).astype(np.int64)
+            flat = integers(self.accessor(spec["indices"]), f"primitive '{name}': indices", self.fail)
         else:
             flat = np.arange(n)
-        if len(flat) % 3 or (len(flat) and flat.max() >= n):
+        if len(flat) % 3 or (len(flat) and (flat.max() >= n or flat.min() < 0)):
             self.fail(f"primitive '{name}': indices must be triangles of vertices below {n}")
         targets = []
         for j, target in enumerate(spec.get("targets", [])):
@@ -317,25 +320,98 @@ class _Reader:
                     self.fail(f"primitive '{name}', morph target {j}: {key} has shape {array.shape}, "
                               f"expected ({n}, 3)")
             targets.append(entry)
-        material = self.doc["materials"][spec["material"]] if "material" in spec else {}
+        material = (element(self.doc, "materials", spec["material"], f"primitive '{name}'", self.fail)
+                    if "material" in spec else {})
         vertex = arrays.get(MODEL_VERTEX)
         joints = arrays.get("JOINTS_0")
         return GltfPrimitive(name, positions, flat.reshape(-1, 3), arrays.get("NORMAL"), arrays.get("COLOR_0"),
-                             None if vertex is None else vertex.astype(np.int64), targets, material,
-                             None if joints is None else joints.astype(np.int64), arrays.get("WEIGHTS_0"))
+                             None if vertex is None else integers(vertex, f"primitive '{name}': {MODEL_VERTEX}",
+                                                                  self.fail),
+                             targets, material,
+                             None if joints is None else integers(joints, f"primitive '{name}': JOINTS_0", self.fail),
+                             arrays.get("WEIGHTS_0"))
 
 
 # -- pieces shared with the mesh importer (:mod:`engine.formats.mesh_gltf`) ------------
 
 #: The first line of a Git LFS pointer file, which a clone without LFS holds instead of the data.
 LFS_POINTER = b"version https://git-lfs.github.com/spec/v1"
+_SCHEME = re.compile(r"^[A-Za-z][A-Za-z0-9+.-]*:")
+
+
+def whole(value: object, what: str, fail: Callable[[str], NoReturn]) -> int:
+    """``value`` as an int if it is a JSON whole number (``3`` or ``3.0``; not ``true``, ``2.5`` or ``"3"``)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or (
+            isinstance(value, float) and not value.is_integer()):
+        fail(f"{what} must be a whole number, not {json.dumps(value)[:40]}")
+    if abs(value) > 2**53:
+        fail(f"{what} is {json.dumps(value)[:40]}, too large for any file")
+    return int(value)
+
+
+def index_of(value: object, kind: str, count: int, where: str, fail: Callable[[str], NoReturn]) -> int:
+    """``value`` as an index into the document's array ``kind`` of ``count`` elements: a whole number from 0
+    to ``count − 1``. A negative index would wrap to the end of a Python list, so it is refused like any
+    index past the end."""
+    singular = kind.removesuffix("es" if kind == "meshes" else "s")
+    index = whole(value, f"{where}: {'an' if singular[0] in 'aeiou' else 'a'} {singular} index", fail)
+    if not 0 <= index < count:
+        fail(f"{where} names {singular} {index}, which does not exist (the file has {count})")
+    return index
+
+
+def element(doc: dict, kind: str, value: object, where: str, fail: Callable[[str], NoReturn]) -> dict:
+    """The element of the document's array ``kind`` (``"accessors"``, ``"nodes"`` …) that ``value`` names,
+    checked by :func:`index_of`; it must be a JSON object."""
+    items = doc.get(kind, [])
+    if not isinstance(items, list):
+        fail(f"'{kind}' is not a list")
+    item = items[index_of(value, kind, len(items), where, fail)]
+    if not isinstance(item, dict):
+        fail(f"{kind} {value} is not a JSON object")
+    return item
+
+
+def integers(array: np.ndarray, what: str, fail: Callable[[str], NoReturn]) -> np.ndarray:
+    """An accessor's values as int64 indices; values that are not whole numbers within int64 (float data
+    holding NaN, 1e30 or 0.5) are refused before the cast, which would make them garbage with a warning."""
+    if array.dtype.kind == "f" and not (np.all(np.isfinite(array)) and np.all(np.abs(array) <= 2.0**53)
+                                        and np.all(array == np.round(array))):
+        fail(f"{what} must be whole numbers")
+    return array.astype(np.int64)
+
+
+def document_file(path: Path, uri: str) -> Path:
+    """The file a relative ``uri`` of the glTF document at ``path`` names, percent-decoded and with links
+    resolved, which must lie in the document's folder or one inside it: the one check for every file a glTF
+    reader opens (buffers, images), so that a downloaded model cannot carry a user's file into a model.
+
+    :class:`GltfFileError` (no file: the caller says whose URI) for another scheme (``http://``, ``file:``),
+    an absolute path, a backslash (a separator on Windows only), a NUL, bytes that are not UTF-8, and a name
+    that leads out of the folder (``../``, ``%2e%2e%2f``, a link pointing elsewhere)."""
+    shown = uri[:200]
+    try:
+        name = urllib.parse.unquote(uri, errors="strict")
+    except UnicodeDecodeError:
+        raise GltfFileError(f"'{shown}' is not UTF-8 once percent-decoded") from None
+    if _SCHEME.match(name) or Path(name).is_absolute():
+        raise GltfFileError(f"'{shown}' is not a file beside the document (only relative file names are read)")
+    if "\\" in name or "\0" in name:
+        raise GltfFileError(f"'{shown}' holds a {'backslash' if chr(92) in name else 'NUL'}, which a file URI "
+                            "does not (write '/' between folders)")
+    folder = Path(os.path.realpath(path.parent))
+    target = Path(os.path.realpath(folder / name))
+    if not target.is_relative_to(folder):
+        raise GltfFileError(f"'{shown}' leaves the document's folder (only files in {path.parent}, or in folders "
+                            "inside it, are read)")
+    return target
 
 
 def load_buffer(path: Path, i: int, spec: dict, embedded: dict[int, bytes], fail: Callable[[str], NoReturn]) -> bytes:
     """Buffer ``i`` of the document at ``path``: the GLB's binary chunk, data handed in (a file
     being checked before it is written), a ``data:`` URI or a file beside the document. A
     missing file or a Git LFS pointer in its place is said so plainly."""
-    uri, length = spec.get("uri"), int(spec["byteLength"])
+    uri, length = spec.get("uri"), whole(spec["byteLength"], f"buffer {i}: byteLength", fail)
     if length < 0:
         fail(f"buffer {i}: byteLength {length} is negative")
     if i in embedded:
@@ -350,21 +426,33 @@ def load_buffer(path: Path, i: int, spec: dict, embedded: dict[int, bytes], fail
         except ValueError:
             fail(f"buffer {i}: its data: URI is not valid base64")
     else:
-        name = urllib.parse.unquote(uri)
-        if "://" in name or Path(name).is_absolute():
-            fail(f"buffer {i}: '{uri}' is not a file beside the document (only relative file names are read)")
-        target = path.parent / name
-        if not target.is_file():
-            fail(f"buffer {i}: cannot read '{name}': the file is missing (it belongs beside {path.name})")
-        try:
-            data, slack = target.read_bytes(), 0
-        except OSError as exc:
-            fail(f"buffer {i}: cannot read '{name}': {exc.strerror or exc}")
-        if data.startswith(LFS_POINTER):
-            fail(f"buffer {i}: '{name}' is a Git LFS pointer, not the data (fetch it with 'git lfs pull')")
+        data, slack = _buffer_file(path, i, uri, length, fail), 0
     if not length <= len(data) <= length + slack:
         fail(f"buffer {i}: byteLength {length} but its data hold {len(data)} bytes")
     return data[:length]
+
+
+def _buffer_file(path: Path, i: int, uri: str, length: int, fail: Callable[[str], NoReturn]) -> bytes:
+    """The bytes of buffer ``i``'s file (:func:`document_file`), read only when it has the length the
+    document gives (a Git LFS pointer named as such)."""
+    try:
+        target = document_file(path, uri)
+    except GltfFileError as exc:
+        fail(f"buffer {i}: {exc.message}")
+    name = urllib.parse.unquote(uri)
+    if not target.is_file():
+        fail(f"buffer {i}: cannot read '{name}': the file is missing (it belongs beside {path.name})")
+    try:
+        with target.open("rb") as stream:
+            size = os.fstat(stream.fileno()).st_size
+            if stream.read(len(LFS_POINTER)) == LFS_POINTER:
+                fail(f"buffer {i}: '{name}' is a Git LFS pointer, not the data (fetch it with 'git lfs pull')")
+            if size != length:
+                fail(f"buffer {i}: byteLength {length} but its data hold {size} bytes")
+            stream.seek(0)
+            return stream.read(length + 1)
+    except OSError as exc:
+        fail(f"buffer {i}: cannot read '{name}': {exc.strerror or exc}")
 
 
 def decode_accessor(doc: dict, buffer: Callable[[int], bytes], index: int, fail: Callable[[str], NoReturn],
@@ -374,22 +462,24 @@ def decode_accessor(doc: dict, buffer: Callable[[int], bytes], index: int, fail:
     Every offset, stride and count is checked against the bytes that exist
     before anything is read. With ``check_bounds`` the accessor's ``min`` and
     ``max`` must match its data (to float32 rounding)."""
-    a = doc["accessors"][index]
+    a = element(doc, "accessors", index, "the document", fail)
     where = f"accessor {index}"
     if "sparse" in a or "bufferView" not in a:
         fail(f"{where}: sparse or buffer-less accessors are not supported")
     if a.get("componentType") not in _COMPONENTS or a.get("type") not in _WIDTHS:
         fail(f"{where}: unknown componentType or type")
     dtype = np.dtype(_COMPONENTS[a["componentType"]]).newbyteorder("<")
-    width, count = _WIDTHS[a["type"]], int(a["count"])
-    view = doc["bufferViews"][a["bufferView"]]
-    data = buffer(int(view["buffer"]))
-    start, length = int(view.get("byteOffset", 0)), int(view["byteLength"])
+    width, count = _WIDTHS[a["type"]], whole(a["count"], f"{where}: count", fail)
+    view = element(doc, "bufferViews", a["bufferView"], where, fail)
+    data = buffer(index_of(view["buffer"], "buffers", len(doc.get("buffers", [])), f"bufferView {a['bufferView']}",
+                           fail))
+    start = whole(view.get("byteOffset", 0), f"bufferView {a['bufferView']}: byteOffset", fail)
+    length = whole(view["byteLength"], f"bufferView {a['bufferView']}: byteLength", fail)
     if start < 0 or length < 0 or start + length > len(data):
         fail(f"bufferView {a['bufferView']} runs past the end of buffer {view['buffer']}")
     item = dtype.itemsize * width
-    stride = int(view.get("byteStride", item))
-    offset = int(a.get("byteOffset", 0))
+    stride = whole(view.get("byteStride", item), f"bufferView {a['bufferView']}: byteStride", fail)
+    offset = whole(a.get("byteOffset", 0), f"{where}: byteOffset", fail)
     if count < 1 or offset < 0 or offset % dtype.itemsize or stride < item:
         fail(f"{where}: bad count, offset or stride")
     if offset + stride * (count - 1) + item > length:

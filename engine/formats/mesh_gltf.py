@@ -10,7 +10,11 @@ image embedded in it). Coordinates stay in metres here
 
 A buffer file that is missing, or a Git LFS pointer in its place, is named
 plainly; every count, offset and index is checked against the bytes that
-exist before anything is read (:func:`engine.formats.gltf_read.decode_accessor`).
+exist before anything is read (:func:`engine.formats.gltf_read.decode_accessor`),
+every index into the document's arrays must name an element that exists
+(:func:`~engine.formats.gltf_read.index_of`: a negative one never wraps), and
+every file URI must stay in the document's folder
+(:func:`~engine.formats.gltf_read.document_file`).
 
 >>> import json, base64, tempfile, pathlib, numpy as np
 >>> blob = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], "<f4").tobytes()
@@ -29,7 +33,6 @@ from __future__ import annotations
 
 import json
 import struct
-import urllib.parse
 from pathlib import Path
 from typing import NoReturn
 
@@ -42,6 +45,10 @@ from engine.formats.gltf_read import (
     _quaternion_matrix,
     _split_glb,
     decode_accessor,
+    document_file,
+    element,
+    index_of,
+    integers,
     load_buffer,
 )
 from engine.formats.mesh_data import MeshMaterial, MeshTexture, RawMesh
@@ -91,23 +98,33 @@ class _Importer:
         self.accessors: dict[int, np.ndarray] = {}
         self.materials: dict[int, int] = {}      # glTF material index → our material slot
         self.material_list: list[MeshMaterial] = []
+        self.notes: set[str] = set()
 
     def fail(self, what: str) -> NoReturn:
         raise MeshImportError(what, file=self.path)
 
     def buffer(self, i: int) -> bytes:
         if i not in self.buffers:
-            self.buffers[i] = load_buffer(self.path, i, self.doc["buffers"][i], self.embedded, self.fail)
+            spec = element(self.doc, "buffers", i, "a bufferView", self.fail)
+            self.buffers[i] = load_buffer(self.path, i, spec, self.embedded, self.fail)
         return self.buffers[i]
 
-    def accessor(self, index: int) -> np.ndarray:
-        if index not in self.accessors:
-            array = decode_accessor(self.doc, self.buffer, int(index), self.fail, check_bounds=False)
-            spec = self.doc["accessors"][index]
+    def accessor(self, index: object, where: str) -> np.ndarray:
+        """Accessor ``index`` (normalised integers as numbers from −1 or 0 to 1), named by ``where``."""
+        i = index_of(index, "accessors", len(self.doc.get("accessors", [])), where, self.fail)
+        if i not in self.accessors:
+            array = decode_accessor(self.doc, self.buffer, i, self.fail, check_bounds=False)
+            spec = self.doc["accessors"][i]
             if spec.get("normalized") and spec["componentType"] in _NORMALIZED:
                 array = np.maximum(array / _NORMALIZED[spec["componentType"]], -1.0)
-            self.accessors[index] = array
-        return self.accessors[index]
+            self.accessors[i] = array
+        return self.accessors[i]
+
+    def indices(self, index: object, where: str) -> np.ndarray:
+        """A primitive's vertex indices: an accessor of integers (never normalised), as int64."""
+        i = index_of(index, "accessors", len(self.doc.get("accessors", [])), f"{where}: indices", self.fail)
+        return integers(decode_accessor(self.doc, self.buffer, i, self.fail, check_bounds=False),
+                        f"{where}: indices", self.fail)
 
     def mesh(self) -> RawMesh:
         meshes = self.doc.get("meshes", [])
@@ -136,6 +153,7 @@ class _Importer:
                 face_material.append(np.full(len(triangles), material, dtype=np.int64))
                 face_part.append(np.full(len(triangles), part_names.index(label), dtype=np.int64))
                 offset += len(points)
+        notes |= self.notes
         if not faces:
             return RawMesh(np.zeros((0, 3)), np.zeros(0, dtype=np.int64), [], np.zeros(0, dtype=np.int64),
                            units="m", notes=sorted(notes))
@@ -153,23 +171,27 @@ class _Importer:
         scenes = self.doc.get("scenes", [])
         if not scenes:
             return [(i, self.mesh_label(i, None), np.eye(4)) for i in range(n_meshes)]
-        roots = scenes[int(self.doc.get("scene", 0))].get("nodes", [])
+        roots = element(self.doc, "scenes", self.doc.get("scene", 0), "'scene'", self.fail).get("nodes", [])
         out = []
-        stack: list[tuple[int, np.ndarray, tuple[int, ...]]] = [(int(r), np.eye(4), ()) for r in reversed(roots)]
+        stack: list[tuple[int, np.ndarray, tuple[int, ...]]] = [
+            (index_of(r, "nodes", len(nodes), f"scene {self.doc.get('scene', 0)}", self.fail), np.eye(4), ())
+            for r in reversed(roots)]
         visited = 0
         while stack:
             index, parent, ancestors = stack.pop()
             visited += 1
             if index in ancestors or visited > _MAX_NODES_VISITED:
                 self.fail(f"node {index} is its own ancestor (the node tree has a cycle)")
-            node = nodes[index]
-            world = parent @ _local_matrix(node)
+            node = element(self.doc, "nodes", index, "a scene", self.fail)
+            with np.errstate(all="ignore"):         # huge scales multiplied down a tree: checked just below
+                world = parent @ _local_matrix(node)
+            if not np.all(np.isfinite(world)):
+                self.fail(f"node {index}: its transform (with its parents') is too large for numbers")
             if "mesh" in node:
-                mesh_index = int(node["mesh"])
-                if not 0 <= mesh_index < n_meshes:
-                    self.fail(f"node {index} names mesh {mesh_index}, which does not exist")
+                mesh_index = index_of(node["mesh"], "meshes", n_meshes, f"node {index}", self.fail)
                 out.append((mesh_index, self.mesh_label(mesh_index, node), world))
-            stack.extend((int(c), world, (*ancestors, index)) for c in reversed(node.get("children", [])))
+            stack.extend((index_of(c, "nodes", len(nodes), f"node {index}'s children", self.fail), world,
+                          (*ancestors, index)) for c in reversed(node.get("children", [])))
         return out
 
     def mesh_label(self, index: int, node: dict | None) -> str:
@@ -185,51 +207,62 @@ class _Importer:
         attributes = spec["attributes"]
         if "POSITION" not in attributes:
             self.fail(f"{where} has no POSITION")
-        positions = np.asarray(self.accessor(attributes["POSITION"]), dtype=float)
+        positions = np.asarray(self.accessor(attributes["POSITION"], f"{where}: POSITION"), dtype=float)
         if positions.ndim != 2 or positions.shape[1] != 3:
             self.fail(f"{where}: POSITION is not a list of 3-vectors")
+        if not np.all(np.isfinite(positions)):
+            self.fail(f"{where}: POSITION holds numbers that are not finite")
         n = len(positions)
-        order = (self.accessor(spec["indices"]).astype(np.int64) if "indices" in spec
-                 else np.arange(n, dtype=np.int64))
+        order = self.indices(spec["indices"], where) if "indices" in spec else np.arange(n, dtype=np.int64)
         if order.ndim != 1 or (len(order) and (order.min() < 0 or order.max() >= n)):
             self.fail(f"{where}: an index is not one of its {n} vertices")
         triangles = _triangles(order, mode)
         if len(triangles) == 0:
             return None
-        if np.linalg.det(matrix[:3, :3]) < 0:          # a mirroring transform turns faces inside out
+        if np.linalg.slogdet(matrix[:3, :3])[0] < 0:     # a mirror turns faces inside out (slogdet: no overflow)
             triangles = triangles[:, ::-1]
-        points = positions @ matrix[:3, :3].T + matrix[:3, 3]
+        with np.errstate(all="ignore"):                  # a finite transform can still overflow: checked below
+            points = positions @ matrix[:3, :3].T + matrix[:3, 3]
+        if not np.all(np.isfinite(points)):
+            self.fail(f"{where}: its node transform takes vertices beyond the range of numbers")
         uv = None
         if "TEXCOORD_0" in attributes:
-            uv = np.asarray(self.accessor(attributes["TEXCOORD_0"]), dtype=float)
+            uv = np.asarray(self.accessor(attributes["TEXCOORD_0"], f"{where}: TEXCOORD_0"), dtype=float)
             if uv.ndim != 2 or uv.shape != (n, 2):
                 self.fail(f"{where}: TEXCOORD_0 is not one (u, v) pair per vertex")
             uv = np.column_stack([uv[:, 0], 1.0 - uv[:, 1]])     # glTF's v runs down the image; ours up
-        material = self.material(spec["material"]) if "material" in spec else -1
+        material = self.material(spec["material"], where) if "material" in spec else -1
         return points, triangles, uv, material
 
-    def material(self, index: int) -> int:
-        index = int(index)
+    def material(self, value: object, where: str) -> int:
+        index = index_of(value, "materials", len(self.doc.get("materials", [])), where, self.fail)
         if index not in self.materials:
-            spec = self.doc["materials"][index]
+            spec = element(self.doc, "materials", index, where, self.fail)
             name = str(spec.get("name") or f"material_{index}")
             texture = spec.get("pbrMetallicRoughness", {}).get("baseColorTexture")
-            image = self.image(int(texture["index"])) if texture is not None else None
+            image = self.image(texture["index"], f"material {index}") if texture is not None else None
             self.materials[index] = len(self.material_list)
             self.material_list.append(MeshMaterial(name, image))
         return self.materials[index]
 
-    def image(self, texture_index: int) -> str | None:
-        texture = self.doc["textures"][texture_index]
+    def image(self, texture_index: object, where: str) -> str | None:
+        """The base-colour image: a file in the document's folder (:func:`document_file`; one elsewhere is
+        left out with a note), or a description of an image embedded in the document."""
+        texture = element(self.doc, "textures", texture_index, where, self.fail)
         if "source" not in texture:
             return None
-        image = self.doc["images"][int(texture["source"])]
+        image = element(self.doc, "images", texture["source"], f"texture {texture_index}", self.fail)
         uri = image.get("uri")
         if isinstance(uri, str) and uri.startswith("data:"):
             return f"embedded: {uri[5:].split(';', 1)[0].split(',', 1)[0] or 'image'}"
         if isinstance(uri, str):
-            return str(self.path.parent / urllib.parse.unquote(uri))
-        view = self.doc["bufferViews"][int(image["bufferView"])]
+            try:
+                return str(document_file(self.path, uri))
+            except GltfFileError as exc:
+                self.notes.add(f"image left out: {exc.message}")
+                return None
+        view = element(self.doc, "bufferViews", image.get("bufferView"), f"image {texture['source']}", self.fail)
+        index_of(view.get("buffer"), "buffers", len(self.doc.get("buffers", [])), "the image's bufferView", self.fail)
         return f"embedded: {image.get('mimeType', 'image')}, {int(view['byteLength'])} bytes"
 
 

@@ -130,11 +130,15 @@ def read_mesh(path: str | Path, scale: float | None = None, *, keep_units: bool 
         raise MeshImportError("has vertex coordinates that are not finite numbers", file=path)
     if scale is None:
         factor = 1000.0 if raw.units == "m" and not keep_units else 1.0
+    with np.errstate(over="ignore", invalid="ignore"):      # 1e308 in the file, × 1000 to mm: refused below
+        scaled = vertices @ rotation.T * factor
+    if not np.all(np.isfinite(scaled)):
+        raise MeshImportError(f"has vertex coordinates too large to scale by {factor:g} (they pass the largest "
+                              "number)", file=path)
     if raw.texture is not None:
         raw.notes += [f"image '{image}' is missing" for image in raw.texture.images()
                       if not image.startswith("embedded:") and not Path(image).is_file()]
-    return ImportedMesh(vertices @ rotation.T * factor, faces, part_names, vertex_part, raw.texture, factor,
-                        normalise_up(up), raw.notes)
+    return ImportedMesh(scaled, faces, part_names, vertex_part, raw.texture, factor, normalise_up(up), raw.notes)
 
 
 def up_rotation(up: str) -> np.ndarray:

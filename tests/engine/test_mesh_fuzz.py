@@ -6,6 +6,11 @@ child process, so a crash or hang there must still end in our error). The
 mutations overwrite, insert, delete and cut bytes, and insert numbers that
 make counts huge, negative or non-finite.
 
+A glTF's structure is fuzzed as well: its references (accessor, bufferView, buffer, mesh,
+material, node, scene indices), node transforms and buffer URI given hostile values (negative
+and huge indices, non-numbers, ``../`` and percent-encoded URIs, links out of the folder): each
+reads without any warning, never with the bytes of the file outside the folder, or is refused.
+
 CI size: ``AP_FUZZ_EXAMPLES`` inputs per format (default 200; legacy VTK (a
 polygon surface and a volume grid), which starts a process per input, a tenth
 of that). Release check:
@@ -16,8 +21,10 @@ refused with our error; see docs/meshes.md for the last such run).
 
 from __future__ import annotations
 
+import json
 import os
 import tempfile
+import warnings
 from collections import Counter
 from pathlib import Path
 
@@ -164,3 +171,82 @@ def test_vtk_in_a_child_survives_mutated_files(name, tmp_path_factory):
 
     run()
     _report(f"{name} (VTK in a child process)", counts)
+
+
+# -- glTF structure: hostile references, transforms and URIs ---------------------------------------------
+
+STRIP = json.loads((DATA / "Mesh_PrimitiveMode_04.gltf").read_text())
+STRIP_BIN = (DATA / "Mesh_PrimitiveMode_04.bin").read_bytes()
+#: outside the glTF's folder, of the .bin's length and a valid buffer too, so that a read of it would succeed
+OUTSIDE = (np.frombuffer(STRIP_BIN, "<f4") + 7).astype("<f4").tobytes()
+FIELDS = [("accessors", 0, "bufferView"), ("accessors", 0, "count"), ("accessors", 0, "byteOffset"),
+          ("accessors", 0, "componentType"), ("bufferViews", 0, "buffer"), ("bufferViews", 0, "byteOffset"),
+          ("bufferViews", 0, "byteLength"), ("bufferViews", 0, "byteStride"), ("buffers", 0, "byteLength"),
+          ("meshes", 0, "primitives", 0, "attributes", "POSITION"), ("meshes", 0, "primitives", 0, "indices"),
+          ("meshes", 0, "primitives", 0, "material"), ("meshes", 0, "primitives", 0, "mode"), ("nodes", 0, "mesh"),
+          ("nodes", 0, "children"), ("nodes", 0, "scale"), ("nodes", 0, "rotation"), ("nodes", 0, "translation"),
+          ("nodes", 0, "matrix"), ("scenes", 0, "nodes"), ("scene",)]
+VALUES = [-1, -2, 0, 1, 2, 3, 2**31, 2**64, 1.5, 1e308, float("nan"), float("inf"), True, None, "0", [], [-1],
+          [1e300, 1e300, 1e300], [1e300, 0, 0, 1], [0, 0, 0, 0], [1e-300, 0, 0, 0], [float("nan")] * 3,
+          [1e300] + [0] * 4 + [1e300] + [0] * 4 + [1e300] + [0] * 5, {}]
+URIS = ["../outside.bin", "%2e%2e/outside.bin", "%2E%2E%2Foutside.bin", "sub%2F..%2F..%2Foutside.bin",
+        "..%5Coutside.bin", "link.bin", "up/outside.bin", "/etc/passwd", "file:///etc/passwd", "%00", "%ff",
+        "Mesh_PrimitiveMode_04.bin", "./Mesh_PrimitiveMode_04.bin", "Mesh%5FPrimitiveMode%5F04.bin", ""]
+
+
+@st.composite
+def hostile_gltf(draw: st.DrawFn) -> dict:
+    doc = json.loads(json.dumps(STRIP))
+    for _ in range(draw(st.integers(1, 4))):
+        if draw(st.booleans()):
+            doc["buffers"][0]["uri"] = draw(st.sampled_from(URIS))
+            continue
+        *keys, last = draw(st.sampled_from(FIELDS))
+        node = doc
+        for key in keys:
+            node = node[key]
+        node[last] = draw(st.sampled_from(VALUES))
+    return doc
+
+
+def test_gltf_structure_with_hostile_values_reads_cleanly_or_is_refused(tmp_path_factory):
+    root = tmp_path_factory.mktemp("hostile")
+    outside = root / "outside.bin"
+    outside.write_bytes(OUTSIDE)
+    folder = root / "models"
+    folder.mkdir()
+    (folder / "Mesh_PrimitiveMode_04.bin").write_bytes(STRIP_BIN)
+    (folder / "link.bin").symlink_to(root / "outside.bin")
+    (folder / "up").symlink_to(root)
+    path = folder / "strip.gltf"
+    counts: Counter = Counter()
+
+    @settings(max_examples=EXAMPLES, deadline=None, derandomize=True, database=None,
+              suppress_health_check=[HealthCheck.too_slow])
+    @given(hostile_gltf())
+    def run(doc: dict) -> None:
+        counts["tried"] += 1
+        path.write_text(json.dumps(doc))
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")          # numpy's RuntimeWarnings too, whichever module they come from
+            try:
+                mesh = read_mesh(path, timeout=30)
+            except MeshImportError as exc:
+                message = str(exc)
+            else:
+                message = ""
+        if message:
+            assert message.startswith(f"{path}:"), message
+            counts["refused"] += 1
+            return
+        assert np.all(np.isfinite(mesh.vertices)) and len(mesh.faces)
+        outside.write_bytes(OUTSIDE[::-1])             # were the file outside read, the mesh would change with it
+        try:
+            again = read_mesh(path, timeout=30).vertices
+        finally:
+            outside.write_bytes(OUTSIDE)
+        assert np.array_equal(again, mesh.vertices), "the file outside the folder was read"
+        counts["read"] += 1
+
+    run()
+    _report("glTF structure (hostile references, transforms, URIs)", counts)
