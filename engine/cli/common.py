@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import argparse
 import math
+import os
+import stat
 import sys
 from pathlib import Path
 from typing import NoReturn
@@ -62,18 +64,34 @@ def add_library_option(p: argparse.ArgumentParser) -> None:
 # -- argument types --------------------------------------------------------------------
 
 def setting(text: str) -> tuple[str, float]:
-    """``NAME=VALUE`` with a finite number."""
+    """``NAME=VALUE`` with a finite number.
+
+    >>> setting("jaw_open=" + "9" * 401)                                   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    argparse.ArgumentTypeError: jaw_open: the value must be a finite number, not '999...' (401 characters)
+    """
     name, sep, value = text.partition("=")
     name = name.strip()
     if not sep or not name:
-        raise argparse.ArgumentTypeError(f"'{text}' is not NAME=VALUE (e.g. jaw_open=0.5)")
+        raise argparse.ArgumentTypeError(f"{quoted(text)} is not NAME=VALUE (e.g. jaw_open=0.5)")
     try:
         number = float(value)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}': '{value}' is not a number") from None
-    if not math.isfinite(number):
-        raise argparse.ArgumentTypeError(f"'{text}': the value must be a finite number")
+        raise argparse.ArgumentTypeError(f"{quoted(name)}: {quoted(value)} is not a number") from None
+    if not math.isfinite(number):                # 'inf', 'nan', or more digits than a float holds (1e309)
+        raise argparse.ArgumentTypeError(f"{name if len(name) <= 40 else quoted(name)}: the value must be a "
+                                         f"finite number, not {quoted(value)}")
     return name, number
+
+
+def quoted(text: str, keep: int = 20) -> str:
+    """``text`` quoted for a message, its start only when it is long (a 401-digit value is not printed whole).
+
+    >>> quoted("0.5"), quoted("1" * 30)
+    ("'0.5'", "'11111111111111111111…' (30 characters)")
+    """
+    text = str(text)
+    return f"'{text}'" if len(text) <= keep + 5 else f"'{text[:keep]}…' ({len(text)} characters)"
 
 
 def size(text: str) -> tuple[int, int]:
@@ -94,9 +112,11 @@ def positive_number(text: str) -> float:
     try:
         number = float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
-    if not (math.isfinite(number) and number > 0):
-        raise argparse.ArgumentTypeError(f"'{text}' must be a positive number")
+        raise argparse.ArgumentTypeError(f"{quoted(text)} is not a number") from None
+    if not math.isfinite(number):                # 'inf', 'nan', or more digits than a float holds (1e309)
+        raise argparse.ArgumentTypeError(f"{quoted(text)} must be a finite positive number")
+    if number <= 0:
+        raise argparse.ArgumentTypeError(f"{quoted(text)} must be a positive number")
     return number
 
 
@@ -121,7 +141,7 @@ def time_ms(text: str) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a number of milliseconds") from None
+        raise argparse.ArgumentTypeError(f"{quoted(text)} is not a number of milliseconds") from None
     try:
         return check_time(value, "the time")
     except LimitProblem as exc:
@@ -133,9 +153,11 @@ def non_negative(text: str) -> float:
     try:
         value = float(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a number") from None
-    if not (value >= 0 and value != float("inf")):
-        raise argparse.ArgumentTypeError(f"'{text}' must be 0 or more")
+        raise argparse.ArgumentTypeError(f"{quoted(text)} is not a number") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"{quoted(text)} must be a finite number, 0 or more")
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"{quoted(text)} must be 0 or more")
     return value
 
 
@@ -153,9 +175,11 @@ def _whole_number(text: str, lowest: int, highest: int | None, out_of_range: str
     try:
         value = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not a whole number") from None
+        raise argparse.ArgumentTypeError(f"{quoted(text)} is not a whole number" + (
+            " (it has more digits than a number here can have)" if text.strip().lstrip("+-").isdigit() else "")
+        ) from None
     if value < lowest or (highest is not None and value > highest):
-        raise argparse.ArgumentTypeError(f"'{text}' {out_of_range}")
+        raise argparse.ArgumentTypeError(f"{quoted(text)} {out_of_range}")
     return value
 
 
@@ -186,12 +210,48 @@ def parameter_values(model: Model, settings: list[tuple[str, float]]) -> dict[st
 
 
 def require_suffix(path: str, allowed: tuple[str, ...], what: str) -> Path:
-    """``path`` as a :class:`Path` if its extension is one of ``allowed``, else a :class:`UserError`."""
+    """``path`` as a :class:`Path` if its extension is one of ``allowed`` and it can be a file
+    (:func:`output_file`), else a :class:`UserError`."""
     out = Path(path)
     if out.suffix.lower() not in allowed:
         raise UserError(f"unknown output extension '{out.suffix or out.name}' for {what} "
                         f"(use {either(allowed)})", file=out)
-    return out
+    return output_file(path)
+
+
+def output_file(path: str | Path, what: str = "the output") -> Path:
+    """``path`` as a :class:`Path` if a file may be written there: nothing is there yet, or a regular file.
+
+    A folder (or a name ending in ``/``), a device (``/dev/null``) or a named pipe is a
+    :class:`UserError`: the writers would put files beside it (``/dev/null.xml``) or replace it.
+
+    >>> output_file("/dev/null")
+    Traceback (most recent call last):
+    engine.errors.UserError: /dev/null: the output must be a file, not a device or a pipe
+    """
+    shown = str(path)
+    if shown.endswith(("/", os.sep)):
+        raise UserError(f"{what} must be a file name, not a folder", file=shown)
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):      # not there (or a name the writer will refuse, naming why): a new file
+        return Path(path)
+    if stat.S_ISDIR(mode):
+        raise UserError(f"{what} must be a file, not a folder", file=shown)
+    if not stat.S_ISREG(mode):
+        raise UserError(f"{what} must be a file, not a device or a pipe", file=shown)
+    return Path(path)
+
+
+def model_output(path: str | Path) -> Path:
+    """``-o MODEL``: the description (``.xml``) :func:`~engine.formats.model_files.save_model` writes for
+    ``path``, once ``path`` and both its files (``.xml``, ``.h5``) are checked by :func:`output_file`."""
+    from engine.formats.model_files import model_file_paths
+
+    output_file(path, "the model")
+    description, arrays = model_file_paths(path)
+    output_file(arrays, "the model's arrays")
+    return output_file(description, "the model")
 
 
 def either(options: tuple[str, ...]) -> str:

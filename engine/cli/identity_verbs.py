@@ -41,6 +41,9 @@ def run_identity(args: argparse.Namespace) -> int:
         return 0
     if not args.output:
         raise UserError("identity: give -o PERSON.xml (or --list)")
+    from engine.cli.common import model_output
+
+    model_output(args.output)                  # not /dev/null (it wrote /dev/null.xml and /dev/null.h5), no folder
     morphing = [args.source, args.target, args.at]
     if any(v is not None for v in morphing) and not all(v is not None for v in morphing):
         raise IdentityError("a morph needs all of --from A.xml, --to B.xml and --at T")

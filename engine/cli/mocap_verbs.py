@@ -16,6 +16,7 @@ function that adds its sub-parser and sets ``run``; :data:`STEPS` lists them.
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from pathlib import Path
 from typing import Any
@@ -24,9 +25,12 @@ from engine.cli.common import (
     VIEW_NAMES,
     add_model_option,
     load_model_argument,
+    model_output,
     non_negative,
+    output_file,
     positive_int,
     positive_number,
+    quoted,
     size,
     time_ms,
 )
@@ -210,6 +214,7 @@ def run_import(args: argparse.Namespace) -> int:
     out = Path(args.output)
     if out.suffix.lower() not in SESSION_SUFFIXES:
         raise UserError(f"unknown output extension '{out.suffix or out.name}' for a session (use .h5)", file=out)
+    output_file(args.output)
     csv_given = args.columns or args.time_column or args.rate or args.units != "mm"
     if csv_given and Path(args.file).is_file():
         from engine.mocap.readers import detect_format
@@ -271,6 +276,7 @@ def run_apply(args: argparse.Namespace) -> int:
     from engine.mocap.session import load_session
 
     out = _suffix(args.output, (".xml",), "a model")
+    model_output(out)
     if args.inner >= args.outer:
         raise UserError(f"--inner ({args.inner:g} mm) must be less than --outer ({args.outer:g} mm)")
     art = load_articulation_file(args.articulation)
@@ -306,7 +312,7 @@ def _suffix(path: str, allowed: tuple[str, ...], what: str) -> Path:
     if out.suffix.lower() not in allowed:
         raise UserError(f"unknown extension '{out.suffix or out.name}' for {what} (use {' or '.join(allowed)})",
                         file=out)
-    return out
+    return output_file(path)
 
 
 # -- argument types ------------------------------------------------------------
@@ -316,7 +322,9 @@ def _value_range(text: str) -> tuple[float, float]:
     try:
         lo, hi = (float(p) for p in parts)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"'{text}' is not MIN,MAX (e.g. -3,3)") from None
+        raise argparse.ArgumentTypeError(f"{quoted(text)} is not MIN,MAX (e.g. -3,3)") from None
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        raise argparse.ArgumentTypeError(f"{quoted(text)}: MIN and MAX must be finite numbers")
     if not lo < hi:
         raise argparse.ArgumentTypeError(f"'{text}': MIN must be less than MAX")
     return lo, hi

@@ -22,11 +22,12 @@ def add_verbs(verbs: Any) -> None:
 
 
 def run_fit_photos(args: argparse.Namespace) -> int:
-    from engine.cli.common import require_suffix
+    from engine.cli.common import model_output, require_suffix
     from engine.formats.model_files import save_model
     from engine.photofit import fit_photo_files
 
     require_suffix(args.output, (".xml",), "a model file")
+    model_output(args.output)
     result = fit_photo_files(args.front, args.side, args.landmarks)
     written = save_model(result.head, args.output)
     s = result.seconds

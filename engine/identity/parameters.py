@@ -148,11 +148,14 @@ class Identity(IdentityRecord):
             try:
                 value = float(raw)
             except (TypeError, ValueError):
-                raise IdentityError(f"identity parameter '{name}' must be a number, not {raw!r}") from None
-            if not math.isfinite(value) or not p.minimum <= value <= p.maximum:
+                raise IdentityError(f"identity parameter '{name}' must be a number, not {_shown(raw)}") from None
+            except OverflowError:                # an int of 401 digits: larger than any float
+                value = math.inf
+            if not math.isfinite(value):         # inf, nan, or a number of more digits than a float holds
+                raise IdentityError(f"identity parameter '{name}' must be a finite number, not {_shown(raw)}")
+            if not p.minimum <= value <= p.maximum:
                 raise IdentityError(f"identity parameter '{name}' = {value:g} is outside its range "
-                                    f"[{p.minimum:g}, {p.maximum:g}]" if math.isfinite(value) else
-                                    f"identity parameter '{name}' must be a finite number")
+                                    f"[{p.minimum:g}, {p.maximum:g}]")
             if value != p.default:
                 checked[name] = value
         if sum(checked.get(r, _by_name()[r].default) for r in RACES) <= 0:
@@ -207,14 +210,33 @@ def age_value(years: float) -> float:
 
 
 def parse_assignments(items: Iterable[str], where: str = "--set") -> dict[str, float]:
-    """``NAME=VALUE`` strings as a dict, or :class:`IdentityError` naming the bad one."""
+    """``NAME=VALUE`` strings as a dict, or :class:`IdentityError` naming the bad one.
+
+    >>> parse_assignments(["age=" + "9" * 401])                           # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    engine.identity.errors.IdentityError: --set age: the value must be a finite number, not '999...' (401 characters)
+    """
     out: dict[str, float] = {}
     for item in items:
         name, eq, raw = item.partition("=")
         if not eq or not name.strip():
-            raise IdentityError(f"{where} {item!r}: write NAME=VALUE, e.g. sex=1 or age=40")
+            raise IdentityError(f"{where} {_shown(item)}: write NAME=VALUE, e.g. sex=1 or age=40")
+        label = f"{where} {name.strip() if len(name.strip()) <= 40 else _shown(name.strip())}"
         try:
-            out[name.strip()] = float(raw)
+            value = float(raw)
         except ValueError:
-            raise IdentityError(f"{where} {item!r}: the value must be a number") from None
+            raise IdentityError(f"{label}: the value must be a number, not {_shown(raw)}") from None
+        if not math.isfinite(value):
+            raise IdentityError(f"{label}: the value must be a finite number, not {_shown(raw)}")
+        out[name.strip()] = value
     return out
+
+
+def _shown(raw: object, keep: int = 20) -> str:
+    """``raw`` as a message shows it: quoted, and only its start when it is long (401 digits)."""
+    if isinstance(raw, int) and not isinstance(raw, bool) and raw.bit_length() > 10_000:
+        return f"a whole number of about {int(raw.bit_length() * math.log10(2))} digits"   # str() refuses it
+    text = raw if isinstance(raw, str) else str(raw) if isinstance(raw, int | float) else repr(raw)
+    if len(text) > keep + 5:
+        return f"'{text[:keep]}…' ({len(text)} characters)"
+    return f"'{text}'" if isinstance(raw, str) else text
