@@ -21,7 +21,6 @@ The folder works offline from any static web server (nothing is fetched from els
 from __future__ import annotations
 
 import json
-import shutil
 from collections.abc import Sequence
 from importlib import resources
 from pathlib import Path
@@ -30,6 +29,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from engine.errors import UserError
+from engine.formats.atomic import atomic_files, finish_interrupted_writes
 from engine.outputs.camera import VIEW_ANGLE, VIEWS, camera_pose, framed_points
 from engine.outputs.gltf_skeleton import skeleton_parameters
 from engine.speech.synthesis import Segment
@@ -161,27 +161,58 @@ def json_bytes(document: dict[str, Any]) -> bytes:
 def write_folder(out: Path, glb: bytes, files: dict[str, bytes], size: tuple[int, int],
                  first_animation: str) -> dict[str, int]:
     """The page, the player, three.js and the model, with ``files`` (path in the site → bytes), into ``out``;
-    the page opens ``first_animation`` unless its address names a stimulus. Each file replaces its old one
-    whole (written beside it, then renamed). Returns each file's size (three.js as one entry, ``three/``)."""
+    the page opens ``first_animation`` unless its address names a stimulus. Returns each file's size
+    (three.js as one entry, ``three/``).
+
+    Every file is written by :func:`engine.formats.atomic.atomic_files`, all under one journal: each goes
+    to a new temporary file of a random name beside its target (so a link planted at some fixed name is
+    never followed) and is renamed over it once all are written; an export killed half-way is finished by
+    the next one into the folder (:func:`check_folder`), or, killed before its first rename, undone. A
+    link in place of a file is replaced, not followed; a folder of the site that is a link is refused."""
     out.mkdir(parents=True, exist_ok=True)
     page = (_player_file("index.html").replace("{{WIDTH}}", str(size[0])).replace("{{HEIGHT}}", str(size[1]))
             .replace("{{ANIMATION}}", first_animation))
     everything = {"index.html": page.encode("utf-8"), "player.js": _player_file("player.js").encode("utf-8"),
                   "head.glb": glb, **files}
-    for name, blob in everything.items():
-        target = out / name
-        target.parent.mkdir(parents=True, exist_ok=True)
-        temporary = target.with_name(f".{target.name}.part")
-        temporary.write_bytes(blob)
-        temporary.replace(target)
-    three = out / "three"
-    if three.exists():
-        shutil.rmtree(three)
-    with resources.as_file(resources.files("engine.web") / "vendor" / "three") as vendored:
-        shutil.copytree(vendored, three, ignore=shutil.ignore_patterns("README.md"))
+    three = _vendored_three()
+    contents = {**everything, **three}
+    targets = {name: _site_path(out, name) for name in contents}
+    with atomic_files(targets.values()) as temporary:
+        for name, target in targets.items():
+            temporary[target].write_bytes(contents[name])
     sizes = {name: len(blob) for name, blob in everything.items()}
-    sizes["three/"] = sum(f.stat().st_size for f in three.rglob("*") if f.is_file())
+    sizes["three/"] = sum(len(blob) for blob in three.values())
     return sizes
+
+
+def _vendored_three() -> dict[str, bytes]:
+    """three.js as the package holds it (``engine/web/vendor/three``, its README left out): path in the site → bytes."""
+    found: dict[str, bytes] = {}
+
+    def walk(folder: Any, prefix: str) -> None:
+        for entry in sorted(folder.iterdir(), key=lambda e: e.name):
+            if entry.is_dir():
+                walk(entry, f"{prefix}{entry.name}/")
+            elif f"{prefix}{entry.name}" != "three/README.md":
+                found[f"{prefix}{entry.name}"] = entry.read_bytes()
+
+    walk(resources.files("engine.web") / "vendor" / "three", "three/")
+    return found
+
+
+def _site_path(out: Path, name: str) -> Path:
+    """The path of the site's file ``name`` (``stimuli/x.wav``), its folders made inside ``out``; a folder
+    on the way that is a symbolic link (which would take the file out of the site) or a file is refused."""
+    folder = out
+    for part in Path(name).parts[:-1]:
+        folder = folder / part
+        if folder.is_symlink():
+            raise UserError("is a symbolic link: the site's folders must be its own (remove the link)", file=folder)
+        if not folder.exists():
+            folder.mkdir()
+        elif not folder.is_dir():
+            raise UserError("is a file where the site needs a folder", file=folder)
+    return folder / Path(name).name
 
 
 def write_tracks_site(model: Model, tracks: str | Path, audio: str | Path, out: str | Path,
@@ -240,11 +271,50 @@ def _player_file(name: str) -> str:
 
 
 def check_folder(out: Path) -> None:
-    """Refuse a file, or a folder that holds anything but an earlier site."""
+    """Refuse a file, or a folder that holds anything but an earlier site.
+
+    An earlier export killed half-way is finished first, or undone if it was killed before its first
+    rename (:func:`engine.formats.atomic.finish_interrupted_writes` on the site's folders), so that its
+    leftovers never make the folder look like someone else's."""
     if out.exists() and not out.is_dir():
         raise UserError("the site must be a folder, and this is a file", file=out)
-    if out.is_dir() and any(out.iterdir()):
+    if not out.is_dir():
+        return
+    for folder in _site_folders(out):
+        finish_interrupted_writes(folder)
+    if _holds_files(out):
         index = out / "index.html"
-        if not (index.is_file() and MARKER in index.read_text(encoding="utf-8", errors="replace")):
+        if not (index.is_file() and MARKER in _head_of(index)):
             raise UserError("the folder is not empty and holds no earlier site: choose a new or empty folder",
                             file=out)
+
+
+#: The folders a site has of its own (three.js, a stimulus set's files), besides the site's own folder.
+_SUBFOLDERS = ("three", "stimuli")
+
+
+def _site_folders(out: Path) -> list[Path]:
+    """``out`` and every folder of the site under it (links not followed)."""
+    folders = [out]
+    for name in _SUBFOLDERS:
+        top = out / name
+        if top.is_dir() and not top.is_symlink():
+            folders += [top, *(p for p in top.rglob("*") if p.is_dir() and not p.is_symlink())]
+    return folders
+
+
+def _holds_files(out: Path) -> bool:
+    """True if ``out`` holds anything but the site's own folders empty of files (what a new export
+    killed before its first rename leaves once its temporary files are gone)."""
+    for entry in out.iterdir():
+        if entry.name not in _SUBFOLDERS or entry.is_symlink() or not entry.is_dir():
+            return True
+        if any(not p.is_dir() or p.is_symlink() for p in entry.rglob("*")):
+            return True
+    return False
+
+
+def _head_of(index: Path) -> str:
+    """The first 64 kB of a page (the marker is in its head): a huge file named index.html is not read whole."""
+    with index.open("rb") as stream:
+        return stream.read(65536).decode("utf-8", errors="replace")
