@@ -21,13 +21,11 @@ An emotion is one of the classifier's seven classes (:data:`EMOTIONS`) or a libr
 
 from __future__ import annotations
 
-import csv
-import io
 from dataclasses import dataclass
 from pathlib import Path
 
 from engine.errors import UserError
-from engine.formats.text_files import read_bounded_text
+from engine.formats.csv_tables import read_table
 from engine.validation.observers import EMOTIONS
 
 EXPRESSION_CLASSES = {
@@ -81,15 +79,12 @@ def intended_emotion(expression: str, intensity: float = 100.0, expression_b: st
 def read_intended(path: str | Path) -> dict[Path, Intended]:
     """The ``--intended`` table: resolved file path → what it was meant to show."""
     path = Path(path)
-    text = read_bounded_text(path, what="intended table")
-    rows = csv.DictReader(io.StringIO(text))
-    header = rows.fieldnames or []
+    header, rows = read_table(path, what="intended table")
     if "file" not in header or not {"emotion", "identity", "landmarks"} & set(header):
         raise UserError("the intended table needs a 'file' column and one of 'emotion', 'identity', 'landmarks'",
                         file=path, line=1)
     out: dict[Path, Intended] = {}
-    for row in rows:
-        line = rows.line_num
+    for line, row in rows:
         name = (row.get("file") or "").strip()
         if not name:
             raise UserError("a row with no file", file=path, line=line)
@@ -112,14 +107,12 @@ def read_set(folder: str | Path) -> list[SetFile]:
     what it was meant to show. One video a stimulus is judged (``mp4`` before ``silent-mp4``)."""
     folder = Path(folder)
     manifest = folder / "manifest.csv"
-    text = read_bounded_text(manifest, what="stimulus manifest")
-    rows = csv.DictReader(io.StringIO(text))
-    header = rows.fieldnames or []
+    header, rows = read_table(manifest, what="stimulus manifest")
     if "id" not in header:
         raise UserError("not a stimulus manifest: it has no 'id' column", file=manifest, line=1)
     files: list[SetFile] = []
-    for row in rows:
-        intended = _stimulus_intended(row, folder, manifest, rows.line_num)
+    for line, row in rows:
+        intended = _stimulus_intended(row, folder, manifest, line)
         if row.get("file_png"):
             files.append(SetFile(folder / row["file_png"], "png", intended))
         video = next((kind for kind in VIDEO_KINDS if row.get(f"file_{kind}")), None)

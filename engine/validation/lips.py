@@ -18,15 +18,13 @@ where a face was found, and every intended closure (a run of frames with a gap o
 
 from __future__ import annotations
 
-import csv
-import io
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from engine.errors import UserError
-from engine.formats.text_files import read_bounded_text
+from engine.formats.csv_tables import read_table
 from engine.model import Model
 from engine.validation.measures import CLOSED_APERTURE
 
@@ -92,19 +90,16 @@ def lip_track(model: Model, times: np.ndarray, values: np.ndarray) -> LipTrack:
 
 def read_landmarks_track(path: str | Path) -> LipTrack:
     """The intended lip gap from a landmarks table (``say --landmarks``: ``frame,time_ms,<id>_x,…``)."""
-    text = read_bounded_text(path, what="landmarks table")
-    rows = csv.reader(io.StringIO(text))
-    header = next(rows, None)
+    header, rows = read_table(path, what="landmarks table")
     needed = ["time_ms"] + [f"{point}_{axis}" for point in (UPPER, LOWER) for axis in "xyz"]
-    if header is None or any(name not in header for name in needed):
+    if any(name not in header for name in needed):
         raise UserError(f"not a landmarks table: its header must have {', '.join(needed)}", file=path, line=1)
-    columns = [header.index(name) for name in needed]
     times: list[float] = []
     gaps: list[float] = []
-    for line, row in enumerate(rows, start=2):
+    for line, row in rows:
         try:
-            t, *xyz = (float(row[c]) for c in columns)
-        except (IndexError, ValueError):
+            t, *xyz = (float(row[name]) for name in needed)
+        except ValueError:
             raise UserError("a row with a missing or non-numeric value", file=path, line=line) from None
         if not all(np.isfinite([t, *xyz])) or (times and t < times[-1]):
             raise UserError("times must be finite and must not go back; coordinates finite", file=path, line=line)
