@@ -29,8 +29,15 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.recording import Recording, check_rate, nan_partial_samples, scaled_to_mm, unit_scale
-from engine.mocap.text_tables import parse_rows, read_text_lines
+from engine.mocap.recording import (
+    Recording,
+    check_coordinates,
+    check_rate,
+    nan_partial_samples,
+    scaled_to_mm,
+    unit_scale,
+)
+from engine.mocap.text_tables import parse_rows, read_text_lines, row_line
 
 DEFAULT_PATTERNS = ("{marker}_{axis}", "{marker}.{axis}", "{marker} {axis}", "{marker}:{axis}")
 TIME_COLUMNS = {"time_ms": "ms", "time_s": "s", "time": "s", "t": "s"}
@@ -88,7 +95,10 @@ def read_csv(path: str | Path, layout: CsvLayout | None = None) -> Recording:
     labels = list(markers)
     index = np.array([markers[m] for m in labels], dtype=int).reshape(len(labels), 3)
     rate = check_rate(rate, "the frame rate", path)
-    positions = nan_partial_samples(scaled_to_mm(table[:, index], scale))
+    positions = check_coordinates(scaled_to_mm(table[:, index], scale), labels, path,
+                                  lambda f: row_line(lines[first + 1:], header_line + 1, f),
+                                  gap="as an empty cell or NaN")
+    nan_partial_samples(positions)
     return Recording(labels=labels, positions=positions, rate_hz=rate, source=path.name, format="csv",
                      units=layout.units, start_ms=start_ms, events=[])
 

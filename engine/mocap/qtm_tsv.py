@@ -16,7 +16,9 @@ The file is a header of ``KEY<TAB>value`` lines, then the data::
 
 Without the column-header row a data row holds either the 3·M coordinates
 or the frame number and time followed by them. A missing sample is written
-as ``0 0 0``; those become NaN.
+as ``0 0 0``; those become NaN, as does a sample with a NaN coordinate (QTM
+writes none, but a converted file may). An infinite coordinate, or one beyond
+±1 km, is no measurement: refused with its line.
 """
 
 from __future__ import annotations
@@ -26,8 +28,14 @@ from pathlib import Path
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.recording import Recording, check_rate, zero_triplets_to_nan
-from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines
+from engine.mocap.recording import (
+    Recording,
+    check_coordinates,
+    check_rate,
+    nan_partial_samples,
+    zero_triplets_to_nan,
+)
+from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines, row_line
 
 REQUIRED_KEYS = ("NO_OF_FRAMES", "NO_OF_MARKERS", "FREQUENCY", "MARKER_NAMES")
 
@@ -109,6 +117,9 @@ def read_qtm_tsv(path: str | Path) -> Recording:
                                   "(truncated?)", file=path, line=last)
         raise MarkerFileError(f"{len(table)} frames of data but NO_OF_FRAMES is {n_frames}", file=path, line=last)
     positions = zero_triplets_to_nan(table[:, columns].reshape(n_frames, n_markers, 3))  # indexing copied
+    check_coordinates(positions, names, path, lambda f: row_line(data_lines, first_data + 1, f),
+                      gap="as 0 0 0 (or NaN)")
+    nan_partial_samples(positions)
     start_ms = 0.0
     if n_frames and time_column is not None and np.isfinite(table[0, time_column]):
         start_ms = 1000.0 * float(table[0, time_column])

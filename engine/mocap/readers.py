@@ -35,7 +35,7 @@ def detect_format(path: str | Path) -> str:
         return "c3d"
     text = head.decode("latin-1").lstrip("\ufeff\xef\xbb\xbf")
     first = text.split("\n", 1)[0].strip()
-    key = first.split("\t", 1)[0].split(" ", 1)[0].upper()
+    key = first.split("\t", 1)[0].split(" ", 1)[0].split(",", 1)[0].upper()   # a TRC saved comma-separated too
     if key == "PATHFILETYPE":
         return "trc"
     if key in ("NO_OF_FRAMES", "FILE_VERSION", "NO_OF_CAMERAS", "NO_OF_MARKERS"):

@@ -13,6 +13,7 @@ NaN wherever the file has no sample, and the frame rate as the file states it.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -92,6 +93,32 @@ def scaled_to_mm(values: np.ndarray, scale: float) -> np.ndarray:
     """``values · scale`` where a value too large for millimetres (1e308 m) becomes inf, not a numpy warning."""
     with np.errstate(over="ignore", invalid="ignore"):
         return values * scale
+
+
+MAX_COORDINATE_MM = 1e6
+"""The largest marker coordinate a file may hold (1 km from the origin): capture volumes are metres across;
+a coordinate beyond it (or infinite) is a damaged export, and 1e308 made the gap filler's spline overflow."""
+
+
+def check_coordinates(positions: np.ndarray, labels: list[str], path: Path,
+                      line_of_frame: Callable[[int], int] | None = None, gap: str = "as NaN") -> np.ndarray:
+    """``positions`` (F, M, 3) in mm if every coordinate is finite and within :data:`MAX_COORDINATE_MM`, or NaN.
+
+    NaN is a missing sample (a gap); an infinite coordinate, or one beyond the
+    bound, is no measurement: :class:`MarkerFileError` naming the marker, the
+    frame and (with ``line_of_frame``) the line it is on. ``gap`` says how the
+    format writes a missing sample, for the message (``"as 0 0 0"``).
+    """
+    with np.errstate(invalid="ignore"):
+        bad = np.abs(positions) > MAX_COORDINATE_MM          # inf too; NaN compares False
+    if not bad.any():
+        return positions
+    frame, marker, axis = (int(i) for i in np.argwhere(bad)[0])
+    value = float(positions[frame, marker, axis])
+    raise MarkerFileError(f"marker '{labels[marker]}' {'XYZ'[axis]} in frame {frame + 1} is {value:g} mm: not a "
+                          f"position (a coordinate must be finite and within ±{MAX_COORDINATE_MM:g} mm; a missing "
+                          f"sample is written {gap})", file=path,
+                          line=line_of_frame(frame) if line_of_frame is not None else None)
 
 
 def nan_partial_samples(positions: np.ndarray) -> np.ndarray:

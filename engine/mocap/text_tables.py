@@ -154,5 +154,20 @@ def _parse_slow(lines: list[str], first_line: int, n_columns: int, path: Path, d
     return np.array(rows, dtype=float).reshape(len(rows), n_columns)
 
 
+def row_line(lines: list[str], first_line: int, row: int) -> int:
+    """The 1-based line number of table row ``row`` (0-based) of :func:`parse_rows` ``lines`` (blank lines skip).
+
+    >>> row_line(["1", "", "2"], 10, 1)
+    12
+    """
+    seen = -1
+    for i, line in enumerate(lines):
+        if line.strip():
+            seen += 1
+            if seen == row:
+                return first_line + i
+    return first_line + len(lines) - 1
+
+
 def _shorten(text: str, n: int = 40) -> str:
     return text if len(text) <= n else text[:n] + "…"

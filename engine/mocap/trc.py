@@ -11,20 +11,31 @@
 DataRate, NumFrames, NumMarkers and Units (mm, cm or m) are required. A
 missing sample is empty cells (or NaN); a row may leave out the empty cells
 of missing markers at its end, and may end in a tab (OpenSim's own example
-files do: the empty cells after the last column are ignored). Columns are
-separated by tabs; a comma-separated file is refused with a message that
-says so.
+files do: the empty cells after the last column are ignored). An infinite
+coordinate, or one beyond ±1 km, is refused with its line. Columns are
+separated by tabs. A comma-separated TRC (what a spreadsheet, pyomeca-based
+scripts and some MATLAB writers save) has the same lines with commas, which
+no TRC value holds, so its layout is as unambiguous: it is read, and the
+recording's notes (the import report) say "read as comma-separated TRC".
 """
 
 from __future__ import annotations
 
+import csv
 from pathlib import Path
 
 import numpy as np
 
 from engine.mocap.errors import MarkerFileError
-from engine.mocap.recording import Recording, check_rate, nan_partial_samples, scaled_to_mm, unit_scale
-from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines
+from engine.mocap.recording import (
+    Recording,
+    check_coordinates,
+    check_rate,
+    nan_partial_samples,
+    scaled_to_mm,
+    unit_scale,
+)
+from engine.mocap.text_tables import parse_number, parse_rows, read_text_lines, row_line
 
 REQUIRED_KEYS = ("DataRate", "NumFrames", "NumMarkers", "Units")
 
@@ -38,12 +49,10 @@ def read_trc(path: str | Path) -> Recording:
     if len(lines) < 5:
         raise MarkerFileError("the TRC header ends early: it needs the key line, the value line, the marker "
                               "names and the X1 Y1 Z1 line (truncated?)", file=path, line=len(lines))
-    if "\t" not in lines[1] and lines[1].count(",") >= 3:
-        raise MarkerFileError("the TRC header is separated by commas; TRC columns are separated by tabs "
-                              "(save it tab-separated, or read it as a CSV table with --format csv)",
-                              file=path, line=2)
-    keys = _split(lines[1])
-    values = _split(lines[2])
+    comma = "\t" not in lines[1] and lines[1].count(",") >= 3   # the key line: eight names, no tab
+    separator = "," if comma else "\t"
+    keys = _split(lines[1], comma)
+    values = _split(lines[2], comma)
     if len(values) < len(keys):
         raise MarkerFileError(f"{len(values)} header values for {len(keys)} header keys on line 2", file=path,
                               line=3)
@@ -56,25 +65,25 @@ def read_trc(path: str | Path) -> Recording:
     n_markers = _whole(header["NumMarkers"], "NumMarkers", path)
     scale = unit_scale(header["Units"], path, line=3)
 
-    names = [c.strip() for c in lines[3].split("\t")[2:] if c.strip()]
+    names = [c.strip() for c in _cells(lines[3], separator)[2:] if c.strip()]
     if len(names) != n_markers:
         raise MarkerFileError(f"the marker-name line lists {len(names)} markers but NumMarkers is {n_markers}",
                               file=path, line=4)
     duplicates = sorted({n for n in names if names.count(n) > 1})
     if duplicates:
         raise MarkerFileError(f"marker name(s) {', '.join(duplicates)} appear more than once", file=path, line=4)
-    axes = [c.strip() for c in lines[4].split("\t") if c.strip()]
+    axes = [c.strip() for c in _cells(lines[4], separator) if c.strip()]
     if len(axes) != 3 * n_markers:
         raise MarkerFileError(f"the X1 Y1 Z1 line has {len(axes)} coordinate names for {n_markers} markers",
                               file=path, line=5)
 
     n_columns = 2 + 3 * n_markers
-    data = _without_trailing_empty_cells(lines[5:], n_columns)
+    data = _without_trailing_empty_cells(lines[5:], n_columns, separator)
     tab = any("\t" in ln for ln in data[:5])
     ends_with_newline = _last_byte(path) in (b"\n", b"\r")
-    table = parse_rows(data, 6, n_columns, path, delimiter="\t" if tab else None, empty_is_missing=True,
-                       short_rows_at=3, last_line_complete=ends_with_newline)
-    notes = []
+    table = parse_rows(data, 6, n_columns, path, delimiter="," if comma else "\t" if tab else None,
+                       empty_is_missing=True, short_rows_at=3, last_line_complete=ends_with_newline)
+    notes = ["read as comma-separated TRC (TRC columns are tab-separated; the layout is the same)"] if comma else []
     if len(table) == n_frames - 1 and n_frames > 1:
         notes.append(f"the data end one frame early ({len(table)} of NumFrames {n_frames}); {len(table)} read")
         n_frames = len(table)
@@ -84,27 +93,36 @@ def read_trc(path: str | Path) -> Recording:
             raise MarkerFileError(f"the file ends after {len(table)} frames but NumFrames is {n_frames} "
                                   "(truncated?)", file=path, line=last)
         raise MarkerFileError(f"{len(table)} frames of data but NumFrames is {n_frames}", file=path, line=last)
-    positions = nan_partial_samples(scaled_to_mm(table[:, 2:].reshape(n_frames, n_markers, 3), scale))
+    positions = check_coordinates(scaled_to_mm(table[:, 2:].reshape(n_frames, n_markers, 3), scale), names, path,
+                                  lambda f: row_line(data, 6, f), gap="as empty cells or NaN")
+    nan_partial_samples(positions)
     start_ms = 1000.0 * float(table[0, 1]) if n_frames and np.isfinite(table[0, 1]) else 0.0
     return Recording(labels=names, positions=positions, rate_hz=rate, source=path.name, format="trc",
                      units=header["Units"].strip(), start_ms=start_ms, notes=notes)
 
 
-def _without_trailing_empty_cells(lines: list[str], n_columns: int) -> list[str]:
-    """Rows with empty tab-separated cells after the last column, as OpenSim writes them, cut to the columns."""
+def _without_trailing_empty_cells(lines: list[str], n_columns: int, separator: str = "\t") -> list[str]:
+    """Rows with empty cells after the last column, as OpenSim writes them (a tab at the end), cut to the columns."""
     out = []
     for line in lines:
-        cells = line.split("\t") if line.count("\t") >= n_columns else []
+        cells = line.split(separator) if line.count(separator) >= n_columns else []
         if cells and not any(c.strip() for c in cells[n_columns:]):
-            out.append("\t".join(cells[:n_columns]))
+            out.append(separator.join(cells[:n_columns]))
         else:
             out.append(line)
     return out
 
 
-def _split(line: str) -> list[str]:
-    cells = line.split("\t") if "\t" in line else line.split()
+def _split(line: str, comma: bool = False) -> list[str]:
+    cells = _cells(line, ",") if comma else line.split("\t") if "\t" in line else line.split()
     return [c.strip() for c in cells if c.strip()]
+
+
+def _cells(line: str, separator: str) -> list[str]:
+    """The cells of a header line; a comma-separated one may quote a cell ("a, b"), as spreadsheets do."""
+    if separator == "," and '"' in line:
+        return next(csv.reader([line]))
+    return line.split(separator)
 
 
 def _whole(text: str, key: str, path: Path) -> int:
