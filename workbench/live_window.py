@@ -42,6 +42,7 @@ from engine.errors import UserError
 from engine.live.presentation import Sound, SoundKey
 from engine.model.model import Model
 from workbench.audio_output import AudioClip, AudioOutput
+from workbench.viewport_keys import keep_keys_from_vtk
 
 VIEW = "front"
 SIGNAL_POLL_MS = 200         # how often Python gets the chance to run a SIGINT/SIGTERM handler
@@ -61,6 +62,7 @@ class LiveWindow(QWidget):
 
         self.setWindowTitle("Artificial Person — live")
         self.view = QVTKRenderWindowInteractor(self)
+        keep_keys_from_vtk(self.view)                 # VTK's keys ('3' stereo, ...) do nothing; F11 reaches us
         layout = QVBoxLayout(self)
         layout.setContentsMargins(0, 0, 0, 0)
         layout.addWidget(self.view)

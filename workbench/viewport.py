@@ -40,6 +40,7 @@ from engine.painting import heat_colors
 from .colors import base_vertex_colors
 from .document import ModelDocument
 from .view_state import ViewState
+from .viewport_keys import keep_keys_from_vtk
 from .viewport_parts import VERTEX_COLORS, PartView, part_pieces
 from .viewport_picking import SurfacePick, cell_weights, new_cell_picker, pick_surface
 from .viewport_points import PointOverlays
@@ -77,6 +78,7 @@ class Viewport(QWidget):
             # pyvista's default keys ('q' closes the plotter, 'v', 'b', ...) would
             # fight the window's shortcuts.
             self.plotter.iren.clear_key_event_callbacks()
+        keep_keys_from_vtk(self.plotter)     # nor VTK's own ('w' wireframe, '3' stereo, 'p' pick box, ...)
         self.plotter.set_background(BACKGROUND_BOTTOM, top=BACKGROUND_TOP)
         self._points = PointOverlays(self.plotter)
         layout = QVBoxLayout(self)

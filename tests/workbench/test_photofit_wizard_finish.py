@@ -26,6 +26,7 @@ from tests.workbench.test_photofit_wizard import (  # noqa: F401  (photographs: 
     photographs,
     wait_for_jobs,
 )
+from tests.workbench.test_viewport_keys import press, press_over_the_head, vtk_state
 from workbench.script_panel.jobs import wait_for_all
 
 Next = QWizard.WizardButton.NextButton
@@ -70,7 +71,16 @@ def test_next_is_enabled_once_the_first_fit_is_done(anna_window, photographs, qt
     assert wizard.button(Next).isEnabled(), "the fit is done: Next must take the user to the result"
     qtbot.mouseClick(wizard.button(Next), Qt.MouseButton.LeftButton)
     assert wizard.currentPage() is wizard.result_page
-    wizard.button(QWizard.WizardButton.CancelButton).click()
+
+    # the result's 3-D view ignores VTK's keys too, and Escape there reaches the wizard (Cancel)
+    plotter = wizard.result_page.viewport.plotter
+    state = vtk_state(plotter)
+    press_over_the_head(plotter, qtbot, "w3p")
+    assert vtk_state(plotter) == state
+    rejected: list[bool] = []
+    wizard.rejected.connect(lambda: rejected.append(True))
+    press(plotter, qtbot, Qt.Key.Key_Escape)
+    assert rejected == [True]
     wait_for_jobs(qtbot)
 
 
