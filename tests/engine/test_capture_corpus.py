@@ -118,15 +118,6 @@ def test_a_trc_file_one_frame_shorter_than_its_header_reads_with_a_note():
     assert any("one frame early" in note for note in rec.notes)
 
 
-def test_comma_separated_trc_is_refused_naming_the_delimiter(tmp_path):
-    text = (DATA / "opensim-exampleFormat.trc").read_text().replace("\t", ",")
-    path = tmp_path / "commas.trc"
-    path.write_text(text)
-    with pytest.raises(MarkerFileError, match=r"commas.trc:2: the TRC header is separated by commas") as info:
-        read_marker_file(path)
-    assert "lacks" not in str(info.value)
-
-
 # -- C3D: units, residuals, parameters -----------------------------------------------------------------------
 
 def test_c3d_units_padded_with_nul_bytes(tmp_path):
