@@ -16,6 +16,12 @@ output.
 Keys: F11 toggles full screen, Escape leaves it; closing the window ends the
 server. SIGINT and SIGTERM end it too.
 
+The window opens at the size asked for (``--size``, 600 × 800 unless told),
+made smaller, its shape kept, where that and the window's frame do not fit
+the screen's free area (:func:`fitted_size`; a 768-pixel laptop screen would
+cut it at the chin): a note on stderr says so. The camera is framed for the
+window's shape, so the head is whole at any size.
+
 >>> from engine.live.server import LiveServer                                  # doctest: +SKIP
 >>> serve_in_window(lambda presenter: LiveServer(load_model(), presenter=presenter),
 ...                 fullscreen=False, size=(600, 800), ready=print)              # doctest: +SKIP
@@ -42,6 +48,7 @@ from engine.errors import UserError
 from engine.live.presentation import Sound, SoundKey
 from engine.model.model import Model
 from workbench.audio_output import AudioClip, AudioOutput
+from workbench.layouts import FRESH_MARGIN
 from workbench.viewport_keys import keep_keys_from_vtk
 
 VIEW = "front"
@@ -214,6 +221,8 @@ def serve_in_window(make_server: Callable[[WindowPresenter], Any], fullscreen: b
     app = QApplication.instance() or QApplication([sys.argv[0]])
     window = LiveWindow(size)
     screen = window.screen() or app.primaryScreen()
+    if screen is not None and not fullscreen:
+        place_on_screen(window, size, screen.availableGeometry())
     fps = screen.refreshRate() if screen is not None and screen.refreshRate() >= 20 else 60.0
     presenter = WindowPresenter(window, fps)
     server = make_server(presenter)
@@ -266,6 +275,33 @@ def serve_in_window(make_server: Callable[[WindowPresenter], Any], fullscreen: b
         print(f"internal error in the live server:\n{''.join(traceback.format_exception(exc))}", file=sys.stderr)
         leave_process(1)
     leave_process(0)
+
+
+def fitted_size(size: tuple[int, int], free: tuple[int, int]) -> tuple[int, int]:
+    """``size`` (w, h px), made smaller with its shape kept until it and a window's frame (:data:`FRESH_MARGIN`, as
+    the workbench leaves for it) fit the screen's ``free`` area (w, h px); as it is when it fits.
+
+    >>> fitted_size((600, 800), (1366, 768)), fitted_size((600, 800), (1920, 1080))
+    ((534, 712), (600, 800))
+    """
+    room = free[0] - FRESH_MARGIN.width(), free[1] - FRESH_MARGIN.height()
+    scale = min(1.0, room[0] / size[0], room[1] / size[1])
+    if scale >= 1.0:
+        return size
+    return max(1, int(size[0] * scale)), max(1, int(size[1] * scale))
+
+
+def place_on_screen(window: LiveWindow, size: tuple[int, int], free: Any) -> tuple[int, int]:
+    """Give ``window`` its :func:`fitted_size` on the screen whose free area is ``free`` (a ``QRect``), centred
+    there; a size made smaller is a note on stderr. Returns the size."""
+    fitted = fitted_size(size, (free.width(), free.height()))
+    if fitted != size:
+        print(f"note: the window is {fitted[0]}x{fitted[1]}, not {size[0]}x{size[1]}: that does not fit the "
+              f"screen ({free.width()}x{free.height()} free); F11 for full screen", file=sys.stderr, flush=True)
+    window.resize(*fitted)
+    frame = fitted[0] + FRESH_MARGIN.width(), fitted[1] + FRESH_MARGIN.height()
+    window.move(free.x() + max(0, (free.width() - frame[0]) // 2), free.y() + max(0, (free.height() - frame[1]) // 2))
+    return fitted
 
 
 def leave_process(status: int) -> NoReturn:
