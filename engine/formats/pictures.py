@@ -60,7 +60,8 @@ def decode_picture(data: bytes, source: str | Path, max_pixels: int = MAX_PICTUR
             warnings.simplefilter("error", Image.DecompressionBombWarning)
             with Image.open(io.BytesIO(data)) as image:
                 if formats is not None and image.format not in formats:
-                    raise error(f"a {image.format} picture; use one of {', '.join(formats)}", file=source)
+                    shown = " or ".join(f for f in formats if f != "MPO")      # an MPO is a camera's JPEG
+                    raise error(f"a {image.format} picture; use a {shown} picture", file=source)
                 width, height = image.size
                 if width * height > max_pixels:
                     raise error(f"{width} × {height} pixels is more than the {max_pixels:,} pixels read",

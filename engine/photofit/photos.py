@@ -20,12 +20,11 @@ as its first picture, the one every viewer shows.
 
 from __future__ import annotations
 
-import io
-import warnings
 from pathlib import Path
 
 import numpy as np
 
+from engine.formats.pictures import decode_picture
 from engine.formats.text_files import read_bounded_bytes
 from engine.photofit.errors import PhotoFitError
 
@@ -52,27 +51,5 @@ def read_input_bytes(path: str | Path, limit: int, what: str) -> bytes:
 
 def read_photo(path: str | Path) -> np.ndarray:
     """(height, width, 3) uint8 RGB of the photograph ``path``, turned upright by its EXIF orientation."""
-    from PIL import Image, ImageOps, UnidentifiedImageError
-
-    path = Path(path)
     data = read_input_bytes(path, MAX_PHOTO_BYTES, "photograph")
-    too_large = f"more than {MAX_PIXELS} pixels; use a photograph of at most {MAX_PIXELS // 1_000_000} megapixels"
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("error", Image.DecompressionBombWarning)
-            with Image.open(io.BytesIO(data)) as image:
-                if image.format not in FORMATS:
-                    raise PhotoFitError(f"a {image.format} picture; use a JPEG or PNG photograph", file=path)
-                if image.width * image.height > MAX_PIXELS:
-                    raise PhotoFitError(f"{image.width}×{image.height} pixels is {too_large}", file=path)
-                image.seek(0)                           # an MPO's first picture (a no-op for JPEG and PNG)
-                upright = ImageOps.exif_transpose(image)
-                pixels = np.asarray(upright.convert("RGB"), dtype=np.uint8)
-    except UnidentifiedImageError:
-        raise PhotoFitError("not a picture (use a JPEG or PNG photograph)", file=path) from None
-    except (Image.DecompressionBombWarning, Image.DecompressionBombError):
-        raise PhotoFitError(f"the picture is {too_large}", file=path) from None
-    except (OSError, SyntaxError, ValueError, EOFError) as exc:
-        raise PhotoFitError(f"cannot read the photograph: {getattr(exc, 'strerror', None) or exc}",
-                            file=path) from None
-    return np.ascontiguousarray(pixels)
+    return decode_picture(data, path, MAX_PIXELS, PhotoFitError, FORMATS)

@@ -103,7 +103,7 @@ def test_a_picture_claiming_too_many_pixels_is_one_clear_error(tmp_path, width, 
     path.write_bytes(png_claiming(width, height))
     with pytest.raises(PhotoFitError) as caught:
         read_photo(path)
-    assert f"more than {photos_module.MAX_PIXELS} pixels" in str(caught.value)
+    assert f"more than the {photos_module.MAX_PIXELS:,} pixels" in str(caught.value)
 
 
 def test_the_decompression_bomb_warning_does_not_reach_stderr(inputs, tmp_path):
@@ -111,7 +111,7 @@ def test_the_decompression_bomb_warning_does_not_reach_stderr(inputs, tmp_path):
     bomb = tmp_path / "bomb.png"
     bomb.write_bytes(png_claiming(10_000, 9_500))
     line = assert_user_error(run("fit-photos", "--front", bomb, "--landmarks", points, "-o", tmp_path / "p.xml"))
-    assert "more than 80000000 pixels" in line, line
+    assert "more than the 80,000,000 pixels" in line, line
 
 
 def test_a_camera_mpo_file_is_read_as_its_first_picture(tmp_path):
