@@ -41,7 +41,8 @@ def run_validate(args: argparse.Namespace) -> int:
     summary = validate(args.inputs, intended=args.intended, detector=args.detector, progress=_progress())
     written = write_tables(summary, args.output)
     if args.report is not None:
-        write_report(summary, args.report, title=f"Validation of {', '.join(args.inputs)}")
+        shown = ", ".join(args.inputs) if len(args.inputs) <= 3 else f"{len(args.inputs)} files"
+        write_report(summary, args.report, title=f"Validation of {shown}")
         written.append(args.report)
     faces = sum(1 for v in summary.verdicts if v.emotions is not None)
     print(f"{len(summary.verdicts)} files judged, {faces} with a face")
