@@ -23,6 +23,7 @@ from engine.mocap.capture_axes import detect_axes
 from engine.mocap.errors import MocapError
 from engine.mocap.gaps import fill_gaps, max_gap_frames
 from engine.mocap.head_motion import MIN_REFERENCE, remove_head_motion
+from engine.mocap.marker_assignment import unmapped_labels
 from engine.mocap.naming import default_reference, marker_names, read_mapping
 from engine.mocap.readers import FORMAT_NAMES, read_marker_file
 from engine.mocap.recording import Recording
@@ -88,6 +89,7 @@ def build_session(recording: Recording, *, mapping: dict[str, str] | None = None
     if not (np.isfinite(max_gap_ms) and max_gap_ms >= 0):
         raise MocapError(f"the longest gap to fill must be 0 ms or more, not {max_gap_ms}")
     names, naming = marker_names(recording.labels, mapping)
+    naming["not_feature_points"] = unmapped_labels(recording.labels, names)
     kept = [(k, n) for k, n in enumerate(names) if n is not None]
     keep = [k for k, _ in kept]
     markers = [n for _, n in kept]
@@ -169,6 +171,10 @@ def format_report(session: Session) -> str:
         lines.append("dropped: " + ", ".join(naming["dropped"]))
     if naming.get("unused_mapping"):
         lines.append("mapping entries not in the file: " + ", ".join(naming["unused_mapping"]))
+    if naming.get("not_feature_points"):
+        kept = naming["not_feature_points"]
+        lines.append(f"warning: {len(kept)} of {session.n_markers} markers name no MPEG-4 feature point and keep "
+                     f"their file labels (name them with --map): {', '.join(kept)}")
     gaps = r.get("gaps", {})
     with_gaps = [m for m in session.markers if gaps.get(m, {}).get("gaps")]
     lines.append(f"gaps (filled up to {r.get('max_gap_ms', 0):g} ms = {r.get('max_gap_frames', 0)} frames): "

@@ -11,7 +11,8 @@ at a time, by someone who sees where each sits on the face:
   the import warns about);
 * :func:`assign_marker` gives a marker a feature point id (or takes it back
   to its file label); a marker that held that id goes back to its own label,
-  so one id is never on two markers;
+  so one id is never on two markers (:func:`assignment_renames` says which
+  renames that takes, without making them);
 * :func:`rename_markers` is the rename every change is made of: the
   session's markers, its reference set and its report (gaps, naming) follow,
   and it returns the renames that undo it;
@@ -127,6 +128,7 @@ def rename_markers(session: Session, renames: Mapping[str, str]) -> dict[str, st
         head["reference"] = [renames.get(m, m) for m in head["reference"]]
     naming = report.setdefault("naming", {})
     naming["renamed"] = {label: name for label, name in zip(labels, markers, strict=True) if label != name}
+    naming["not_feature_points"] = unmapped_labels(labels, markers)
     return {new: old for old, new in renames.items()}
 
 
@@ -144,14 +146,13 @@ def marker_map_renames(session: Session, mapping: Mapping[str, str]) -> dict[str
     return _with_displaced(session, labels, targets)
 
 
-def assign_marker(session: Session, marker: str, point: str | None) -> dict[str, str]:
-    """Give ``marker`` the feature point id ``point``, or its file label back (``point`` None or empty).
+def assignment_renames(session: Session, marker: str, point: str | None) -> dict[str, str]:
+    """The renames that give ``marker`` the feature point id ``point`` (its file label back: None or empty).
 
-    A marker that had ``point`` goes back to its own file label. Changes
-    ``session`` in place and returns the renames made (``{old: new}``;
-    :func:`rename_markers` with them reversed undoes it). ``point`` must be
-    a feature point id (:func:`is_feature_point`): :class:`MocapError`
-    otherwise, the session unchanged.
+    A marker that had ``point`` goes back to its own file label. ``point``
+    must be a feature point id (:func:`is_feature_point`), ``marker`` one of
+    the session's: :class:`MocapError` otherwise. Nothing is changed; apply
+    the result with :func:`rename_markers`.
     """
     session.marker_index(marker)
     labels = marker_labels(session)
@@ -162,7 +163,16 @@ def assign_marker(session: Session, marker: str, point: str | None) -> dict[str,
         target = point
     else:
         raise MocapError(f"'{point}' is no MPEG-4 feature point id (ids look like 2.1, 8.3 or 20.1)")
-    renames = _with_displaced(session, labels, {marker: target})
+    return _with_displaced(session, labels, {marker: target})
+
+
+def assign_marker(session: Session, marker: str, point: str | None) -> dict[str, str]:
+    """Give ``marker`` the feature point id ``point`` (:func:`assignment_renames`), in place; the renames made.
+
+    :func:`rename_markers` with the renames reversed undoes it. On any
+    error the session is unchanged.
+    """
+    renames = assignment_renames(session, marker, point)
     rename_markers(session, renames)
     return renames
 

@@ -68,6 +68,15 @@ def test_which_names_are_feature_point_ids(name, expected):
     assert is_feature_point(name) is expected
 
 
+def test_the_import_report_warns_of_them(session):
+    assert session.report["naming"]["not_feature_points"] == marker_labels(session)
+    assert ("warning: 38 of 38 markers name no MPEG-4 feature point and keep their file labels (name them with "
+            "--map): root-1, root-2, ") in format_report(session)
+    assign_marker(session, "section14-2", "2.1")
+    assert "warning: 37 of 38 markers" in format_report(session)
+    assert "section14-2" not in session.report["naming"]["not_feature_points"]
+
+
 def test_assigning_the_chin_renames_the_marker_and_is_saved_with_the_session(session, tmp_path):
     before = session.positions.copy()
     assert assign_marker(session, "section14-2", "2.1") == {"section14-2": "2.1"}
