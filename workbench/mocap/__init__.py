@@ -6,6 +6,10 @@ coordinates* dock (:mod:`.plot_dock`), the *Multistage PCA* dock
 (:mod:`.marker_overlay`), animated by the window's shared playhead. Everything
 the tool computes is an engine call (:mod:`engine.mocap`); the tool keeps
 its state in one :class:`~.state.MocapState` (``window.mocap.state``).
+Markers are named by clicking them on the face (:mod:`.marker_picking`) or
+in the list beside the plot, and giving each its feature point
+(:mod:`.assignment_panel`, on the session's own undo stack). Sessions and
+marker maps are suggested beside the project (:mod:`.session_files`).
 ``docs/workbench-mocap.md`` is the user's guide.
 
 >>> window.mocap.open_session("take1.h5")            # doctest: +SKIP
@@ -21,14 +25,18 @@ import numpy as np
 from PySide6.QtCore import QObject, Qt
 from PySide6.QtWidgets import QFileDialog
 
+from engine.mocap.marker_assignment import is_feature_point, marker_labels, session_mapping
 from engine.mocap.session import load_session, save_session
 
 from ..actions import ActionSpec, add_actions
+from .assignment_panel import AssignmentPanel
 from .import_dialog import ImportDialog
 from .marker_overlay import HIGHLIGHT_COLOR, MarkerOverlay, default_colors, error_colors, marker_to_model_transform
+from .marker_picking import MarkerPicker
 from .pca_dock import PcaDock
 from .plot_dock import MarkerPlotDock
 from .recording_playback import RecordingPlayback
+from .session_files import default_session_path, project_folder
 from .state import MocapState
 from .worker import run_in_background, show_error
 
@@ -54,10 +62,18 @@ class MocapTool(QObject):
         window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.pca_dock)     # give them their places
         self.plot_dock.hide()
         self.pca_dock.hide()
+        self.names_panel = AssignmentPanel(self.state, window.document, self.project_folder, self.plot_dock)
+        self.plot_dock.add_side_panel(self.names_panel)
+        self.picker = MarkerPicker(window, self.overlay, self)
+        self._texts: dict[str, str] = {}      # marker → the text drawn beside it
 
         self.state.session_changed.connect(self._on_session)
+        self.state.markers_renamed.connect(self._on_renamed)
         window.playhead.time_changed.connect(self._redraw)
-        self.plot_dock.marker_combo.currentTextChanged.connect(self._redraw)
+        self.plot_dock.marker_combo.currentTextChanged.connect(self._on_marker_shown)
+        self.picker.picked.connect(self._on_picked)
+        self.names_panel.marker_selected.connect(self.select_marker)
+        self.names_panel.names_shown_changed.connect(self._refresh_labels)
         self.pca_dock.preview_changed.connect(self._on_preview)
         self.pca_dock.errors_changed.connect(self._on_errors)
         # a bound method, not a lambda: a lambda in the document's connection list would keep the window alive
@@ -68,7 +84,7 @@ class MocapTool(QObject):
     def import_dialog_for(self, path: str | Path | None = None) -> ImportDialog:
         """Open the import dialog (non-modal), on ``path`` if given."""
         if self.import_dialog is None:
-            self.import_dialog = ImportDialog(self.window)
+            self.import_dialog = ImportDialog(self.window, self.project_folder)
             self.import_dialog.session_imported.connect(self.state.set_session)
         self.import_dialog.show()
         self.import_dialog.raise_()
@@ -91,7 +107,12 @@ class MocapTool(QObject):
             show_error(self.window, "Save session", exc)
             return False
         self.state.session_path = Path(path)
+        self.state.undo_stack.setClean()
         return True
+
+    def project_folder(self) -> Path:
+        """Where sessions and marker maps are suggested: beside the open model (:mod:`.session_files`)."""
+        return project_folder(self.window.document)
 
     def _open_dialog(self) -> None:
         path, _ = QFileDialog.getOpenFileName(self.window, "Open capture session", "", SESSION_FILES)
@@ -101,7 +122,8 @@ class MocapTool(QObject):
     def _save_dialog(self) -> None:
         if self.state.session is None:
             return
-        default = str(self.state.session_path or Path(self.state.session.source).with_suffix(".h5"))
+        default = str(self.state.session_path or default_session_path(self.window.document,
+                                                                      self.state.session.source))
         path, _ = QFileDialog.getSaveFileName(self.window, "Save capture session", default, SESSION_FILES)
         if path:
             self.save_session(path)
@@ -112,12 +134,49 @@ class MocapTool(QObject):
         if session is None:
             self.overlay.hide()
             return
+        self._refresh_labels()
+        if any(not is_feature_point(m) for m in session.markers):
+            self.plot_dock.names_button.setChecked(True)      # markers to name: the list opens beside the plot
         self.playback.show_session()
         self.window.layouts.reveal(self.plot_dock, task="mocap")    # a recording to analyse: the window turns
         self.window.layouts.reveal(self.pca_dock)                   # to that task
         self._place_markers()
         self.window.statusBar().showMessage(f"Capture session: {session.source}, {session.n_frames} frames, "
                                             f"{session.n_markers} markers", 4000)
+
+    # -- naming markers ---------------------------------------------------------------------------
+    def select_marker(self, marker: str) -> None:
+        """Make ``marker`` the one selected: plotted, highlighted and labelled on the face, chosen in the list."""
+        if self.state.session is not None and marker in self.state.session.markers:
+            self.plot_dock.marker_combo.setCurrentText(marker)
+
+    def _on_picked(self, marker: str) -> None:
+        self.select_marker(marker)
+        if self.names_panel.isVisible():
+            self.names_panel.point_combo.setFocus()    # the point is chosen next; Ctrl+Z undoes in the panel
+
+    def _on_marker_shown(self, marker: str) -> None:
+        self.names_panel.select(marker)
+        self._refresh_labels()
+
+    def _on_renamed(self, _renames) -> None:
+        self._refresh_labels()
+        self._place_markers()              # markers named after the model's points pair them with the face
+
+    def _refresh_labels(self, *_args) -> None:
+        """The text beside each marker: the points given here, the selected marker's names, or every name."""
+        session = self.state.session
+        self._texts = {}
+        if session is not None:
+            every = self.names_panel.all_names.isChecked()
+            assigned = set(session_mapping(session).values())
+            selected = self.plot_dock.marker
+            for name, label in zip(session.markers, marker_labels(session), strict=True):
+                if name == selected:
+                    self._texts[name] = name if name == label else f"{name} ({label})"
+                elif every or name in assigned:
+                    self._texts[name] = name
+        self._redraw()
 
     # -- the markers in the viewport -----------------------------------------------------------
     def _on_model_replaced(self, _model) -> None:
@@ -151,7 +210,7 @@ class MocapTool(QObject):
         shown = self.plot_dock.marker
         if shown in markers and self.errors is None:
             colors[markers.index(shown)] = HIGHLIGHT_COLOR
-        self.overlay.show(points, colors)
+        self.overlay.show(points, colors, names=markers, labels=[self._texts.get(m, "") for m in markers])
 
     def _on_preview(self, preview) -> None:
         self.preview = preview
@@ -183,4 +242,7 @@ def install(window) -> None:
                    triggered=lambda w: w.layouts.reveal(w.mocap.pca_dock, task="mocap"), icon="mocap-pca",
                    tip="Derive articulatory parameters from the selected frames (§3.1.2)"),
     ))
+    menu = window.menus[MENU]
+    menu.addSeparator()
+    menu.addActions([tool.names_panel.undo_action, tool.names_panel.redo_action])
     return tool

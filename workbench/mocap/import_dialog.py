@@ -8,10 +8,14 @@ drops the marker; loaded from or saved as a mapping file), whether it is a
 head-fixed reference for removing head motion, and its gaps — frames
 missing, gaps, the longest gap, and what the max-gap setting fills and
 leaves missing (:func:`engine.mocap.gaps.marker_gap_stats`, by the very
-rule the import then applies). Phone labels come from a TextGrid or label
-file, or from Festival's timing of the spoken text. **Import** runs
-:func:`engine.mocap.importer.import_marker_file` off the GUI thread and
-saves the session file (HDF5).
+rule the import then applies). Labels that would reach the session with no
+MPEG-4 feature point name are counted and named in a warning above the
+table (:func:`engine.mocap.marker_assignment.unmapped_labels`). The file's
+up axis is found from the names, or chosen. Phone labels come from a
+TextGrid or label file, or from Festival's timing of the spoken text.
+**Import** runs :func:`engine.mocap.importer.import_marker_file` off the GUI
+thread and saves the session file (HDF5), by default beside the project
+(``folder()``, :mod:`.session_files`), not beside the marker file.
 
 A file that cannot be read ends in a dialog naming file and line; the
 table and summary then show nothing of any earlier file (the summary says
@@ -48,6 +52,7 @@ from PySide6.QtWidgets import (
 from engine.mocap.csv_table import CsvLayout
 from engine.mocap.gaps import marker_gap_stats, max_gap_frames
 from engine.mocap.importer import DEFAULT_MAX_GAP_MS, import_marker_file
+from engine.mocap.marker_assignment import unmapped_labels
 from engine.mocap.naming import DROP, default_reference, normalise_label, read_mapping, write_mapping
 from engine.mocap.readers import FORMAT_NAMES, read_marker_file
 from engine.mocap.session import save_session
@@ -61,6 +66,10 @@ COLUMNS = ("Label in file", "Feature point", "Reference", "Missing frames", "Gap
 LABEL, POINT, REFERENCE, MISSING, GAPS, LONGEST, FILLED, EXCLUDED = range(len(COLUMNS))
 TITLE = "Import motion capture"
 MAX_GAP_TIP = "Gaps up to this long are filled by a cubic spline; longer ones are excluded"
+UP_AXES = (("found from the names", "auto"), ("+Z", "Z"), ("+Y", "Y"), ("+X", "X"), ("-Z", "-Z"), ("-Y", "-Y"),
+           ("-X", "-X"))
+NAMED_IN_WARNING = 8           # labels named in the warning's text; the tooltip has them all
+WARNING_STYLE = "QLabel { background: #fff3cd; color: #5c4300; border: 1px solid #e3c46d; padding: 4px; }"
 
 
 class ImportDialog(QDialog):
@@ -73,8 +82,9 @@ class ImportDialog(QDialog):
 
     session_imported = Signal(object, object)
 
-    def __init__(self, parent: QWidget | None = None):
+    def __init__(self, parent: QWidget | None = None, folder=None):
         super().__init__(parent)
+        self._folder = folder or Path.cwd          # where the session file is suggested
         self.setWindowTitle(TITLE)
         self.setObjectName("mocap-import-dialog")
         self.recording = None          # the file as read (engine Recording), for the table
@@ -120,6 +130,11 @@ class ImportDialog(QDialog):
 
         self.summary = QLabel("No file read yet.")
         self.summary.setWordWrap(True)
+        self.unmapped_warning = QLabel()
+        self.unmapped_warning.setObjectName("mocap-unmapped-labels")
+        self.unmapped_warning.setWordWrap(True)
+        self.unmapped_warning.setStyleSheet(WARNING_STYLE)
+        self.unmapped_warning.setVisible(False)
         self.max_gap = QDoubleSpinBox()
         self.max_gap.setRange(0, 10000)
         self.max_gap.setDecimals(0)
@@ -151,6 +166,11 @@ class ImportDialog(QDialog):
         self.reference_frame = QComboBox()
         self.reference_frame.addItem("first complete frame", "first")
         self.reference_frame.addItem("mean reference shape", "mean")
+        self.up_combo = QComboBox()
+        for text, key in UP_AXES:
+            self.up_combo.addItem(text, key)
+        self.up_combo.setToolTip("The file's up axis; the markers are turned to +Y up, +Z facing. Found from the "
+                                 "MPEG-4 names (mouth below the eyes) unless chosen here")
         self.labels_edit = QLineEdit()
         self.labels_edit.setPlaceholderText("TextGrid, label file or phones CSV (optional)")
         labels_browse = QPushButton("Browse…")
@@ -169,6 +189,7 @@ class ImportDialog(QDialog):
         save_row.addWidget(self.session_edit, 1)
         options = QFormLayout()
         options.addRow("Head motion: align to", self.reference_frame)
+        options.addRow("Up axis in the file", self.up_combo)
         options.addRow("Phone labels", labels_row)
         options.addRow("Spoken text", self.text_edit)
         options.addRow("", self.stretch)
@@ -184,6 +205,7 @@ class ImportDialog(QDialog):
         layout.addLayout(file_row)
         layout.addWidget(self.csv_box)
         layout.addWidget(self.summary)
+        layout.addWidget(self.unmapped_warning)
         layout.addLayout(map_row)
         layout.addWidget(self.table, 1)
         layout.addLayout(options)
@@ -194,8 +216,12 @@ class ImportDialog(QDialog):
     def set_path(self, path: str | Path) -> None:
         """Choose a marker file and read it (in the background)."""
         self.path_edit.setText(str(path))
-        self.session_edit.setText(str(Path(path).with_suffix(".h5")))
+        self.session_edit.setText(str(self.default_session_path(path)))
         self.read_file()
+
+    def default_session_path(self, path: str | Path) -> Path:
+        """``<folder()>/<marker file's name>.h5``: beside the project, not the data."""
+        return Path(self._folder()) / (Path(path).stem + ".h5")
 
     def read_file(self) -> None:
         text = self.path_edit.text().strip()
@@ -203,7 +229,7 @@ class ImportDialog(QDialog):
             return
         path = Path(text)
         if not self.session_edit.text():
-            self.session_edit.setText(str(path.with_suffix(".h5")))
+            self.session_edit.setText(str(self.default_session_path(path)))
         self.csv_box.setVisible(self._format() == "csv" or path.suffix.lower() == ".csv")
         fmt, layout = self._format(), self.csv_layout()
         self.import_button.setEnabled(False)
@@ -222,7 +248,8 @@ class ImportDialog(QDialog):
         self.summary.setText(f"{Path(recording.source).name}: {FORMAT_NAMES.get(recording.format, recording.format)}, "
                              f"{recording.n_frames} frames at {recording.rate_hz:g} Hz "
                              f"({recording.n_frames / recording.rate_hz:.1f} s), {len(recording.labels)} markers, "
-                             f"file units {recording.units}")
+                             f"file units {recording.units}"
+                             + "".join(f"\nnote: {note}" for note in recording.notes))   # e.g. a file cut short
         self._updating = True
         self.table.setRowCount(len(recording.labels))
         for row, label in enumerate(recording.labels):
@@ -262,6 +289,7 @@ class ImportDialog(QDialog):
         self.max_gap.setToolTip(MAX_GAP_TIP)
         self.import_button.setEnabled(False)
         self.summary.setText(why)
+        self._update_warning()
 
     # -- naming and reference ----------------------------------------------------------
     def labels(self) -> list[str]:
@@ -286,6 +314,28 @@ class ImportDialog(QDialog):
             self.table.item(r, POINT).setText(mapping.get(label, normalise_label(label) or label))
         self._updating = False
         self._suggest_references()
+        self._update_warning()
+
+    def unmapped(self) -> list[str]:
+        """The labels that would be imported under a name that is no MPEG-4 feature point."""
+        return unmapped_labels(self.labels(), self.names())
+
+    def _update_warning(self) -> None:
+        """Say how many labels, and which, map to no feature point (hidden when every marker has one)."""
+        unmapped = self.unmapped() if self.recording is not None else []
+        self.unmapped_warning.setVisible(bool(unmapped))
+        if not unmapped:
+            self.unmapped_warning.clear()
+            return
+        named = ", ".join(unmapped[:NAMED_IN_WARNING])
+        more = len(unmapped) - NAMED_IN_WARNING
+        names = f"{named} and {more} more" if more > 0 else named
+        kept = sum(name is not None for name in self.names())
+        self.unmapped_warning.setText(
+            f"⚠ {len(unmapped)} of {kept} labels map to no MPEG-4 feature point and would keep their file labels: "
+            f"{names}. PCA and Apply look for feature points (2.1, 8.*): type them under Feature point, load a "
+            "mapping, or click the markers on the face after the import and assign them there.")
+        self.unmapped_warning.setToolTip("Labels with no feature point:\n" + "\n".join(unmapped))
 
     def suggest_names(self) -> None:
         self.set_mapping({})
@@ -318,6 +368,7 @@ class ImportDialog(QDialog):
             self._references_edited = True
         elif item.column() == POINT:
             self._suggest_references()
+            self._update_warning()
 
     def _load_mapping_dialog(self) -> None:
         path, _ = QFileDialog.getOpenFileName(self, "Load mapping file", "", "Mapping files (*.map *.txt);;All (*)")
@@ -369,7 +420,7 @@ class ImportDialog(QDialog):
         path = Path(self.path_edit.text().strip())
         options = dict(format=self._format(), mapping=self.mapping(), max_gap_ms=self.max_gap.value(),
                        reference=self.references(), reference_frame=self.reference_frame.currentData(),
-                       csv_layout=self.csv_layout())
+                       csv_layout=self.csv_layout(), up=self.up_combo.currentData())
         labels = self.labels_edit.text().strip()
         text = self.text_edit.text().strip()
         if labels:

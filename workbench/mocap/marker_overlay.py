@@ -7,8 +7,11 @@ the correspondence ``mocap apply`` uses) — pairs the session's median
 marker position with that vertex at rest; a similarity transform (scale,
 rotation, translation, the engine's Umeyama fit) takes the markers there.
 
-The actor is ours (one point cloud rendered as spheres, per-point colours);
+The actors are ours (one point cloud rendered as spheres, per-point colours,
+and the markers' labels beside them: the feature point a marker was given);
 pyvista is imported here only when the first markers are shown.
+:meth:`MarkerOverlay.marker_at` finds the marker drawn under a pixel, for
+assigning feature points by clicking on the view.
 
 The markers belong to their recording: while another animation has the
 window's player (a library-editor or gallery preview, speech) the overlay is
@@ -28,6 +31,8 @@ REFERENCE_COLOR = (90, 150, 255)    # head-fixed reference markers
 OTHER_COLOR = (80, 220, 120)
 HIGHLIGHT_COLOR = (255, 40, 200)    # the marker shown in the coordinate plot
 POINT_SIZE = 13.0
+LABEL_FONT_SIZE = 12
+PICK_RADIUS_PX = 12.0               # a click this close to a marker's centre picks it
 
 
 def marker_to_model_transform(model, markers, positions) -> tuple[float, np.ndarray, np.ndarray, list[str]]:
@@ -47,7 +52,7 @@ def marker_to_model_transform(model, markers, positions) -> tuple[float, np.ndar
             places.update(marker_vertices(model, [m]))
         except UserError:
             continue
-    median = np.nanmedian(np.where(np.isfinite(positions), positions, np.nan), axis=0) if len(positions) else None
+    median = _median_positions(positions)
     pairs = [m for m in markers if m in places and median is not None and np.isfinite(median[markers.index(m)]).all()]
     if len(pairs) >= 3:
         source = np.array([median[markers.index(m)] for m in pairs])
@@ -56,8 +61,21 @@ def marker_to_model_transform(model, markers, positions) -> tuple[float, np.ndar
         return scale, rotation, translation, pairs
     centre = (model.vertices[list(model.landmarks.values())].mean(axis=0) if model.landmarks
               else model.vertices.mean(axis=0))
-    offset = centre - (np.nanmean(median, axis=0) if median is not None else 0.0)
+    seen = median[np.isfinite(median).all(axis=1)] if median is not None else np.zeros((0, 3))
+    offset = centre - (seen.mean(axis=0) if len(seen) else 0.0)
     return 1.0, np.eye(3), np.nan_to_num(offset), pairs
+
+
+def _median_positions(positions) -> np.ndarray | None:
+    """(M, 3): each marker's median position over the frames; NaN for a marker never seen (no warning)."""
+    positions = np.where(np.isfinite(positions), positions, np.nan)
+    if not len(positions):
+        return None
+    seen = np.isfinite(positions).all(axis=2).any(axis=0)
+    median = np.full(positions.shape[1:], np.nan)
+    if seen.any():
+        median[seen] = np.nanmedian(positions[:, seen], axis=0)
+    return median
 
 
 def default_colors(markers, reference=()) -> np.ndarray:
@@ -96,10 +114,15 @@ class MarkerOverlay:
         self._viewport = viewport
         self._mesh = None
         self._actor = None
+        self._label_cloud = None
+        self._label_actor = None
+        self._label_texts: list[str] = []
         self.active = True          # False while another animation has the player: draw nothing
         self.transform = (1.0, np.eye(3), np.zeros(3))
         self.shown_points = np.zeros((0, 3))      # model coordinates of the markers of the frame now
         self.shown_colors = np.zeros((0, 3), dtype=np.uint8)
+        self.shown_names: list[str] = []          # the marker of each shown point
+        self.shown_labels: list[str] = []         # the text beside each shown point ("" for none)
 
     def set_transform(self, scale: float, rotation, translation) -> None:
         self.transform = (float(scale), np.asarray(rotation, float), np.asarray(translation, float))
@@ -108,15 +131,20 @@ class MarkerOverlay:
         scale, rotation, translation = self.transform
         return scale * np.asarray(points, dtype=float) @ rotation.T + translation
 
-    def show(self, points, colors) -> None:
+    def show(self, points, colors, names=None, labels=None) -> None:
         """Markers at ``points`` (M, 3, marker space; NaN rows are hidden) with ``colors`` (M, 3) uint8.
 
-        Drawn now if the overlay is active, else kept for when it is.
+        ``names``: the marker of each row (for :meth:`marker_at`); ``labels``:
+        the text drawn beside each ("" for none). Drawn now if the overlay is
+        active, else kept for when it is.
         """
         points = self.to_model(points)
         present = np.isfinite(points).all(axis=1)
         self.shown_points = points[present]
         self.shown_colors = np.asarray(colors, dtype=np.uint8)[present]
+        rows = np.flatnonzero(present)
+        self.shown_names = [str(names[i]) for i in rows] if names is not None else []
+        self.shown_labels = [str(labels[i] or "") for i in rows] if labels is not None else [""] * len(rows)
         if self.active:
             self._draw()
 
@@ -124,7 +152,28 @@ class MarkerOverlay:
         """Forget the markers (no session): nothing is drawn until :meth:`show` again."""
         self.shown_points = np.zeros((0, 3))
         self.shown_colors = np.zeros((0, 3), dtype=np.uint8)
+        self.shown_names, self.shown_labels = [], []
         self._take_off_screen()
+
+    def marker_at(self, x: float, y: float, to_widget) -> str | None:
+        """The marker drawn nearest widget pixel (``x``, ``y``), within :data:`PICK_RADIUS_PX`, or ``None``.
+
+        ``to_widget(point)`` is where a model point is drawn (``Viewport.world_to_widget``). Only markers
+        on screen count (none while hidden or inactive).
+        """
+        if not (self.visible and self.shown_names):
+            return None
+        pixels = np.array([to_widget(p) for p in self.shown_points], dtype=float).reshape(-1, 2)
+        distance = np.hypot(pixels[:, 0] - x, pixels[:, 1] - y)
+        nearest = int(np.argmin(distance))
+        return self.shown_names[nearest] if distance[nearest] <= PICK_RADIUS_PX else None
+
+    @property
+    def labels_visible(self) -> list[str]:
+        """The labels on screen now."""
+        if self._label_actor is None or not self._label_actor.GetVisibility():
+            return []
+        return list(self._label_texts)
 
     def set_active(self, active: bool) -> None:
         """Draw the markers (``True``) or keep them off screen while another animation plays (``False``)."""
@@ -156,9 +205,40 @@ class MarkerOverlay:
         else:
             self._mesh.copy_from(cloud)
         self._actor.SetVisibility(bool(len(self.shown_points)))
+        self._draw_labels(plotter)
         self._viewport.render_now()
 
+    def _draw_labels(self, plotter) -> None:
+        """The labels beside their markers: moved in place while the texts stay, built again when they change."""
+        import pyvista as pv
+
+        rows = [i for i, text in enumerate(self.shown_labels) if text]
+        texts = [self.shown_labels[i] for i in rows]
+        if not rows:
+            if self._label_actor is not None:
+                self._label_actor.SetVisibility(False)
+            return
+        points = self.shown_points[rows]
+        if self._label_actor is None or texts != self._label_texts:
+            if self._label_actor is not None:
+                plotter.remove_actor(self._label_actor, render=False)
+            self._label_cloud = pv.PolyData(points.copy())
+            self._label_cloud.point_data["labels"] = np.array(texts)
+            self._label_actor = plotter.add_point_labels(
+                self._label_cloud, "labels", name="mocap-marker-labels", font_size=LABEL_FONT_SIZE,
+                text_color="white", shape_color="#20262c", shape_opacity=0.6, margin=2, show_points=False,
+                always_visible=True, reset_camera=False, render=False)
+            self._label_texts = texts
+        else:
+            self._label_cloud.points[:] = points
+            self._label_cloud.Modified()
+        self._label_actor.SetVisibility(True)
+
     def _take_off_screen(self) -> None:
-        if self.visible:
+        labels_on, markers_on = bool(self.labels_visible), self.visible
+        if labels_on:
+            self._label_actor.SetVisibility(False)
+        if markers_on:
             self._actor.SetVisibility(False)
+        if labels_on or markers_on:
             self._viewport.render_now()

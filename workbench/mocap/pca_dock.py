@@ -289,8 +289,13 @@ class PcaDock(QDockWidget):
         self.apply_report = QPlainTextEdit()
         self.apply_report.setReadOnly(True)
         self.error_table = QTableWidget(0, 2)
-        self.error_table.setHorizontalHeaderLabels(["Marker", "Held-out error, RMS (mm)"])
-        self.error_table.horizontalHeader().setSectionResizeMode(QHeaderView.ResizeMode.Stretch)
+        self.error_table.setHorizontalHeaderLabels(["Marker", "Held-out RMS (mm)"])   # read whole at 1366 px
+        self.error_table.horizontalHeaderItem(1).setToolTip(
+            "Root-mean-square error of the marker, in mm, over the frames the PCA did not analyse, "
+            "reconstructed through the face")
+        header = self.error_table.horizontalHeader()
+        header.setSectionResizeMode(0, QHeaderView.ResizeMode.ResizeToContents)
+        header.setSectionResizeMode(1, QHeaderView.ResizeMode.Stretch)
         self.error_table.verticalHeader().setVisible(False)
         row = QHBoxLayout()
         row.addWidget(QLabel("Parameter names"))
@@ -304,7 +309,7 @@ class PcaDock(QDockWidget):
         layout.addLayout(row)
         body = QHBoxLayout()
         body.addWidget(self.error_table, 1)
-        body.addWidget(self.apply_report, 2)
+        body.addWidget(self.apply_report, 1)
         layout.addLayout(body, 1)
         return page
 

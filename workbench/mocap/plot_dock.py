@@ -79,12 +79,17 @@ class MarkerPlotDock(QDockWidget):
         festival_button = QPushButton("Festival…")
         festival_button.setToolTip("Phone labels from Festival's timing of the spoken text")
         festival_button.clicked.connect(self._festival_dialog)
+        self.names_button = QPushButton("Marker names")
+        self.names_button.setCheckable(True)
+        self.names_button.setToolTip("Show the markers' names beside the plot: give each marker its MPEG-4 feature "
+                                     "point (click it on the face or in the list)")
+        self.names_button.setEnabled(False)             # until there is a panel to show
         self.count_label = QLabel()
 
         row = FlowLayout(spacing=4)     # one line when the dock is wide, wrapped when it is narrow
         for group in ((QLabel("Marker"), self.marker_combo, self.axis_combo), (QLabel("Phone"), self.phone_edit),
                       (self.selectors_edit, select_button), (remove_button, clear_button),
-                      (labels_button, festival_button)):
+                      (labels_button, festival_button), (self.names_button,)):
             row.addWidget(_side_by_side(*group))
         row.addWidget(self.count_label, stretch=1)
         self.count_label.setAlignment(Qt.AlignmentFlag.AlignRight | Qt.AlignmentFlag.AlignVCenter)
@@ -93,7 +98,9 @@ class MarkerPlotDock(QDockWidget):
         layout = QVBoxLayout(body)
         layout.setContentsMargins(4, 2, 4, 2)
         layout.addLayout(row)
-        layout.addWidget(self.plot, 1)
+        self._beside_plot = QHBoxLayout()
+        self._beside_plot.addWidget(self.plot, 1)
+        layout.addLayout(self._beside_plot, 1)
         self.setWidget(DockScroller(body))   # narrower than its content: scroll, not widen the window
 
         self.marker_combo.currentTextChanged.connect(self._update_curve)
@@ -101,6 +108,7 @@ class MarkerPlotDock(QDockWidget):
         self.plot.frame_clicked.connect(self._on_clicked)
         self.plot.range_dragged.connect(self._on_dragged)
         state.session_changed.connect(self._on_session)
+        state.markers_renamed.connect(self._on_renamed)
         state.phones_changed.connect(self._on_phones)
         state.selection_changed.connect(self._on_selection)
         playhead.time_changed.connect(self._on_playhead)
@@ -113,6 +121,14 @@ class MarkerPlotDock(QDockWidget):
     def _on_playhead(self, seconds: float) -> None:
         """The red line follows the playhead only while the player plays this recording."""
         self.plot.set_playhead(seconds if self.playhead_is_recording else None)
+
+    def add_side_panel(self, panel: QWidget) -> None:
+        """Put ``panel`` (the marker names) on the left of the plot, shown while *Marker names* is down."""
+        self._beside_plot.insertWidget(0, panel)
+        panel.setVisible(self.names_button.isChecked())
+        self.names_button.toggled.connect(panel.setVisible)
+        self.names_button.setEnabled(True)
+
     def useful_size(self) -> QSize:
         """Wide enough to read phones along the time axis, high enough for the curve (LayoutManager.reveal)."""
         return QSize(USEFUL_WIDTH, USEFUL_HEIGHT)
@@ -137,6 +153,16 @@ class MarkerPlotDock(QDockWidget):
         self._on_phones()
         self._on_selection()
 
+    def _on_renamed(self, renames: dict) -> None:
+        """Markers were renamed: the list follows, and so does the marker plotted."""
+        current = renames.get(self.marker, self.marker)
+        self.marker_combo.blockSignals(True)
+        self.marker_combo.clear()
+        self.marker_combo.addItems(self.state.session.markers)
+        self.marker_combo.setCurrentText(current)
+        self.marker_combo.blockSignals(False)
+        self._update_curve()
+
     def _update_curve(self, *_args) -> None:
         session = self.state.session
         if session is None or self.marker not in session.markers:
@@ -157,9 +183,9 @@ class MarkerPlotDock(QDockWidget):
 
     def _on_selection(self) -> None:
         self.plot.set_spans(self.state.spans)
-        n = len(self.state.selected_frames())
-        self.count_label.setText(f"{n} frames selected in {len(self.state.spans)} spans" if n
-                                 else "no frames selected: PCA uses all")
+        n, spans = len(self.state.selected_frames()), len(self.state.spans)
+        self.count_label.setText(f"{n} {'frame' if n == 1 else 'frames'} selected in {spans} "
+                                 f"{'span' if spans == 1 else 'spans'}" if n else "no frames selected: PCA uses all")
 
     # -- selecting -------------------------------------------------------------------
     def _on_clicked(self, frame: int) -> None:

@@ -23,7 +23,9 @@ from pathlib import Path
 
 import numpy as np
 from PySide6.QtCore import QObject, Signal
+from PySide6.QtGui import QUndoStack
 
+from engine.mocap.marker_assignment import rename_markers
 from engine.mocap.session import Session
 
 
@@ -52,12 +54,19 @@ class MocapState(QObject):
         Spans were added or removed.
     articulation_changed(object)
         A new PCA result (:class:`engine.mocap.pca.Articulation`) or ``None``.
+    markers_renamed(dict)
+        Markers of the session were renamed, ``{old name: new name}`` (a feature point assigned, undone, a map).
+
+    The session's own edits (marker names) go on :attr:`undo_stack`, which
+    is emptied with each new session and clean while the session is as
+    its file has it.
     """
 
     session_changed = Signal(object)
     phones_changed = Signal()
     selection_changed = Signal()
     articulation_changed = Signal(object)
+    markers_renamed = Signal(dict)
 
     def __init__(self, parent: QObject | None = None):
         super().__init__(parent)
@@ -66,9 +75,13 @@ class MocapState(QObject):
         self.spans: list[Span] = []
         self.phone_selection = None      # the FrameSelection the spans came from, while they all did
         self.articulation = None
+        self.undo_stack = stack = QUndoStack(self)
+        # Going away, the stack empties itself and says so; the widgets listening may be gone already.
+        self.destroyed.connect(lambda *_: stack.blockSignals(True))
 
     # -- session ---------------------------------------------------------------
     def set_session(self, session: Session | None, path: str | Path | None = None) -> None:
+        self.undo_stack.clear()              # its commands rename the markers of the session before
         self.session = session
         self.session_path = Path(path) if path else None
         self.spans = []
@@ -83,6 +96,21 @@ class MocapState(QObject):
             return
         self.session.phones = [(float(a), float(b), str(c)) for a, b, c in phones]
         self.phones_changed.emit()
+
+    def rename_markers(self, renames: dict[str, str]) -> dict[str, str]:
+        """Rename the session's markers (:func:`engine.mocap.marker_assignment.rename_markers`); the undoing renames.
+
+        The frame selection stays (frames do not change); a PCA that analysed
+        a renamed marker no longer matches the session, so it is dropped.
+        """
+        if self.session is None or not renames:
+            return {}
+        undo = rename_markers(self.session, renames)
+        done = {old: new for new, old in undo.items()}
+        if self.articulation is not None and set(done) & set(self.articulation.markers):
+            self.set_articulation(None)
+        self.markers_renamed.emit(done)
+        return undo
 
     # -- selection -------------------------------------------------------------
     def add_span(self, start: int, end: int, label: str = "") -> Span:
