@@ -40,13 +40,13 @@ import hashlib
 import itertools
 import math
 import re
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from engine.errors import UserError
+from engine.commands.limits import MAX_TIME_MS
 from engine.formats.text_files import read_bounded_text
+from engine.stimuli.design_toml import DesignError, Locator, read_design_toml
 
 FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise",
                  "audio_text", "align_phone", "expression_b", "morph", "audio", "labels", "identity", "identity_b",
@@ -58,10 +58,17 @@ MAX_OFFSET_MS = 10_000.0
 VIEWS = ("front", "side", "three-quarter")
 _TOP_KEYS = {"seed", "factors", "output", "combine", "rows", "blocks", "name"}
 _OUTPUT_KEYS = {"kinds", "size", "fps", "view", "still_ms"}
-
-
-class DesignError(UserError):
-    """A design file that cannot be made: its file, line and key are named."""
+RANGES: dict[str, tuple[float, float, str]] = {
+    **dict.fromkeys(("intensity", "morph", "identity_morph", "viseme_morph"),
+                    (0.0, 100.0, "must be a number from 0 to 100 (%)")),
+    "av_offset_ms": (-MAX_OFFSET_MS, MAX_OFFSET_MS, f"must be a number of ms within ±{MAX_OFFSET_MS:g}"),
+    "snr_db": (-60.0, 60.0, "must be a number of dB from -60 to 60"),
+    "fps": (1.0, 240.0, "fps must be a number from 1 to 240"),
+    "still_ms": (0.0, MAX_TIME_MS, f"still_ms must be a time in ms from the start of the clip, 0 to "
+                                   f"{MAX_TIME_MS:.0f} (24 hours)"),
+}
+"""The range of every number with a meaning (factor levels and [output] options); any other number in a
+design (a free label, an identity value) is finite and within ±10¹⁵ (``design_toml.check_values``)."""
 
 
 @dataclass(frozen=True)
@@ -115,14 +122,7 @@ def load_design(path: str | Path) -> Design:
 def parse_design(text: str, path: str | Path = "<design>") -> Design:
     """Check a design's text and list its stimuli."""
     path = Path(path)
-    where = _Locator(text, path)
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        found = re.search(r"\(at line (\d+), column (\d+)\)", str(exc))
-        message = str(exc).split(" (at ")[0] + (f" (column {found.group(2)})" if found else "")
-        raise DesignError(f"not a TOML file: {message}", file=path,
-                          line=int(found.group(1)) if found else None) from None
+    data, where = read_design_toml(text, path)
     for key in data:
         if key not in _TOP_KEYS:
             raise where.error(key, f"unknown key '{key}' (known: {', '.join(sorted(_TOP_KEYS))})")
@@ -136,8 +136,6 @@ def parse_design(text: str, path: str | Path = "<design>") -> Design:
     rows = _combinations(combine, checked, data, where, path.parent)
     if not rows:
         raise where.error("factors", "the design makes no stimulus")
-    if len(rows) > MAX_STIMULI:
-        raise where.error("factors", f"the design makes {len(rows)} stimuli, more than {MAX_STIMULI}")
     width = max(4, len(str(len(rows))))
     stimuli = [Stimulus(f"{i:0{width}d}", row) for i, row in enumerate(rows, start=1)]
     seed = data.get("seed", 0)
@@ -146,7 +144,7 @@ def parse_design(text: str, path: str | Path = "<design>") -> Design:
     name = data.get("name", path.stem)
     if not isinstance(name, str):
         raise where.error("name", "name must be a string")
-    extra = {}
+    extra: dict[str, Path] = {}
     for row in rows:
         if ("audio" in row) != ("labels" in row):
             raise where.error("audio" if "audio" not in row else "labels",
@@ -164,7 +162,7 @@ def parse_design(text: str, path: str | Path = "<design>") -> Design:
             raise where.error("identity_morph", "identity_morph needs identity_b (the identity at 100 %)")
         for factor in ("model", "noise", "audio", "labels", "identity", "identity_b"):
             value = row.get(factor)
-            if isinstance(value, str) and (factor != "noise" or value not in NOISES):
+            if isinstance(value, str) and (factor != "noise" or value not in NOISES) and value not in extra:
                 extra[value] = (path.parent / value).resolve()
     return Design(path, checked, stimuli, _output(data.get("output", {}), where), seed, name,
                   hashlib.sha256(text.encode("utf-8")).hexdigest(), extra)
@@ -172,53 +170,84 @@ def parse_design(text: str, path: str | Path = "<design>") -> Design:
 
 # ---------------------------------------------------------------------------
 
-def _combinations(combine: str, factors: dict[str, list[Any]], data: dict[str, Any], where: _Locator,
+def _combinations(combine: str, factors: dict[str, list[Any]], data: dict[str, Any], where: Locator,
                   folder: Path) -> list[dict[str, Any]]:
+    """The stimuli's levels, counted before any is made: a design of more than :data:`MAX_STIMULI` is refused
+    at once, however many blocks or rows it writes."""
     if combine == "cross":
+        _refuse_too_many(math.prod(len(v) for v in factors.values()), "factors", where)
         return _cross(factors)
+    index = {name: {_key(level) for level in levels} for name, levels in factors.items()}
     if combine == "list":
         rows = data.get("rows")
         if not isinstance(rows, list) or not rows or not all(isinstance(r, dict) for r in rows):
             raise where.error("rows", "combine = \"list\" needs [[rows]] tables, one per stimulus")
+        _refuse_too_many(len(rows), "rows", where)
         out = []
-        for row in rows:
+        for number, row in enumerate(rows):
             for name, value in row.items():
-                if name not in factors:
-                    raise where.error(name, f"row names '{name}', which is not a factor")
-                if _levels(name, [value], where, folder)[0] not in factors[name]:
-                    raise where.error(name, f"{value!r} is not a level of '{name}'")
+                _known_level(name, value, factors, index, where, folder, "rows", number)
             missing = [n for n in factors if n not in row]
             if missing:
-                raise where.error("rows", f"a row gives no level for {', '.join(missing)}")
+                raise where.error("rows", f"a row gives no level for {', '.join(missing)}",
+                                  where.line_in_table("rows", number))
             out.append({name: row[name] for name in factors})
         return out
     blocks = data.get("blocks")
     if not isinstance(blocks, list) or not blocks or not all(isinstance(b, dict) for b in blocks):
         raise where.error("blocks", "combine = \"blocks\" needs [[blocks]] tables of factor levels")
-    out = []
-    for block in blocks:
-        chosen = dict(factors)
+    chosen = []
+    for number, block in enumerate(blocks):
+        levels = dict(factors)
         for name, values in block.items():
-            if name not in factors:
-                raise where.error(name, f"block names '{name}', which is not a factor")
-            levels = _levels(name, values, where, folder)
-            for level in levels:
-                if level not in factors[name]:
-                    raise where.error(name, f"{level!r} is not a level of '{name}'")
-            chosen[name] = levels
-        out += _cross(chosen)
-    return out
+            if name in factors and (not isinstance(values, list) or not values):
+                raise where.error(name, f"factor '{name}' must be a list of its levels, e.g. {name} = [...]",
+                                  where.line_in_table("blocks", number, name))
+            for value in values if isinstance(values, list) else [values]:
+                _known_level(name, value, factors, index, where, folder, "blocks", number)
+            levels[name] = _levels(name, values, where, folder)
+        chosen.append(levels)
+    _refuse_too_many(sum(math.prod(len(v) for v in levels.values()) for levels in chosen), "blocks", where)
+    return [row for levels in chosen for row in _cross(levels)]
+
+
+def _refuse_too_many(count: int, key: str, where: Locator) -> None:
+    if count > MAX_STIMULI:
+        raise where.error(key, f"the design makes {count} stimuli, more than {MAX_STIMULI}")
+
+
+def _known_level(name: str, value: Any, factors: dict[str, list[Any]], index: dict[str, set[Any]],
+                 where: Locator, folder: Path, tables: str, number: int) -> None:
+    """Refuse ``value`` of factor ``name`` in the ``number``-th of the ``[[tables]]`` (rows or blocks) unless
+    it is one of the factor's levels: looked up in ``index``, so a design of many rows takes time in
+    proportion to its length. The error names the line in that table."""
+    if name in factors and _key(value) in index[name]:
+        return
+    line = where.line_in_table(tables, number, name)
+    if name not in factors:
+        raise where.error(name, f"{tables[:-1]} names '{name}', which is not a factor", line)
+    try:
+        _level(name, value, where, folder)
+    except DesignError as exc:
+        raise DesignError(exc.message, file=where.path, line=line) from None
+    raise where.error(name, f"{value!r} is not a level of '{name}'", line)
+
+
+def _key(value: Any) -> Any:
+    """``value`` as a set member: equal values (``1`` and ``1.0``, tables in any key order) give equal keys."""
+    if isinstance(value, dict):
+        return ("table", tuple(sorted(((k, _key(v)) for k, v in value.items()), key=lambda item: item[0])))
+    if isinstance(value, list):
+        return ("array", tuple(_key(v) for v in value))
+    return value
 
 
 def _cross(factors: dict[str, list[Any]]) -> list[dict[str, Any]]:
     names = list(factors)
-    total = math.prod(len(v) for v in factors.values())
-    if total > MAX_STIMULI:
-        return [{}] * (MAX_STIMULI + 1)                       # refused by the caller with the count
     return [dict(zip(names, combo, strict=True)) for combo in itertools.product(*factors.values())]
 
 
-def _levels(name: str, values: Any, where: _Locator, folder: Path) -> list[Any]:
+def _levels(name: str, values: Any, where: Locator, folder: Path) -> list[Any]:
     if not isinstance(values, list) or not values:
         raise where.error(name, f"factor '{name}' must be a list of its levels, e.g. {name} = [...]")
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name):
@@ -229,12 +258,11 @@ def _levels(name: str, values: Any, where: _Locator, folder: Path) -> list[Any]:
     return checked
 
 
-def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
+def _level(name: str, value: Any, where: Locator, folder: Path) -> Any:
     def need(ok: bool, what: str) -> None:
         if not ok:
             raise where.error(name, f"'{name}' level {value!r}: {what}")
 
-    number = isinstance(value, int | float) and not isinstance(value, bool)
     if name in ("text", "voice", "expression", "audio_text", "align_phone", "expression_b", "viseme", "viseme_b"):
         need(isinstance(value, str) and value.strip() != "", "must be a non-empty string")
     elif name == "model":
@@ -252,17 +280,12 @@ def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
                 Identity(value)
             except IdentityError as exc:
                 need(False, exc.message)
-    elif name in ("intensity", "morph", "identity_morph", "viseme_morph"):
-        need(number and 0 <= value <= 100, "must be a number from 0 to 100 (%)")
+    elif name in RANGES:
+        need(_in_range(name, value), RANGES[name][2])
     elif name in ("audio", "labels"):
         need(isinstance(value, str), f"must be a file name (relative to the design): the recording's "
                                      f"{'WAV' if name == 'audio' else 'phone labels'}")
         need((folder / value).is_file(), f"no such file ({folder / value})")
-    elif name == "av_offset_ms":
-        need(number and math.isfinite(value) and abs(value) <= MAX_OFFSET_MS,
-             f"must be a number of ms within ±{MAX_OFFSET_MS:g}")
-    elif name == "snr_db":
-        need(number and math.isfinite(value) and -60 <= value <= 60, "must be a number of dB from -60 to 60")
     elif name == "noise":
         need(isinstance(value, str), f"must be {' or '.join(NOISES)} or a WAV file")
         need(value in NOISES or (folder / value).is_file(), f"no such noise file ({folder / value})")
@@ -271,7 +294,14 @@ def _level(name: str, value: Any, where: _Locator, folder: Path) -> Any:
     return value
 
 
-def _output(table: Any, where: _Locator) -> Output:
+def _in_range(name: str, value: Any) -> bool:
+    """Whether ``value`` is a number (not a boolean) within :data:`RANGES` ``[name]``."""
+    low, high, _ = RANGES[name]
+    return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value) and \
+        low <= value <= high
+
+
+def _output(table: Any, where: Locator) -> Output:
     if not isinstance(table, dict):
         raise where.error("output", "[output] must be a table")
     for key in table:
@@ -285,35 +315,13 @@ def _output(table: Any, where: _Locator) -> Output:
     if not match or any(int(v) % 2 or int(v) < 16 for v in match.groups()):
         raise where.error("size", f"size must be WIDTHxHEIGHT, even numbers from 16 (got {size!r})")
     fps = table.get("fps", 30)
-    if not isinstance(fps, int | float) or isinstance(fps, bool) or not 1 <= fps <= 240:
-        raise where.error("fps", "fps must be a number from 1 to 240")
+    if not _in_range("fps", fps):
+        raise where.error("fps", RANGES["fps"][2])
     view = table.get("view", "front")
     if view not in VIEWS:
         raise where.error("view", f"view must be one of {', '.join(VIEWS)}")
     still = table.get("still_ms")
-    if still is not None and (not isinstance(still, int | float) or isinstance(still, bool) or still < 0):
-        raise where.error("still_ms", "still_ms must be a time in ms from the start of the clip")
+    if still is not None and not _in_range("still_ms", still):
+        raise where.error("still_ms", RANGES["still_ms"][2])
     return Output(tuple(dict.fromkeys(kinds)), (int(match.group(1)), int(match.group(2))), float(fps), view,
                   None if still is None else float(still))
-
-
-class _Locator:
-    """Finds the line a key is written on, for errors (tomllib gives no positions for values)."""
-
-    def __init__(self, text: str, path: Path):
-        self.lines = text.splitlines()
-        self.path = path
-
-    def line_of(self, key: str) -> int | None:
-        pattern = re.compile(rf'^\s*(?:\[+\s*)?"?{re.escape(key)}"?\s*(?:=|\]|\.)')
-        for number, line in enumerate(self.lines, start=1):
-            if pattern.match(line):
-                return number
-        inline = re.compile(rf'[{{,]\s*"?{re.escape(key)}"?\s*=')
-        for number, line in enumerate(self.lines, start=1):
-            if inline.search(line):
-                return number
-        return None
-
-    def error(self, key: str, message: str) -> DesignError:
-        return DesignError(f"{key}: {message}", file=self.path, line=self.line_of(key))
