@@ -34,6 +34,7 @@ from __future__ import annotations
 import csv
 import io
 import wave
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Protocol, runtime_checkable
@@ -131,55 +132,142 @@ def write_wav(path: str | Path, utterance: Utterance) -> None:
     """Write the utterance's waveform as a 16-bit PCM mono WAV file, atomically; a recorded utterance's
     own WAV file is copied byte for byte."""
     if utterance.source_wav is not None:
-        try:
-            data = Path(utterance.source_wav).read_bytes()
-        except OSError as exc:
-            raise SynthesisError(f"cannot read the recording: {exc.strerror or exc}",
-                                 file=utterance.source_wav) from None
-        atomic_write_bytes(path, data)
+        atomic_write_bytes(path, read_wav_bytes(utterance.source_wav, "recording"))
         return
     atomic_write_bytes(path, wav_bytes(utterance.samples, utterance.sample_rate))
 
 
-def decode_wav(data: bytes, source: str | Path = "<wav>") -> tuple[np.ndarray, int]:
-    """Samples (float32 mono in [-1, 1]) and sample rate of an integer-PCM WAV file's bytes.
-
-    Several channels are averaged into one.
-    """
-    try:
-        with wave.open(io.BytesIO(data), "rb") as wav:
-            channels, width, rate = wav.getnchannels(), wav.getsampwidth(), wav.getframerate()
-            frames = wav.readframes(wav.getnframes())
-    except (wave.Error, EOFError) as exc:
-        raise SynthesisError(f"not a PCM WAV file: {exc}", file=source) from None
-    if width == 1:
-        values = (np.frombuffer(frames, dtype=np.uint8).astype(np.float64) - 128.0) / 128.0
-    elif width == 2:
-        values = np.frombuffer(frames, dtype="<i2").astype(np.float64) / 32768.0
-    elif width == 3:
-        raw = np.frombuffer(frames, dtype=np.uint8).reshape(-1, 3).astype(np.int32)
-        ints = raw[:, 0] | (raw[:, 1] << 8) | (raw[:, 2] << 16)
-        ints = np.where(ints >= 1 << 23, ints - (1 << 24), ints)
-        values = ints.astype(np.float64) / float(1 << 23)
-    elif width == 4:
-        values = np.frombuffer(frames, dtype="<i4").astype(np.float64) / float(1 << 31)
-    else:  # pragma: no cover - the wave module rejects other widths
-        raise SynthesisError(f"unsupported WAV sample width {width} bytes", file=source)
-    values = values[: len(values) - len(values) % channels].reshape(-1, channels).mean(axis=1)
-    return values.astype(np.float32), rate
-
-
 MAX_WAV_BYTES = 2 * 1024**3
 """A WAV file larger than this (2 GiB: hours of studio audio) is refused before it is read."""
+WAV_RATES = (1_000, 768_000)
+"""The sample rates a WAV may have, Hz (telephone speech is 8 kHz, studio masters at most 768 kHz)."""
+MAX_WAV_CHANNELS = 256
+MAX_WAV_CHUNKS = 10_000
+"""Chunks before the samples (a WAV has a handful: ``fmt``, ``LIST``, ``fact``, ``bext``)."""
+_PCM, _EXTENSIBLE = 1, 0xFFFE
+_BLOCK_FRAMES = 1 << 18
+
+
+@dataclass(frozen=True)
+class WavLayout:
+    """How a PCM WAV file's samples lie in its bytes: ``frames`` of ``channels`` integers of ``width`` bytes
+    from byte ``start`` on, at ``rate`` frames a second."""
+
+    channels: int
+    width: int
+    rate: int
+    start: int
+    frames: int
+
+    @property
+    def duration_ms(self) -> float:
+        return 1000.0 * self.frames / self.rate
+
+
+def wav_layout(data: bytes, source: str | Path = "<wav>") -> WavLayout:
+    """The layout of an integer-PCM WAV file's bytes (RIFF ``WAVE``; format 1 or extensible PCM; 8, 16, 24
+    or 32 bits; :data:`WAV_RATES`; at most :data:`MAX_WAV_CHANNELS` channels), or a :class:`SynthesisError`
+    naming ``source``. Every chunk's size is checked against the bytes that follow it before anything is
+    read; a data chunk longer than the file (a recording cut short) holds the whole frames that are there.
+    """
+    def refuse(what: str) -> SynthesisError:
+        return SynthesisError(f"not a PCM WAV file: {what}", file=source)
+
+    if len(data) < 12 or data[:4] != b"RIFF" or data[8:12] != b"WAVE":
+        raise refuse("it does not begin with a RIFF WAVE header")
+    position, layout = 12, None
+    for _ in range(MAX_WAV_CHUNKS):
+        if position + 8 > len(data):
+            break
+        name, size = data[position:position + 4], int.from_bytes(data[position + 4:position + 8], "little")
+        body, left = position + 8, len(data) - position - 8
+        shown = name.decode("latin-1").encode("unicode_escape").decode("ascii")
+        if name == b"data":
+            if layout is None:
+                raise refuse("its samples (the data chunk) come before their format (the 'fmt ' chunk)")
+            frames = min(size, left) // (layout.channels * layout.width)
+            return WavLayout(layout.channels, layout.width, layout.rate, body, frames)
+        if size > left:
+            raise refuse(f"its '{shown}' chunk claims {size} bytes, but only {left} follow")
+        if name == b"fmt ":
+            layout = _wav_format(data[body:body + size], refuse)
+        position = body + size + (size & 1)                      # chunks are padded to an even length
+    else:
+        raise refuse(f"more than {MAX_WAV_CHUNKS} chunks before the samples")
+    raise refuse("it has no samples (no data chunk)" if layout is not None else "it has no 'fmt ' chunk")
+
+
+def _wav_format(chunk: bytes, refuse: Callable[[str], SynthesisError]) -> WavLayout:
+    if len(chunk) < 16:
+        raise refuse(f"its 'fmt ' chunk has {len(chunk)} bytes, a PCM format needs 16")
+    tag, channels, rate = int.from_bytes(chunk[0:2], "little"), int.from_bytes(chunk[2:4], "little"), \
+        int.from_bytes(chunk[4:8], "little")
+    bits = int.from_bytes(chunk[14:16], "little")
+    if tag == _EXTENSIBLE and len(chunk) >= 26:
+        tag = int.from_bytes(chunk[24:26], "little")             # the sub-format GUID's first two bytes
+    if tag != _PCM:
+        raise refuse(f"its samples are of format {tag}, not integer PCM (format 1)")
+    if not 1 <= channels <= MAX_WAV_CHANNELS:
+        raise refuse(f"{channels} channels (a WAV has 1 to {MAX_WAV_CHANNELS})")
+    if not WAV_RATES[0] <= rate <= WAV_RATES[1]:
+        raise refuse(f"a sample rate of {rate} Hz (a WAV's is {WAV_RATES[0]} to {WAV_RATES[1]} Hz)")
+    width = (bits + 7) // 8
+    if not 1 <= width <= 4:
+        raise refuse(f"{bits} bits a sample (integer PCM has 8, 16, 24 or 32)")
+    return WavLayout(channels, width, rate, 0, 0)
+
+
+def decode_wav(data: bytes, source: str | Path = "<wav>") -> tuple[np.ndarray, int]:
+    """Samples (float32 mono in [-1, 1]) and sample rate of an integer-PCM WAV file's bytes (:func:`wav_layout`).
+
+    Several channels are averaged into one. The samples are converted a block at a time into the one array
+    returned, so the memory used beyond ``data`` is 4 bytes a frame.
+    """
+    layout = wav_layout(data, source)
+    out = np.empty(layout.frames, dtype=np.float32)
+    frame = layout.channels * layout.width
+    scale = 2.0 ** -(8 * layout.width - 1)
+    view = memoryview(data)
+    for first in range(0, layout.frames, _BLOCK_FRAMES):
+        count = min(_BLOCK_FRAMES, layout.frames - first)
+        begin = layout.start + first * frame
+        ints = _pcm_integers(view[begin:begin + count * frame], layout.width).reshape(count, layout.channels)
+        values = ints[:, 0] if layout.channels == 1 else ints.mean(axis=1)
+        out[first:first + count] = values * scale
+    return out, layout.rate
+
+
+def _pcm_integers(raw: memoryview, width: int) -> np.ndarray:
+    """The signed sample values of little-endian PCM bytes (8-bit samples are unsigned, centred on 128)."""
+    if width == 1:
+        return np.frombuffer(raw, dtype=np.uint8).astype(np.int16) - 128
+    if width == 2:
+        return np.frombuffer(raw, dtype="<i2")
+    if width == 4:
+        return np.frombuffer(raw, dtype="<i4")
+    bytes3 = np.frombuffer(raw, dtype=np.uint8).reshape(-1, 3).astype(np.int32)
+    ints = bytes3[:, 0] | (bytes3[:, 1] << 8) | (bytes3[:, 2] << 16)
+    return np.where(ints >= 1 << 23, ints - (1 << 24), ints)
+
+
+def read_wav_bytes(path: str | Path, what: str = "WAV file") -> bytes:
+    """The bytes of a WAV file, read as every WAV is: a regular file of at most :data:`MAX_WAV_BYTES`."""
+    try:
+        return read_bounded_bytes(path, MAX_WAV_BYTES, SynthesisError, what)
+    except OSError as exc:
+        raise SynthesisError(f"cannot read: {exc.strerror or exc}", file=path) from None
 
 
 def read_wav(path: str | Path) -> tuple[np.ndarray, int]:
-    """Samples (float32 mono in [-1, 1]) and sample rate of a PCM WAV file (a regular file, at most 2 GiB)."""
-    try:
-        data = read_bounded_bytes(path, MAX_WAV_BYTES, SynthesisError, "WAV file")
-    except OSError as exc:
-        raise SynthesisError(f"cannot read: {exc.strerror or exc}", file=path) from None
-    return decode_wav(data, path)
+    """Samples (float32 mono in [-1, 1]) and sample rate of a PCM WAV file (a regular file, at most 2 GiB):
+    the one reader of WAV files (``say --audio``, a design's ``audio``/``noise``, ``web-export --audio``,
+    ``capture --audio``)."""
+    return decode_wav(read_wav_bytes(path), path)
+
+
+def read_wav_layout(path: str | Path) -> WavLayout:
+    """The :class:`WavLayout` of a WAV file (its rate, channels, frames), checked as :func:`read_wav` checks it."""
+    return wav_layout(read_wav_bytes(path), path)
 
 
 # ---------------------------------------------------------------------------

@@ -133,9 +133,13 @@ def _noise_file(path: Path, rate: int, count: int) -> np.ndarray:
     samples, noise_rate = read_wav(path)
     if len(samples) == 0:
         raise UserError("the noise file has no samples", file=path)
-    if noise_rate != rate:
-        index = np.minimum((np.arange(int(len(samples) * rate / noise_rate)) * noise_rate / rate).astype(int),
-                           len(samples) - 1)
-        samples = samples[index]
-    repeats = -(-count // len(samples))
-    return np.tile(samples.astype(np.float64), repeats)[:count]
+    if noise_rate == rate:
+        repeats = -(-count // len(samples))
+        return np.tile(samples.astype(np.float64), repeats)[:count]
+    # the noise resampled by nearest sample to `length` samples at `rate`, looped: only the `count` needed are
+    # made (a noise file at a low rate would otherwise be resampled whole, many times its length)
+    length = int(len(samples) * rate / noise_rate)
+    if length == 0:
+        raise UserError("the noise file is shorter than one sample at the speech's rate", file=path)
+    index = np.minimum((np.arange(count) % length * noise_rate / rate).astype(int), len(samples) - 1)
+    return samples[index].astype(np.float64)

@@ -40,11 +40,13 @@ import hashlib
 import itertools
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from engine.commands.limits import MAX_TIME_MS
+from engine.errors import UserError
 from engine.formats.text_files import read_bounded_text
 from engine.stimuli.design_toml import DesignError, Locator, read_design_toml
 
@@ -286,12 +288,27 @@ def _level(name: str, value: Any, where: Locator, folder: Path) -> Any:
         need(isinstance(value, str), f"must be a file name (relative to the design): the recording's "
                                      f"{'WAV' if name == 'audio' else 'phone labels'}")
         need((folder / value).is_file(), f"no such file ({folder / value})")
+        if name == "audio":
+            _need_wav(folder / value, need)
     elif name == "noise":
         need(isinstance(value, str), f"must be {' or '.join(NOISES)} or a WAV file")
         need(value in NOISES or (folder / value).is_file(), f"no such noise file ({folder / value})")
+        if value not in NOISES:
+            _need_wav(folder / value, need)
     else:
         need(isinstance(value, str | int | float | bool), "a free label must be a string, number or boolean")
     return value
+
+
+def _need_wav(path: Path, need: Callable[[bool, str], None]) -> None:
+    """A design's WAV (a recording, a noise) is read as :func:`~engine.speech.synthesis.read_wav` reads it,
+    so a file it refuses is an error at the design's line, before anything is made."""
+    from engine.speech.synthesis import read_wav_layout
+
+    try:
+        read_wav_layout(path)
+    except UserError as exc:
+        need(False, exc.message)
 
 
 def _in_range(name: str, value: Any) -> bool:

@@ -13,11 +13,13 @@ from __future__ import annotations
 
 import tempfile
 import time
-import wave
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
+from engine.errors import UserError
 from engine.script.inline_commands import parse_script
+from engine.speech.synthesis import read_wav_layout
 from engine.stimuli.cores import kept_to_a_core
 from engine.stimuli.design import Design, Stimulus
 from engine.stimuli.make import make_stimulus
@@ -38,14 +40,29 @@ def relative_length(design: Design, stimulus: Stimulus) -> float:
     """A stimulus's expected length in arbitrary units (characters spoken, or 15 per second recorded)."""
     levels = stimulus.levels
     if "audio" in levels:
-        try:
-            with wave.open(str(design.extra_files[levels["audio"]]), "rb") as w:
-                return 15.0 * w.getnframes() / max(w.getframerate(), 1)
-        except (OSError, wave.Error, EOFError):
-            return 30.0
+        seconds = _recording_seconds(design.extra_files[levels["audio"]])
+        return 30.0 if seconds is None else 15.0 * seconds
     texts = [str(levels.get(k, "")) for k in ("text", "audio_text") if k in levels]
     spoken = max((len(parse_script(t).text.strip()) for t in texts), default=0)
     return 8.0 + spoken + abs(float(levels.get("av_offset_ms", 0.0))) / 1000.0 * 15.0
+
+
+def _recording_seconds(path: Path) -> float | None:
+    """A recording's length, or None if it cannot be read as a WAV (the stimulus that uses it then says why);
+    read once however many stimuli use it (until the file changes)."""
+    try:
+        info = path.stat()
+    except (OSError, ValueError):
+        return None
+    return _wav_seconds(path, info.st_mtime_ns, info.st_size)
+
+
+@lru_cache(maxsize=256)
+def _wav_seconds(path: Path, _mtime_ns: int, _size: int) -> float | None:
+    try:
+        return read_wav_layout(path).duration_ms / 1000.0
+    except UserError:
+        return None
 
 
 def estimate(design: Design, todo: list[Stimulus], workers: int) -> Estimate | None:
