@@ -34,6 +34,9 @@ from .view_state import ViewState
 from .viewport import Viewport
 
 MESSAGE_MS = 4000
+DOCK_ORDER = ("dock:parameters", "dock:parameter-tree", "dock:tool-options", "dock:timeline", "dock:script",
+              "dock:expression-gallery", "dock:library-editor", "dock:mocap-plot", "dock:mocap-pca", "dock:identity")
+"""The docks' order in the View menu (any other dock follows, by title)."""
 
 
 class MainWindow(QMainWindow):
@@ -86,10 +89,7 @@ class MainWindow(QMainWindow):
         view_menu = self.menus["&View"]
         view_menu.addSeparator()
         view_menu.addMenu(self.parts_menu)
-        view_menu.addSeparator()
-        tool_options_toggle = self.tool_options.toggleViewAction()
-        tool_options_toggle.setIcon(icon("tool-options"))
-        view_menu.addAction(tool_options_toggle)
+        self.tool_options.toggleViewAction().setIcon(icon("tool-options"))
         self.view_state.wireframe_changed.connect(self.actions_by_id["view.wireframe"].setChecked)
         self.landmarks = LandmarkOverlay(self.viewport, document, self.view_state, self)
         self.view_state.landmarks_changed.connect(self.actions_by_id["view.landmarks"].setChecked)
@@ -100,6 +100,7 @@ class MainWindow(QMainWindow):
         identity_panel.install(self)
         for dock in self.findChildren(QDockWidget):
             scroll_dock_content(dock)   # no dock's content may push the window off the screen
+        self._list_docks_in_view_menu()
         self.layouts = LayoutManager(self)
         self._update_title()
         self.setWindowModified(document.is_modified)
@@ -165,6 +166,38 @@ class MainWindow(QMainWindow):
         super().closeEvent(event)
 
     # -- helpers -----------------------------------------------------------
+    def _list_docks_in_view_menu(self) -> None:
+        """Every dock in the View menu, checkable and ticked while it is open, in :data:`DOCK_ORDER`.
+
+        The dock's own toggle action, so the tick follows the dock however it is opened or closed (its
+        tool's command, its close button, a layout). Tools may add theirs elsewhere too (Library →
+        Library editor is the same action). The Parameters dock cannot be closed: its entry shows it
+        in front of its tab group.
+        """
+        view = self.menus["&View"]
+        docks = [d for d in self.findChildren(QDockWidget) if d.objectName()]
+        rank = {name: k for k, name in enumerate(DOCK_ORDER)}
+        docks.sort(key=lambda d: (rank.get(d.objectName(), len(rank)), d.windowTitle()))
+        view.addSeparator()
+        for dock in docks:
+            view.removeAction(dock.toggleViewAction())
+            view.addAction(self._parameters_entry() if dock is self.parameter_dock else dock.toggleViewAction())
+
+    def _parameters_entry(self) -> QAction:
+        entry = QAction("Parameters", self)
+        entry.setObjectName("view.parameters")
+        entry.setCheckable(True)
+        entry.setChecked(True)
+        entry.setToolTip("The sliders of every parameter (always open: this brings them to the front)")
+        entry.setStatusTip(entry.toolTip())
+        entry.triggered.connect(self._show_parameters)
+        self.parameters_entry = entry
+        return entry
+
+    def _show_parameters(self, _checked: bool = False) -> None:
+        self.parameters_entry.setChecked(True)
+        self.layouts.reveal(self.parameter_dock)
+
     def _parameter_dock_width(self) -> QSize:
         scroll_bar = self.style().pixelMetric(QStyle.PixelMetric.PM_ScrollBarExtent)
         return QSize(self.parameter_panel.sizeHint().width() + scroll_bar + 4, 0)

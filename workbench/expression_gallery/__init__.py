@@ -1,16 +1,26 @@
 """The expression gallery: every expression command and action unit as a clickable face.
 
-:func:`install` adds the dock ``dock:expression-gallery`` (Library →
-Expression gallery, Ctrl+G; hidden until opened) as ``window.expression_gallery``.
+:func:`install` adds the dock ``dock:expression-gallery`` (hidden until
+opened) as ``window.expression_gallery``. **Library → Expression gallery**
+(Ctrl+G, ``actions_by_id["library.gallery"]``) always shows it in front,
+never hides it; **View → Expression gallery** (the dock's own checkable
+entry, ``"view.gallery"``, also on the toolbar) opens and closes it.
 Clicking a face plays it through ``window.player`` with its onset, apex and
 offset; the intensity slider scales it (``amplitude`` in percent). What is
 listed comes from :mod:`engine.timeline.expressions`; the pictures from :mod:`.thumbnails`.
+
+Every face has its name under it (wrapped onto a second line, then elided;
+the tooltip has it whole). Each list shows at least one whole row of faces
+with their names: where the gallery is too low for a row of expressions and
+a row of action units one above the other, the two lists become tabs.
 """
 
 from __future__ import annotations
 
-from PySide6.QtCore import QSize, Qt
-from PySide6.QtGui import QColor, QIcon, QPainter, QPixmap
+import re
+
+from PySide6.QtCore import QModelIndex, QSize, Qt
+from PySide6.QtGui import QAction, QColor, QIcon, QPainter, QPixmap, QResizeEvent
 from PySide6.QtWidgets import (
     QDockWidget,
     QHBoxLayout,
@@ -19,6 +29,9 @@ from PySide6.QtWidgets import (
     QListWidget,
     QListWidgetItem,
     QSlider,
+    QStyledItemDelegate,
+    QStyleOptionViewItem,
+    QTabBar,
     QVBoxLayout,
     QWidget,
 )
@@ -35,6 +48,31 @@ MAX_INTENSITY = 150
 COLUMNS = 3                 # faces side by side when the gallery is opened
 USEFUL_HEIGHT = 500
 NAME_ROLE = Qt.ItemDataRole.UserRole
+NAME_LINES = 2              # a face's name wraps onto this many lines under it, then is elided
+EXPRESSIONS, UNITS = 0, 1   # the tabs, when the lists are tabs
+_BREAKS = re.compile(r"(?<=_)|(?<=[a-z])(?=[A-Z])|(?<=[A-Za-z])(?=[0-9])")
+
+
+def breakable(name: str) -> str:
+    """``name`` with a zero-width space where a line may break: after ``_``, inside CamelCase, before digits.
+
+    >>> breakable("eyelid_right_close").split("\u200b"), breakable("HappySurprise").split("\u200b")
+    (['eyelid_', 'right_', 'close'], ['Happy', 'Surprise'])
+    """
+    return _BREAKS.sub("\u200b", name)
+
+
+class NameUnderFace(QStyledItemDelegate):
+    """Draws a face with its name under it, broken between words onto :data:`NAME_LINES` lines, then elided;
+    every item the size of the view's grid, so each has room for those lines."""
+
+    def initStyleOption(self, option: QStyleOptionViewItem, index: QModelIndex) -> None:
+        super().initStyleOption(option, index)
+        option.text = breakable(option.text)
+
+    def sizeHint(self, option: QStyleOptionViewItem, index: QModelIndex) -> QSize:
+        view = self.parent()
+        return view.gridSize() - QSize(2 * view.spacing(), 2 * view.spacing())
 
 
 class ExpressionGallery(QWidget):
@@ -69,14 +107,25 @@ class ExpressionGallery(QWidget):
         self.units_label = QLabel("<b>Action units</b>")
         self.expressions_list = self._make_list()
         self.units_list = self._make_list()
+        self.tabs = QTabBar()                 # the lists as tabs, on a gallery too low for both
+        self.tabs.setObjectName("expression-gallery-tabs")
+        self.tabs.setDrawBase(False)
+        self.tabs.setExpanding(False)
+        self.tabs.addTab("Expressions")
+        self.tabs.addTab("Action units")
+        self.tabs.currentChanged.connect(self._show_tab)
+        self.tabs.hide()
+        self.tabbed = False
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
         layout.addLayout(header)
         layout.addWidget(self.hint)
+        layout.addWidget(self.tabs)
         layout.addWidget(self.expressions_label)
         layout.addWidget(self.expressions_list, 1)
         layout.addWidget(self.units_label)
         layout.addWidget(self.units_list, 1)
+        self.header_layout = header
         self._intensity_changed(self.intensity.value())
 
         document = window.document
@@ -94,6 +143,41 @@ class ExpressionGallery(QWidget):
         margins = self.layout().contentsMargins()
         return columns * grid + scroll_bar + 2 * view.frameWidth() + margins.left() + margins.right() + 8
 
+    def row_height(self) -> int:
+        """The height a list needs to show one whole row of faces with their names."""
+        view = self.expressions_list
+        return view.gridSize().height() + 2 * view.spacing() + 2 * view.frameWidth()
+
+    def height_for(self, tabbed: bool) -> int:
+        """The least height at which each list shown has a whole row on show (``tabbed``: one list, else two)."""
+        layout = self.layout()
+        margins = layout.contentsMargins()
+        parts = [self.header_layout.sizeHint().height(), self.hint.sizeHint().height()]
+        if tabbed:
+            parts += [self.tabs.sizeHint().height(), self.row_height()]
+        else:
+            parts += [self.expressions_label.sizeHint().height(), self.row_height(),
+                      self.units_label.sizeHint().height(), self.row_height()]
+        return sum(parts) + layout.spacing() * (len(parts) - 1) + margins.top() + margins.bottom()
+
+    def set_tabbed(self, tabbed: bool) -> None:
+        """Show the two lists one above the other, or as tabs (one at a time, with all the height)."""
+        self.tabbed = bool(tabbed)
+        self.tabs.setVisible(self.tabbed)
+        self.expressions_label.setVisible(not self.tabbed)
+        self.units_label.setVisible(not self.tabbed)
+        self._show_tab(self.tabs.currentIndex())
+
+    def show_list_of(self, name: str) -> None:
+        """Bring the list holding entry ``name`` on show (its tab, when the lists are tabs)."""
+        item = self.items.get(name)
+        if item is not None and self.tabbed:
+            self.tabs.setCurrentIndex(UNITS if item.listWidget() is self.units_list else EXPRESSIONS)
+
+    def _show_tab(self, index: int) -> None:
+        self.expressions_list.setVisible(not self.tabbed or index == EXPRESSIONS)
+        self.units_list.setVisible(not self.tabbed or index == UNITS)
+
     # -- building ---------------------------------------------------------------
     def _make_list(self) -> QListWidget:
         view = QListWidget()
@@ -103,9 +187,12 @@ class ExpressionGallery(QWidget):
         view.setWrapping(True)
         view.setUniformItemSizes(True)
         view.setIconSize(QSize(*THUMBNAIL_SIZE))
-        view.setGridSize(QSize(THUMBNAIL_SIZE[0] + 14, THUMBNAIL_SIZE[1] + 34))
-        view.setWordWrap(True)
+        view.setWordWrap(True)                          # long names wrap, anywhere if need be, then elide
+        view.setTextElideMode(Qt.TextElideMode.ElideRight)
         view.setSpacing(2)
+        text_height = NAME_LINES * view.fontMetrics().lineSpacing() + 12   # and the text margins
+        view.setGridSize(QSize(THUMBNAIL_SIZE[0] + 14, THUMBNAIL_SIZE[1] + text_height))
+        view.setItemDelegate(NameUnderFace(view))
         view.itemClicked.connect(lambda item: self.preview(item.data(NAME_ROLE)))
         view.itemActivated.connect(lambda item: self.preview(item.data(NAME_ROLE)))
         return view
@@ -125,7 +212,8 @@ class ExpressionGallery(QWidget):
             item = QListWidgetItem(placeholder, entry.name)
             item.setData(NAME_ROLE, entry.name)
             onset, apex, offset = entry.timing
-            item.setToolTip(f"{entry.description}\nonset {onset:g} ms, apex {apex:g} ms, offset {offset:g} ms")
+            item.setToolTip(f"{entry.name}: {entry.description}\n"
+                            f"onset {onset:g} ms, apex {apex:g} ms, offset {offset:g} ms")
             (self.expressions_list if entry.kind == "expression" else self.units_list).addItem(item)
             self.items[entry.name] = item
         expressions = self.expressions_list.count()
@@ -133,7 +221,10 @@ class ExpressionGallery(QWidget):
                                        "<b>Expressions</b>: none in the library fits this model")
         units = self.units_list.count()
         any_au = any(name.startswith("AU") for name in model.parameters.names)
-        self.units_label.setText(f"<b>{'Action units' if any_au else 'Parameters'}</b> ({units})")
+        units_title = "Action units" if any_au else "Parameters"
+        self.units_label.setText(f"<b>{units_title}</b> ({units})")
+        self.tabs.setTabText(EXPRESSIONS, f"Expressions ({expressions})")
+        self.tabs.setTabText(UNITS, f"{units_title} ({units})")
         self.thumbnails.request(entries)
 
     def _regions_changed(self, *_args) -> None:
@@ -151,7 +242,17 @@ class ExpressionGallery(QWidget):
                 picture.addPixmap(self.thumbnails.pixmaps[name], mode)   # no blue tint on the one playing
             item.setIcon(picture)
 
-    # -- Qt overrides: render pictures only while the gallery is on screen ---------------
+    # -- Qt overrides: render pictures only while the gallery is on screen; tabs when too low ----
+    def minimumSizeHint(self) -> QSize:
+        # the tabbed gallery's: a dock lower than that scrolls the gallery (workbench.dock_scroller)
+        return QSize(super().minimumSizeHint().width(), self.height_for(tabbed=True))
+
+    def resizeEvent(self, event: QResizeEvent) -> None:
+        super().resizeEvent(event)
+        tabbed = event.size().height() < self.height_for(tabbed=False)
+        if tabbed != self.tabbed:
+            self.set_tabbed(tabbed)
+
     def showEvent(self, event) -> None:
         super().showEvent(event)
         self.thumbnails.set_active(True)
@@ -164,6 +265,7 @@ class ExpressionGallery(QWidget):
     def preview(self, name: str, intensity: float | None = None):
         """Play entry ``name`` at ``intensity`` percent (the slider's by default); returns its timeline."""
         entry = self.entries[name]
+        self.show_list_of(name)
         intensity = self.intensity.value() if intensity is None else intensity
         try:
             timeline = entry.timeline(self.window_.document.model, intensity)
@@ -199,6 +301,23 @@ def _placeholder() -> QIcon:
     return QIcon(pixmap)
 
 
+def show_gallery(window) -> None:
+    """Library → Expression gallery (Ctrl+G): the gallery in front, at a useful size, its faces focused.
+
+    Never hides it (View → Expression gallery does that): a user pressing Ctrl+G wants to see it.
+    """
+    dock = window.expression_gallery_dock
+    layouts = getattr(window, "layouts", None)
+    if layouts is not None:
+        layouts.reveal(dock)
+    else:
+        dock.show()
+        dock.raise_()
+    gallery = window.expression_gallery
+    (gallery.units_list if gallery.tabbed and gallery.tabs.currentIndex() == UNITS
+     else gallery.expressions_list).setFocus(Qt.FocusReason.ShortcutFocusReason)
+
+
 def install(window) -> None:
     gallery = ExpressionGallery(window)
     dock = QDockWidget("Expression gallery", window)
@@ -210,15 +329,22 @@ def install(window) -> None:
     dock.useful_size = lambda: QSize(gallery.width_for_columns(COLUMNS), USEFUL_HEIGHT)
     window.expression_gallery = gallery
     window.expression_gallery_dock = dock
-    toggle = dock.toggleViewAction()
+    tip = "Every expression and action unit as a face: click to play it"
+    toggle = dock.toggleViewAction()               # View → Expression gallery: open / close (the main window lists it)
     toggle.setIcon(icon("expression-gallery"))
     toggle.setText("Expression &gallery")
-    toggle.setShortcut("Ctrl+G")
-    toggle.setToolTip("Every expression and action unit as a face: click to play it")
+    toggle.setToolTip(f"{tip} (Ctrl+G shows it)")
+    show = QAction(icon("expression-gallery"), "Expression &gallery", window)
+    show.setObjectName("library.gallery")
+    show.setShortcut("Ctrl+G")
+    show.setToolTip(f"{tip}; shows it in front, whether it was open or not")
+    show.setStatusTip(show.toolTip())
+    show.triggered.connect(lambda _checked=False: show_gallery(window))
     menu = window.menus.get("&Library")
     if menu is None:
         menu = window.menus["&Library"] = window.menuBar().addMenu("&Library")
     actions = menu.actions()
-    menu.insertAction(actions[1] if len(actions) > 1 else None, toggle)     # after "Library editor"
+    menu.insertAction(actions[1] if len(actions) > 1 else None, show)     # after "Library editor"
     window.toolbar.addAction(toggle)
-    window.actions_by_id["library.gallery"] = toggle
+    window.actions_by_id["library.gallery"] = show
+    window.actions_by_id["view.gallery"] = toggle
