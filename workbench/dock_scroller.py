@@ -8,6 +8,11 @@ the dock is smaller, while the dock asks the window for at most
 :data:`MOST_MINIMUM` (or less, when the content needs less).
 
 >>> dock.setWidget(DockScroller(content))        # doctest: +SKIP
+
+It also says what size a dock is of use at, for the task layouts
+(:mod:`workbench.layouts`): its content's minimum (:func:`content_minimum`),
+its own wish (:func:`wanted_size`), and the height below which it counts as
+squeezed (:func:`least_height`).
 """
 
 from __future__ import annotations
@@ -17,6 +22,9 @@ from PySide6.QtWidgets import QDockWidget, QFrame, QScrollArea, QWidget
 
 MOST_MINIMUM = QSize(240, 140)
 """The most room a dock's content may demand; below its own minimum it scrolls."""
+USEFUL_LEAST = 160            # the content height below which a dock is squeezed (when its content would use it), px
+TITLE_BAR = 26                # a docked dock's title bar and frame, px
+FRAME = 8                     # a docked dock's frame and the separator beside it, px
 
 
 class DockScroller(QScrollArea):
@@ -48,3 +56,49 @@ def scroll_dock_content(dock: QDockWidget) -> None:
     if content is None or isinstance(content, QScrollArea) or getattr(dock, "fits_by_itself", False):
         return
     dock.setWidget(DockScroller(content))
+
+
+def content_minimum(dock: QDockWidget) -> QSize:
+    """The minimum size of what ``dock`` shows (a dock asks the window for less and scrolls, see
+    :mod:`workbench.dock_scroller`; a layout gives it this much when there is room)."""
+    content = dock.widget()
+    if isinstance(content, QScrollArea) and content.widget() is not None:
+        content = content.widget()
+    return content.minimumSizeHint() if content is not None else QSize()
+
+
+def wanted_size(dock: QDockWidget) -> QSize:
+    """The size at which ``dock`` is of use: its own ``useful_size()`` if it has one, else its content's minimum."""
+    useful = getattr(dock, "useful_size", None)
+    return useful() if callable(useful) else content_minimum(dock)
+
+
+def least_height(dock: QDockWidget) -> int:
+    """The height below which ``dock`` counts as squeezed: its title bar and its content's size hint, or
+    :data:`USEFUL_LEAST` px of content when the hint is larger (its content's minimum if that is larger still)."""
+    content = dock.widget()
+    if content is None:
+        return TITLE_BAR
+    hint = content.sizeHint().height()
+    return TITLE_BAR + min(hint, max(content_minimum(dock).height(), USEFUL_LEAST))
+
+
+def fitted_lengths(lengths: list[float], needs: list[float]) -> list[float]:
+    """``lengths`` changed so that each is at least its ``need``, the room taken from those with more
+    than they need (in proportion to what they have over); the total stays. When the total is less
+    than the needs, each gets the same share of its need.
+
+    >>> fitted_lengths([500, 100], [186, 186])
+    [414.0, 186]
+    >>> fitted_lengths([200, 100], [186, 186])
+    [150.0, 150.0]
+    """
+    short = sum(max(need - got, 0.0) for need, got in zip(needs, lengths, strict=True))
+    if short <= 0:
+        return list(lengths)
+    spare = sum(max(got - need, 0.0) for need, got in zip(needs, lengths, strict=True))
+    if short <= spare:
+        return [need if got < need else got - (got - need) * short / spare
+                for need, got in zip(needs, lengths, strict=True)]
+    total, wanted = sum(lengths), sum(needs)
+    return [total * need / wanted for need in needs]

@@ -6,7 +6,10 @@ layouts (View → Layout, the toolbar's switcher), remembers each one in
 QSettings once the user has changed it (``layouts/<id>``), puts a layout back
 the way it was built (*Reset layout*), shows one dock in front and usefully
 sized (:meth:`~LayoutManager.reveal`), and keeps the window on its screen
-(:func:`fit_to_screen`).
+(:func:`fit_to_screen`). No dock is left squeezed: revealing one leaves the
+others in its column at least :func:`least_height`, and a remembered layout
+whose docks were squeezed below that (a layout stored before, or a dock
+dragged small) gets that much back when it is restored and before it is stored.
 
 >>> window.layouts.switch("mocap")                    # doctest: +SKIP
 >>> window.layouts.reveal(window.expression_gallery_dock)   # doctest: +SKIP
@@ -16,9 +19,10 @@ from __future__ import annotations
 
 from PySide6.QtCore import QEvent, QObject, QRect, QSettings, QSize, Qt, QTimer
 from PySide6.QtGui import QAction, QActionGroup
-from PySide6.QtWidgets import QComboBox, QDockWidget, QMainWindow, QMenu, QScrollArea, QSizePolicy, QWidget
+from PySide6.QtWidgets import QComboBox, QDockWidget, QMainWindow, QMenu, QSizePolicy, QWidget
 
 from . import settings
+from .dock_scroller import FRAME, TITLE_BAR, content_minimum, fitted_lengths, least_height, wanted_size
 from .icons import icon
 from .task_layouts import BY_ID, DEFAULT_LAYOUT, LAYOUTS, Stack, TaskLayout
 
@@ -26,9 +30,7 @@ STATE_VERSION = 1             # saveState's version: a layout stored by another 
 MIN_VIEWPORT_SHARE = 0.34     # the columns never leave the viewport less than this share of the width
 FRESH_MARGIN = QSize(24, 56)  # a fresh window leaves this much of the screen free (for the title bar)
 FRESH_MOST = QSize(1760, 1060)
-MIN_SIBLING = 90              # what a dock keeps when another in its column is made larger, px
-TITLE_BAR = 26               # a docked dock's title bar and frame, px
-FRAME = 8                    # a docked dock's frame and the separator beside it, px
+MIN_SIBLING = 90              # what a dock keeps when another in its column is made larger and there is no room
 
 AREAS = {"left": Qt.DockWidgetArea.LeftDockWidgetArea, "right": Qt.DockWidgetArea.RightDockWidgetArea,
          "bottom": Qt.DockWidgetArea.BottomDockWidgetArea}
@@ -61,21 +63,6 @@ def fit_to_screen(window: QWidget) -> None:
             widget.move(x, y)
 
 
-def content_minimum(dock: QDockWidget) -> QSize:
-    """The minimum size of what ``dock`` shows (a dock asks the window for less and scrolls, see
-    :mod:`workbench.dock_scroller`; a layout gives it this much when there is room)."""
-    content = dock.widget()
-    if isinstance(content, QScrollArea) and content.widget() is not None:
-        content = content.widget()
-    return content.minimumSizeHint() if content is not None else QSize()
-
-
-def wanted_size(dock: QDockWidget) -> QSize:
-    """The size at which ``dock`` is of use: its own ``useful_size()`` if it has one, else its content's minimum."""
-    useful = getattr(dock, "useful_size", None)
-    return useful() if callable(useful) else content_minimum(dock)
-
-
 class LayoutManager(QObject):
     """The task layouts of one main window: ``View → Layout``, the toolbar switcher, remembering, revealing."""
 
@@ -85,6 +72,7 @@ class LayoutManager(QObject):
         self.current = DEFAULT_LAYOUT
         self._pristine: bytes | None = None     # the state just after a layout was applied
         self._sizes_pending = False
+        self._unsqueeze_pending = False         # a layout was restored: give squeezed docks room once laid out
         self.actions: dict[str, QAction] = {}
         # A timer of our own, not QTimer.singleShot: a pending single shot would keep the window alive.
         self._pristine_timer = QTimer(self)
@@ -145,13 +133,56 @@ class LayoutManager(QObject):
         self.build()
 
     def remember(self) -> None:
-        """Store the current layout (QSettings ``layouts/<id>``) if it differs from how it was applied."""
+        """Store the current layout (QSettings ``layouts/<id>``) if it differs from how it was applied,
+        with no dock squeezed (:meth:`unsqueeze`)."""
         if self._pristine is None:
             return
         state = bytes(self.window.saveState(STATE_VERSION))
         if state != self._pristine:
+            if self.unsqueeze():
+                state = bytes(self.window.saveState(STATE_VERSION))
             QSettings().setValue(settings.layout_key(self.current), state)
             self._pristine = state
+
+    def unsqueeze(self) -> bool:
+        """Give every dock on show in a side column at least :func:`least_height`, taken from the docks
+        above and below it that have more (all share alike when the column is too short); whether
+        anything changed."""
+        window = self.window
+        if not window.isVisible():
+            return False
+        window.layout().activate()
+        changed = False
+        for column in self._columns():
+            heights = [dock.height() for dock in column]
+            wanted = fitted_lengths(heights, [least_height(dock) for dock in column])
+            if any(abs(w - h) > 1 for w, h in zip(wanted, heights, strict=True)):
+                window.resizeDocks(column, [round(w) for w in wanted], Qt.Orientation.Vertical)
+                changed = True
+        if changed:
+            window.layout().activate()
+        return changed
+
+    def _columns(self) -> list[list[QDockWidget]]:
+        """The docks on show in the side areas, one list (top to bottom) per column; one dock per tab group."""
+        window = self.window
+        shown: dict[tuple[int, int, int, int], QDockWidget] = {}
+        for dock in self.docks().values():
+            area = window.dockWidgetArea(dock)
+            if (dock.isVisible() and not dock.isFloating() and not dock.visibleRegion().isEmpty()
+                    and area in (Qt.DockWidgetArea.LeftDockWidgetArea, Qt.DockWidgetArea.RightDockWidgetArea)):
+                g = dock.geometry()
+                shown.setdefault((g.x(), g.y(), g.width(), g.height()), dock)
+        columns: list[list[QDockWidget]] = []
+        for dock in sorted(shown.values(), key=lambda d: (d.x(), d.y())):
+            column = next((c for c in columns if dock.x() < c[0].x() + c[0].width()
+                           and c[0].x() < dock.x() + dock.width()
+                           and window.dockWidgetArea(c[0]) == window.dockWidgetArea(dock)), None)
+            if column is None:
+                columns.append([dock])
+            else:
+                column.append(dock)
+        return [sorted(c, key=lambda d: d.y()) for c in columns if len(c) > 1]
 
     def is_remembered(self, layout_id: str) -> bool:
         return QSettings().value(settings.layout_key(layout_id)) is not None
@@ -164,6 +195,7 @@ class LayoutManager(QObject):
         if not self.window.restoreState(state, STATE_VERSION):
             return False
         self._sizes_pending = False
+        self._unsqueeze_pending = True
         self._settled()
         return True
 
@@ -206,6 +238,8 @@ class LayoutManager(QObject):
         fit_to_screen(self.window)
         if self._sizes_pending:
             self.build()            # again, for the size the window has now
+        elif self._unsqueeze_pending:
+            self._pristine_timer.start()
 
     def _set_corners(self, layout: TaskLayout) -> None:
         bottom = Qt.DockWidgetArea.BottomDockWidgetArea
@@ -278,11 +312,8 @@ class LayoutManager(QObject):
         vertical = orientation == Qt.Orientation.Vertical
         needs = [(content_minimum(dock).height() + TITLE_BAR) if vertical else (content_minimum(dock).width() + FRAME)
                  for _stack, dock in stacks]
-        short = sum(max(need - got, 0.0) for need, got in zip(needs, lengths, strict=True))
-        spare = sum(max(got - need, 0.0) for need, got in zip(needs, lengths, strict=True))
-        if 0 < short <= spare:
-            lengths = [need if got < need else got - (got - need) * short / spare
-                       for need, got in zip(needs, lengths, strict=True)]
+        if sum(needs) <= length:
+            lengths = fitted_lengths(lengths, needs)
         self.window.resizeDocks([dock for _stack, dock in stacks], [round(x) for x in lengths], orientation)
 
     def _settled(self) -> None:
@@ -291,8 +322,12 @@ class LayoutManager(QObject):
         self._pristine_timer.start()
 
     def _take_pristine(self) -> None:
-        if not self._sizes_pending:
-            self._pristine = bytes(self.window.saveState(STATE_VERSION))
+        if self._sizes_pending:
+            return
+        self._pristine = bytes(self.window.saveState(STATE_VERSION))
+        if self._unsqueeze_pending and self.window.isVisible():
+            self._unsqueeze_pending = False
+            self.unsqueeze()        # after the pristine state: a layout put right is stored again when left
 
     # -- showing one dock ------------------------------------------------------------------------
     def reveal(self, dock: QDockWidget, width: int = 0, height: int = 0, task: str | None = None) -> None:
@@ -346,9 +381,13 @@ class LayoutManager(QObject):
             window.resizeDocks([dock], [length], orientation)
             return
         total = rest + extent(dock)
-        left = max(total - length, MIN_SIBLING * len(siblings))     # the others keep a strip each
-        window.resizeDocks([dock, *siblings], [total - left] + [max(round(left * extent(d) / rest), 1)
-                                                                for d in siblings], orientation)
+        # the others keep what they need to be of use (vertically; or a strip each where there is no room)
+        keep = [min(least_height(d), extent(d)) if vertical else MIN_SIBLING for d in siblings]
+        if total - sum(keep) < min(length, least_height(dock) if vertical else MIN_SIBLING):
+            keep = [MIN_SIBLING] * len(siblings)
+        left = max(total - length, sum(keep))
+        shares = fitted_lengths([left * extent(d) / rest for d in siblings], keep)
+        window.resizeDocks([dock, *siblings], [total - left] + [max(round(x), 1) for x in shares], orientation)
 
     def _other_column(self, area) -> int:
         other = (Qt.DockWidgetArea.RightDockWidgetArea if area == Qt.DockWidgetArea.LeftDockWidgetArea
