@@ -19,7 +19,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QSize, Qt
-from PySide6.QtGui import QShowEvent
+from PySide6.QtGui import QFont, QFontMetrics, QShowEvent
 from PySide6.QtWidgets import (
     QDockWidget,
     QHBoxLayout,
@@ -46,6 +46,7 @@ if TYPE_CHECKING:
 
 DOCK_NAME = "dock:identity"
 USEFUL_HEIGHT = 520
+NOTE_LINES = 2       # the note under the rows keeps room for this many lines, so the rows never move
 NOTE_STYLE = {"info": "color: palette(dark)", "busy": "color: #2f5f8f", "error": "color: #a02020"}
 
 
@@ -65,6 +66,8 @@ class IdentityPanel(QWidget):
         self.note = QLabel()
         self.note.setWordWrap(True)
         self.note.setObjectName("identity-note")
+        self.note.setAlignment(Qt.AlignmentFlag.AlignLeft | Qt.AlignmentFlag.AlignTop)
+        self.note.setMinimumHeight(NOTE_LINES * self.note.fontMetrics().lineSpacing())
         self.search = QLineEdit()
         self.search.setPlaceholderText("Find a parameter (nose, lip, .left …)")
         self.search.setClearButtonEnabled(True)
@@ -84,9 +87,11 @@ class IdentityPanel(QWidget):
         buttons.addWidget(self.save_button)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(4, 4, 4, 4)
+        # The note is under the rows, not above them: when it changes (a value changed, "Making the head…")
+        # the rows stay where they are, and the click the user is about to make lands where it was aimed.
         layout.addWidget(self.search)
-        layout.addWidget(self.note)
         layout.addWidget(self.scroll, 1)
+        layout.addWidget(self.note)
         layout.addLayout(buttons)
 
         self.heads.busy_changed.connect(self._on_busy)
@@ -121,7 +126,11 @@ class IdentityPanel(QWidget):
             self.rows.update(box.rows)
             column.addWidget(box)
         column.addStretch(1)
-        label_width = max(row.label.sizeHint().width() for row in self.rows.values())
+        bold = QFont(next(iter(self.rows.values())).label.font())
+        bold.setBold(True)          # a changed value's label is bold: its column is as wide as that already
+        metrics = QFontMetrics(bold)
+        label_width = max(max(row.label.sizeHint().width(), metrics.horizontalAdvance(row.label.text()) + 4)
+                          for row in self.rows.values())
         for box in self.groups.values():
             box.set_label_width(label_width)
         if "macro" in self.groups:
@@ -162,8 +171,9 @@ class IdentityPanel(QWidget):
             self._say(why_not, "error")
         elif identity is not None and identity.values:
             shares = ", ".join(f"{100 * share:.0f}% {race}" for race, share in identity.ancestry().items())
-            self._say(f"{len(identity.values)} values differ from the default head. Ancestry, normalised: "
-                      f"{shares}.", "info")
+            count = len(identity.values)
+            differ = "1 value differs" if count == 1 else f"{count} values differ"
+            self._say(f"{differ} from the default head. Ancestry, normalised: {shares}.", "info")
         else:
             self._say("The default head's identity. Drag a slider to reshape the face.", "info")
 

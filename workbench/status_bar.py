@@ -39,7 +39,8 @@ class ModelStatusBar(QStatusBar):
     def _show_model(self, model: engine.Model, clear: bool = True) -> None:
         path = self._document.path
         name = path.name if path is not None else model.name
-        self.model_label.setText(f"{name} · {model.n_vertices:,} vertices · {len(model.parameters)} parameters")
+        count = len(model.parameters)
+        self.model_label.setText(f"{name} · {model.n_vertices:,} vertices · {count} parameter{'s' * (count != 1)}")
         self.model_label.setToolTip(str(path) if path is not None else f"{model.name} (not saved to a file yet)")
         if clear:
             self.clearMessage()

@@ -173,7 +173,7 @@ def test_save_identity_as_and_reopen_shows_the_identity(head_window, qtbot, tmp_
     assert age.value() == 25.0
     assert window.files.open_model(target)                                  # File → Open
     assert age.value() == 62.0 and age.label.font().bold()
-    assert "1 values differ" in panel.note.text() and "33% african" in panel.note.text()
+    assert "1 value differs" in panel.note.text() and "33% african" in panel.note.text()
 
     # A saved identity whose rig is the default head's: the next change asks nothing.
     panel.ask_discard = panel.heads.ask_discard = lambda reason: pytest.fail(f"asked: {reason}")

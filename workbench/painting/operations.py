@@ -99,7 +99,8 @@ def run(controller, operation: str) -> bool:
     except UserError as error:
         QMessageBox.warning(window, f"Weights: {label}", str(error))
         return False
-    window.statusBar().showMessage(f"{label}: {len(change)} weights of {name} changed", 4000)
+    window.statusBar().showMessage(f"{label}: {len(change)} weight{'s' * (len(change) != 1)} of {name} changed",
+                                   4000)
     return True
 
 
@@ -122,6 +123,7 @@ def _normalise(controller, name: str) -> bool:
             document.push(SetRegionCommand(document, n, regions[n], text=f"Normalise {n}"))
     finally:
         stack.endMacro()
-    window.statusBar().showMessage(f"Normalise group 1: {len(changed)} regions changed", 4000)
+    window.statusBar().showMessage(f"Normalise group 1: {len(changed)} region{'s' * (len(changed) != 1)} changed",
+                                   4000)
     return True
 

@@ -13,11 +13,17 @@ from PySide6.QtWidgets import QHBoxLayout, QLineEdit, QPushButton, QToolButton, 
 
 
 class FileChoiceRow(QWidget):
-    """``summary`` (read-only: long names scroll instead of widening the dock), ``choose_button``, ``clear_button``."""
+    """``summary`` (read-only: long names scroll instead of widening the dock), ``choose_button``, ``clear_button``.
+
+    ``placeholder`` is what the summary says while nothing is chosen: a word or two, which the narrow
+    dock of a laptop screen shows whole; ``empty_tip`` (its tooltip then) says it in full.
+    """
 
     def __init__(self, name: str, placeholder: str, choose_tip: str, clear_tip: str,
-                 choose: Callable[[], None], clear: Callable[[], None], parent: QWidget | None = None):
+                 choose: Callable[[], None], clear: Callable[[], None], parent: QWidget | None = None,
+                 empty_tip: str = ""):
         super().__init__(parent)
+        self.empty_tip = empty_tip or placeholder
         self.summary = QLineEdit()
         self.summary.setReadOnly(True)
         self.summary.setPlaceholderText(placeholder)
@@ -42,5 +48,5 @@ class FileChoiceRow(QWidget):
         """Show what is chosen (``text``, its full paths as ``tip``); the clear button only when ``chosen``."""
         self.summary.setText(text)
         self.summary.setCursorPosition(0)
-        self.summary.setToolTip(tip)
+        self.summary.setToolTip(tip if chosen else self.empty_tip)
         self.clear_button.setEnabled(chosen)

@@ -273,7 +273,8 @@ class ScriptPanel(QWidget):
         self.result = result
         self.export_button.setEnabled(True)
         phones = result.speech.utterance.phones
-        summary = f"{result.duration:.2f} s, {len(phones)} phones, voice {result.speech.utterance.voice}"
+        summary = (f"{result.duration:.2f} s, {len(phones)} phone{'s' * (len(phones) != 1)}, "
+                   f"voice {result.speech.utterance.voice}")
         tokens = [warning.token for warning in result.speech.reading_warnings]
         if tokens:   # what Festival read oddly, in one short line; the whole advice in the tooltip
             shown = ", ".join(f"'{t}'" for t in tokens[:4]) + (" …" if len(tokens) > 4 else "")

@@ -29,10 +29,11 @@ class RecordingChooser(FileChoiceRow):
 
     def __init__(self, parent: QWidget | None = None):
         super().__init__(
-            "recording", "none: Festival speaks",
+            "recording", "none",
             "Speak with a recorded voice: a WAV file and its phone labels (TextGrid, label file or phones CSV); "
             "the text then holds only the inline commands, anchored to the labels' word tier",
-            "Back to Festival's voice", self.choose, lambda: self.set_recording(None), parent)
+            "Back to Festival's voice", self.choose, lambda: self.set_recording(None), parent,
+            empty_tip="No recording: Festival speaks the text with the voice chosen above")
         self.recording: tuple[Path, Path] | None = None
         self._restore()
 

@@ -32,9 +32,10 @@ class PhoneTableChooser(FileChoiceRow):
 
     def __init__(self, parent: QWidget | None = None):
         super().__init__(
-            "phone_table", "the shipped table of the voice",
+            "phone_table", "shipped",
             "Articulate with another phone → target table (a .phones file, e.g. one learned from motion capture "
-            "by 'mocap learn')", "Back to the shipped table", self.choose, lambda: self.set_path(None), parent)
+            "by 'mocap learn')", "Back to the shipped table", self.choose, lambda: self.set_path(None), parent,
+            empty_tip="The shipped phone table of the voice's phone set")
         self.path: Path | None = None
         self._restore()
 

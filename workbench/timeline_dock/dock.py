@@ -4,6 +4,9 @@ Controls, left to right: play/pause, stop, one frame back, one frame
 forward, loop, playback speed (0.25×–2×), and the time and frame now. The
 buttons carry the Animation menu's actions, so they share shortcuts and
 state (Space, Left, Right — active while the dock has the keyboard focus).
+The row wraps in a narrow dock (the frame and the rate go onto a second
+line) instead of cutting its text; the two readouts are as wide as their
+longest text for what is loaded, so playing does not reflow them.
 """
 
 from __future__ import annotations
@@ -21,6 +24,7 @@ from PySide6.QtWidgets import (
     QWidget,
 )
 
+from ..flow_layout import FlowLayout
 from ..icons import icon
 from .track_view import TrackView
 
@@ -41,7 +45,9 @@ class TimelineDock(QDockWidget):
         layout.setContentsMargins(4, 2, 4, 4)
         layout.setSpacing(2)
 
-        controls = QHBoxLayout()
+        transport = QWidget(body)
+        controls = QHBoxLayout(transport)
+        controls.setContentsMargins(0, 0, 0, 0)
         controls.setSpacing(2)
         self.buttons: dict[str, QToolButton] = {}
         for action_id in ("animation.play_pause", "animation.stop", "animation.step_back",
@@ -62,12 +68,14 @@ class TimelineDock(QDockWidget):
         player.speed_changed.connect(self._show_speed)
         controls.addSpacing(8)
         controls.addWidget(self.speed_box)
-        controls.addSpacing(12)
-        self.time_label = QLabel(body)
-        self.time_label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
-        controls.addWidget(self.time_label)
-        controls.addStretch(1)
-        layout.addLayout(controls)
+        self.time_label = QLabel(body)              # "0.900 / 2.944 s"
+        self.frame_label = QLabel(body)             # "frame 54 / 177 at 60 fps"
+        row = FlowLayout(spacing=10)
+        row.addWidget(transport)
+        for label in (self.time_label, self.frame_label):
+            label.setTextInteractionFlags(Qt.TextInteractionFlag.TextSelectableByMouse)
+            row.addWidget(label)
+        layout.addLayout(row)
 
         self.track_view = TrackView(player, view_state, body)
         self.scroll = QScrollArea(body)
@@ -86,12 +94,12 @@ class TimelineDock(QDockWidget):
         player.state_changed.connect(self._show_state)
         player.loop_changed.connect(actions["animation.loop"].setChecked)
         self.playhead.time_changed.connect(self._show_time)
-        self.playhead.range_changed.connect(self._show_time)
+        self.playhead.range_changed.connect(self._fit_readouts)
         player.loaded.connect(self._on_loaded)
         self._on_loaded()
 
     def _on_loaded(self) -> None:
-        self._show_time()
+        self._fit_readouts()
         self._show_state(self.player.state)
         loaded = self.playhead.duration > 0
         for action_id in ("animation.play_pause", "animation.stop", "animation.step_back", "animation.step_forward"):
@@ -109,7 +117,19 @@ class TimelineDock(QDockWidget):
         if index >= 0:
             self.speed_box.setCurrentIndex(index)
 
-    def _show_time(self, *_args) -> None:
+    def _readouts(self, time: float, frame: int) -> tuple[str, str]:
         playhead = self.playhead
-        self.time_label.setText(f"{playhead.time:.3f} s / {playhead.duration:.3f} s    "
-                                f"frame {playhead.frame} / {playhead.n_frames - 1} at {playhead.fps:g} fps")
+        return (f"{time:.3f} / {playhead.duration:.3f} s",
+                f"frame {frame} / {playhead.n_frames - 1} at {playhead.fps:g} fps")
+
+    def _fit_readouts(self, *_args) -> None:
+        """Each readout as wide as its longest text for this duration and rate (the end's)."""
+        widest = self._readouts(self.playhead.duration, self.playhead.n_frames - 1)
+        for label, text in zip((self.time_label, self.frame_label), widest, strict=True):
+            label.setMinimumWidth(label.fontMetrics().horizontalAdvance(text) + 4)
+        self._show_time()
+
+    def _show_time(self, *_args) -> None:
+        time_text, frame_text = self._readouts(self.playhead.time, self.playhead.frame)
+        self.time_label.setText(time_text)
+        self.frame_label.setText(frame_text)
