@@ -51,7 +51,7 @@ def export_speech_dialog(window) -> None:
     if result is None:
         QMessageBox.information(window, "Export speech", "Nothing to export yet: press Say first.")
         return
-    dialog = ExportSpeechDialog(window, base=base_name(result.speech.script.text))
+    dialog = ExportSpeechDialog(window, base=base_name(result.speech.script.text), document_path=window.document.path)
     if dialog.exec() != QDialog.DialogCode.Accepted:
         return
     dialog.remember()

@@ -1,7 +1,11 @@
 """“Export speech…”: choose the files, folder, base name, frame size and rate; write them off the GUI thread.
 
 :class:`ExportSpeechDialog` only gathers an :class:`engine.outputs.speech_files.ExportPlan`
-(remembered in QSettings ``script_panel/export/…``). :class:`SpeechExporter`
+(remembered in QSettings ``script_panel/export/…``). It proposes the folder of
+:func:`default_export_folder` (the document's, or the one last exported to
+from it), and it closes only on a plan that can be written: a folder that
+does not exist is created once the user agrees, and anything else wrong is
+said in the dialog, which stays open with what was typed. :class:`SpeechExporter`
 runs :func:`engine.outputs.speech_files.export_speech` on a worker thread with a
 QProgressDialog whose Cancel removes everything written so far, then names
 what was written in the status bar.
@@ -34,19 +38,47 @@ from PySide6.QtWidgets import (
 from engine.errors import UserError
 from engine.outputs.speech_files import KINDS, ExportCancelled, ExportPlan, export_speech
 
+from .. import settings
+from ..file_controller import is_shipped
 from .jobs import Job
 
 PREFIX = "script_panel/export/"
+FOLDER_FOR = PREFIX + "folder_for"      # the model file whose speech was last exported (to PREFIX + "folder")
 DEFAULT_KINDS = ("mp4", "wav", "tracks", "landmarks")
 VIEWS = (("Front", "front"), ("Three-quarter", "three-quarter"), ("Side", "side"))
 MESSAGE_MS = 8000
 
 
-class ExportSpeechDialog(QDialog):
-    """The choices of one export; :meth:`plan` reads them."""
+def default_export_folder(document_path: Path | None) -> Path:
+    """Where Export speech… proposes to write, for the model file ``document_path`` (``None``: untitled).
 
-    def __init__(self, parent: QWidget | None = None, base: str = "speech"):
+    The folder last exported to from this same model file, if it still exists; else the model file's
+    folder (not the shipped ``data/``); else the folder last exported to, the folder the last file
+    dialog ended in, the home folder — the first of these that exists.
+    """
+    store = QSettings()
+    last = Path(str(store.value(PREFIX + "folder", "") or ""))
+    last_ok = str(last) not in ("", ".") and last.is_dir()
+    own = document_path is not None and not is_shipped(document_path)
+    if last_ok and own and str(store.value(FOLDER_FOR, "")) == str(document_path):
+        return last
+    if own and Path(document_path).parent.is_dir():
+        return Path(document_path).parent
+    dialogs = Path(str(store.value(settings.LAST_DIR, "") or ""))
+    for folder in ([last] if last_ok else []) + [dialogs]:
+        if str(folder) not in ("", ".") and folder.is_dir():
+            return folder
+    return Path.home()
+
+
+class ExportSpeechDialog(QDialog):
+    """The choices of one export; :meth:`plan` reads them. ``folder``: the one proposed (see
+    :func:`default_export_folder`); ``document_path``: the model file, remembered with the folder."""
+
+    def __init__(self, parent: QWidget | None = None, base: str = "speech", folder: Path | None = None,
+                 document_path: Path | None = None):
         super().__init__(parent)
+        self.document_path = document_path
         self.setWindowTitle("Export speech")
         self.setObjectName("script_panel.export_dialog")
         store = QSettings()
@@ -58,7 +90,8 @@ class ExportSpeechDialog(QDialog):
             box.setChecked(kind in chosen)
             self.kind_boxes[kind] = box
             files.addWidget(box)
-        self.folder_edit = QLineEdit(str(store.value(PREFIX + "folder", str(Path.home()))))
+        self.folder_edit = QLineEdit(str(folder if folder is not None else default_export_folder(document_path)))
+        self.folder_edit.setMinimumWidth(320)
         browse = QPushButton("Browse…")
         browse.clicked.connect(self._browse)
         folder_row = QHBoxLayout()
@@ -91,15 +124,60 @@ class ExportSpeechDialog(QDialog):
         form.addRow(_buddy_label("Frame &rate:", self.fps_box), self.fps_box)
         form.addRow(_buddy_label("&Camera:", self.view_box), self.view_box)
         buttons = QDialogButtonBox(QDialogButtonBox.StandardButton.Ok | QDialogButtonBox.StandardButton.Cancel)
-        buttons.button(QDialogButtonBox.StandardButton.Ok).setText("Export")
+        self.export_button = buttons.button(QDialogButtonBox.StandardButton.Ok)
+        self.export_button.setText("Export")
         buttons.accepted.connect(self.accept)
         buttons.rejected.connect(self.reject)
+        self.message = QLabel()               # why Export did not close the dialog
+        self.message.setObjectName("script_panel.export_message")
+        self.message.setWordWrap(True)
+        self.message.setStyleSheet("color: #a02020")
+        self.message.hide()
         layout = QVBoxLayout(self)
         layout.addLayout(form)
+        layout.addWidget(self.message)
         layout.addWidget(buttons)
 
+    def folder(self) -> Path:
+        """The folder typed (``~`` expanded; empty: the current folder)."""
+        return Path(self.folder_edit.text().strip() or ".").expanduser()
+
+    def accept(self) -> None:
+        """Close only on a plan that can be written: a missing folder is created if the user agrees;
+        what is wrong otherwise is said here, and the dialog stays open as it was."""
+        folder = self.folder()
+        if folder.exists() and not folder.is_dir():
+            return self._refuse(f"{folder} is a file, not a folder: choose a folder to write into.")
+        if not folder.exists():
+            if not self.ask_create(folder):
+                return self._refuse(f"The folder {folder} does not exist: choose another one, or press Export "
+                                    "again and let it be created.")
+            try:
+                folder.mkdir(parents=True)
+            except OSError as error:
+                return self._refuse(f"Cannot create the folder {folder}: {error.strerror or error}.")
+        try:
+            self.plan().check()
+        except UserError as error:
+            return self._refuse(f"Cannot export: {error}")
+        self.message.hide()
+        super().accept()
+        return None
+
+    def ask_create(self, folder: Path) -> bool:
+        """Whether to create the missing ``folder`` (a question; tests may answer it)."""
+        answer = QMessageBox.question(self, "Export speech", f"The folder {folder} does not exist.\n\nCreate it?",
+                                      QMessageBox.StandardButton.Yes | QMessageBox.StandardButton.No,
+                                      QMessageBox.StandardButton.Yes)
+        return answer == QMessageBox.StandardButton.Yes
+
+    def _refuse(self, text: str) -> None:
+        self.message.setText(text)
+        self.message.show()
+        self.folder_edit.setFocus()
+
     def plan(self) -> ExportPlan:
-        return ExportPlan(Path(self.folder_edit.text().strip() or "."), self.base_edit.text().strip(),
+        return ExportPlan(self.folder(), self.base_edit.text().strip(),
                           {kind for kind, box in self.kind_boxes.items() if box.isChecked()},
                           fps=self.fps_box.value(), size=(self.width_box.value(), self.height_box.value()),
                           view=self.view_box.currentData())
@@ -108,14 +186,17 @@ class ExportSpeechDialog(QDialog):
         plan = self.plan()
         store = QSettings()
         store.setValue(PREFIX + "kinds", ",".join(k for k in KINDS if k in plan.kinds))
-        store.setValue(PREFIX + "folder", str(plan.folder))
+        store.setValue(PREFIX + "folder", str(plan.folder.resolve()))
+        store.setValue(FOLDER_FOR, str(self.document_path) if self.document_path is not None else "")
         store.setValue(PREFIX + "width", plan.size[0])
         store.setValue(PREFIX + "height", plan.size[1])
         store.setValue(PREFIX + "fps", plan.fps)
         store.setValue(PREFIX + "view", plan.view)
 
     def _browse(self) -> None:
-        folder = QFileDialog.getExistingDirectory(self, "Export into folder", self.folder_edit.text())
+        here = self.folder()
+        start = next((p for p in (here, *here.parents) if p.is_dir()), Path.home())
+        folder = QFileDialog.getExistingDirectory(self, "Export into folder", str(start))
         if folder:
             self.folder_edit.setText(folder)
 
