@@ -19,6 +19,12 @@ live preview), draws the cursor, and on release pushes the stroke's
 :class:`~engine.model.WeightChange` as one
 :class:`~workbench.undo_commands.WeightsChangedCommand`.
 
+While paint mode is on the viewport shows the tool's own heat map
+(:func:`~workbench.painting.shading.shaded_heat_colors`, through
+:meth:`Viewport.show_colors <workbench.viewport.Viewport.show_colors>`) on
+the mesh as it is posed — the held parameter's deformation stays readable
+— and a legend of it (:class:`~workbench.painting.cursor.WeightLegend`).
+
 >>> paint = window.paint                               # doctest: +SKIP
 >>> window.view_state.select_parameter("jaw_open")     # doctest: +SKIP
 >>> paint.set_active(True)                             # doctest: +SKIP
@@ -42,7 +48,6 @@ from engine.painting import (
     LivePreview,
     PaintContext,
     PaintStroke,
-    heat_colors,
     mirrored_points,
     mirrored_vectors,
     rest_point,
@@ -50,7 +55,8 @@ from engine.painting import (
 )
 
 from ..undo_commands import WeightsChangedCommand
-from .cursor import BrushCursor
+from .cursor import BrushCursor, WeightLegend
+from .shading import shaded_heat_colors
 
 TOOLS = (*MODES, "gradient", "sample")
 NO_PARAMETER = "Select a parameter in the Parameters dock to paint its weights"
@@ -87,10 +93,11 @@ class PaintController(QObject):
         self._live: LivePreview | None = None
         self._gradient_start: np.ndarray | None = None      # where the gradient began on the drawn mesh
         self.cursor = BrushCursor(self.viewport.plotter)
+        self.legend = WeightLegend(self.viewport.plotter)
         self.viewport.plotter.installEventFilter(self)
         self.document.model_replaced.connect(self._on_model_replaced)
-        self.document.regions_changed.connect(self._forget_weights)
-        self.document.parameters_changed.connect(self._forget_weights)
+        self.document.regions_changed.connect(self._on_weights_edited)
+        self.document.parameters_changed.connect(self._on_weights_edited)
         self.document.values_changed.connect(self._forget_preview)
         self.view_state.selected_parameter_changed.connect(self._on_selection_changed)
 
@@ -172,6 +179,7 @@ class PaintController(QObject):
             self.context()
             self._active = True
             self.view_state.set_heat_map(True)
+            self._show_heat_map()
             self.window.tool_options.show_page("paint")
             self.window.tool_options.show()
             self._apply_hold()
@@ -181,6 +189,8 @@ class PaintController(QObject):
             self._active = False
             self._restore_hold()
             self.cursor.hide()
+            self.legend.hide()
+            self.viewport.show_colors(None)          # the viewport's own colours again
             self.viewport.plotter.update()
             self.window.tool_options.show_page()
             self._say("Weight painting off")
@@ -322,13 +332,22 @@ class PaintController(QObject):
         self._show_weights(change.indices)
         return change
 
+    def heat_map(self) -> np.ndarray:
+        """(N, 3) uint8: the painted parameter's weights as paint mode shows them (see :mod:`.shading`)."""
+        return shaded_heat_colors(self.dense().weights, self.viewport.base_colors())
+
+    def _show_heat_map(self) -> None:
+        """Every vertex in the tool's heat map, and the legend, for the parameter painted."""
+        self.viewport.show_colors(self.heat_map())
+        self.legend.show(self.parameter)
+
     def _show_weights(self, indices) -> None:
         """Recolour (and with the live preview, move) only these vertices."""
         indices = np.asarray(indices, dtype=np.int64)
         if len(indices) == 0:
             return
         weights = self._dense.weights[indices]
-        self.viewport.update_colors(indices, heat_colors(weights, base=self.viewport.base_colors()[indices]))
+        self.viewport.update_colors(indices, shaded_heat_colors(weights, self.viewport.base_colors()[indices]))
         if self._live is not None:
             self.viewport.update_points(indices, self._live.update(indices))
 
@@ -360,6 +379,12 @@ class PaintController(QObject):
             self.document.set_value(held[1], held[2])
 
     # -- listeners -----------------------------------------------------------
+    def _on_weights_edited(self, _names=None) -> None:
+        """A stroke pushed, an undo, a redo, an operation, a renamed parameter: show the model's weights."""
+        self._forget_weights()
+        if self._active and self._stroke is None and self.parameter is not None:
+            self._show_heat_map()
+
     def _forget_weights(self, _names=None) -> None:
         if self._stroke is None:
             self._dense = None
@@ -382,6 +407,7 @@ class PaintController(QObject):
             self._say(f"Weight painting stopped: no parameter selected. {NO_PARAMETER}")
             return
         self._apply_hold()
+        self._show_heat_map()
         self._say_painting()
 
     def _say_painting(self) -> None:

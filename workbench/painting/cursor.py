@@ -1,10 +1,13 @@
-"""The brush cursor: a ring of the brush's radius lying on the surface at the pick point.
+"""What paint mode draws over the model: the brush cursor, and the heat map's legend.
 
-Two rings (the second one at the mirror image when X-mirror is on) and a
-line for the gradient tool, each a VTK actor drawn over the model without
-lighting. They are built once; moving them only changes a 4 × 4 matrix, so
-following the mouse costs no geometry. One of the workbench's few drawing
-modules: pyvista and VTK are imported when the cursor is built, not with the module.
+The cursor is a ring of the brush's radius lying on the surface at the pick
+point: two rings (the second one at the mirror image when X-mirror is on)
+and a line for the gradient tool, each a VTK actor drawn over the model
+without lighting. They are built once; moving them only changes a 4 × 4
+matrix, so following the mouse costs no geometry. The legend
+(:class:`WeightLegend`) is a colour bar of the weight ramp, 0 … 1, with the
+painted parameter's name. One of the workbench's few drawing modules:
+pyvista and VTK are imported when the cursor and the legend are built, not with the module.
 
 >>> cursor = BrushCursor(viewport.plotter)                         # doctest: +SKIP
 >>> cursor.place(point=(0, 150, 120), normal=(0, 0, 1), radius=15)  # doctest: +SKIP
@@ -27,6 +30,10 @@ GRADIENT_COLOR = "#ffd34d"
 RING_SEGMENTS = 72
 LINE_DEPTH_OFFSET = 20000.0   # depth units the lines are pulled towards the camera
 LIFT_MM = 0.3       # the ring floats this far above the surface, so the mesh does not hide it
+LEGEND_LABELS = 3                 # 0.0, 0.5, 1.0
+LEGEND_PLACE = (0.79, 0.30)       # the legend's lower left corner, as fractions of the viewport
+LEGEND_SIZE = (0.19, 0.42)        # its width and height (the title's room), as fractions of the viewport
+LEGEND_MOST_WIDTH = 170           # px
 
 
 def _unit_ring() -> pv.PolyData:
@@ -128,3 +135,62 @@ class BrushCursor:
     def ring_radius(self) -> float:
         m = self.ring.GetUserMatrix()
         return float(np.linalg.norm([m.GetElement(i, 0) for i in range(3)]))
+
+
+class WeightLegend:
+    """The heat map's colour bar at the viewport's right edge while painting: weight 0 … 1, titled with the
+    parameter painted. A VTK scalar bar over the weight ramp; hidden until :meth:`show`."""
+
+    def __init__(self, plotter: Any):
+        from vtkmodules.vtkCommonCore import vtkLookupTable
+        from vtkmodules.vtkRenderingAnnotation import vtkScalarBarActor
+
+        from engine.painting import WEIGHT_RAMP
+
+        table = vtkLookupTable()
+        table.SetNumberOfTableValues(len(WEIGHT_RAMP))
+        table.SetTableRange(0.0, 1.0)
+        table.Build()
+        for k, (r, g, b) in enumerate(WEIGHT_RAMP):
+            table.SetTableValue(k, r / 255.0, g / 255.0, b / 255.0, 1.0)
+        bar = self.actor = vtkScalarBarActor()
+        bar.SetLookupTable(table)
+        bar.SetOrientationToVertical()
+        bar.SetNumberOfLabels(LEGEND_LABELS)
+        bar.SetLabelFormat("%.1f")
+        bar.SetUnconstrainedFontSize(True)
+        bar.SetTextPositionToPrecedeScalarBar()      # labels left of the bar, the title above it
+        coordinate = bar.GetPositionCoordinate()
+        coordinate.SetCoordinateSystemToNormalizedViewport()
+        coordinate.SetValue(*LEGEND_PLACE)
+        bar.SetWidth(LEGEND_SIZE[0])
+        bar.SetHeight(LEGEND_SIZE[1])
+        bar.SetBarRatio(0.18)
+        bar.SetVerticalTitleSeparation(8)
+        bar.SetMaximumWidthInPixels(LEGEND_MOST_WIDTH)
+        for prop, size, bold in ((bar.GetTitleTextProperty(), 14, True), (bar.GetLabelTextProperty(), 12, False)):
+            prop.SetColor(1.0, 1.0, 1.0)
+            prop.SetFontSize(size)
+            prop.SetBold(bold)
+            prop.SetItalic(False)
+            prop.SetShadow(True)
+        bar.SetPickable(False)
+        bar.SetVisibility(False)
+        self._plotter = plotter
+        plotter.add_actor(bar, reset_camera=False, name="paint:legend", pickable=False, render=False)
+
+    @property
+    def visible(self) -> bool:
+        return bool(self.actor.GetVisibility())
+
+    @property
+    def title(self) -> str:
+        return self.actor.GetTitle() or ""
+
+    def show(self, parameter: str) -> None:
+        """The legend of ``parameter``'s weights."""
+        self.actor.SetTitle(parameter)
+        self.actor.SetVisibility(True)
+
+    def hide(self) -> None:
+        self.actor.SetVisibility(False)
