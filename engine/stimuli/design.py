@@ -59,7 +59,7 @@ MAX_STIMULI = 100_000
 MAX_OFFSET_MS = 10_000.0
 VIEWS = ("front", "side", "three-quarter")
 _TOP_KEYS = {"seed", "factors", "output", "combine", "rows", "blocks", "name"}
-_OUTPUT_KEYS = {"kinds", "size", "fps", "view", "still_ms"}
+_OUTPUT_KEYS = {"kinds", "size", "fps", "view", "still_ms", "validate"}
 RANGES: dict[str, tuple[float, float, str]] = {
     **dict.fromkeys(("intensity", "morph", "identity_morph", "viseme_morph"),
                     (0.0, 100.0, "must be a number from 0 to 100 (%)")),
@@ -84,6 +84,9 @@ class Output:
     still_ms: float | None = None
     """When a ``png`` still is taken (ms from the start of the clip); default: the expression's apex, or the
     middle of the speech."""
+    validate: bool = False
+    """Judge every stimulus's still and video with the observers of ``validate`` (docs/validation.md) as it
+    is made: the verdicts go into ``check.csv``, ``validation.csv`` and ``validation-report.html``."""
 
 
 @dataclass(frozen=True)
@@ -340,5 +343,17 @@ def _output(table: Any, where: Locator) -> Output:
     still = table.get("still_ms")
     if still is not None and not _in_range("still_ms", still):
         raise where.error("still_ms", RANGES["still_ms"][2])
+    validate = table.get("validate", False)
+    if not isinstance(validate, bool):
+        raise where.error("validate", "validate must be true or false")
+    if validate and not {"png", "mp4", "silent-mp4"} & set(kinds):
+        raise where.error("validate", "validate needs a picture to judge: kinds must hold png, mp4 or silent-mp4")
     return Output(tuple(dict.fromkeys(kinds)), (int(match.group(1)), int(match.group(2))), float(fps), view,
-                  None if still is None else float(still))
+                  None if still is None else float(still), validate)
+
+
+def level_text(level: Any) -> str | Any:
+    """A level as a table cell: an identity table as ``sex=1;age=60`` (readable in R, pandas and PsychoPy)."""
+    if isinstance(level, dict):
+        return ";".join(f"{k}={v:g}" if isinstance(v, int | float) else f"{k}={v}" for k, v in level.items())
+    return level

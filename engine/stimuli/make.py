@@ -141,6 +141,11 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
         check["ok"] = False
         check["problem"] = "; ".join(filter(None, [check.get("problem", ""), "the video's frames move "
                                                    f"{check['measured_video_lag_frames']} frames off its face"]))
+    verdicts = None
+    if design.output.validate:
+        from engine.stimuli.judging import judge_stimulus
+
+        verdicts = judge_stimulus(stimulus.id, levels, paths, model, frame_times, values, fps, frames)
     records = outdir / RECORDS
     records.mkdir(exist_ok=True)
     thumbnail = records / f"{stimulus.id}.thumb.npy"
@@ -168,6 +173,8 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
         "snr_spec_db": levels.get("snr_db"),
         "check": check,
     }
+    if verdicts is not None:
+        record["validation"] = verdicts
     atomic_write_text(records / f"{stimulus.id}.json", json.dumps(record, indent=1, ensure_ascii=False))
     return record
 

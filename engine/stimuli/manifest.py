@@ -35,7 +35,8 @@ from engine.formats.atomic import atomic_files
 from engine.outputs.png_file import png_bytes
 from engine.paths import LIBRARY_DIR
 from engine.processes import with_parent_death_signal
-from engine.stimuli.design import FIXED_FACTORS, Design
+from engine.stimuli.design import FIXED_FACTORS, Design, level_text
+from engine.stimuli.judging import check_columns, set_tables, set_verdicts
 from engine.stimuli.make import RECORDS
 
 MANIFEST = "manifest.csv"
@@ -52,12 +53,15 @@ def write_set_files(design: Design, outdir: Path, records: list[dict[str, Any]])
     """The four tables of the set, from the records of every stimulus (all replaced together)."""
     factors = list(design.factors)
     kinds = list(design.output.kinds)
+    verdicts = set_verdicts(records)
     texts = {
         MANIFEST: _csv(_manifest_rows(records, factors, kinds)),
         CONDITIONS: _csv(_condition_rows(records, factors, kinds)),
-        CHECKS: _csv(_check_rows(records)),
+        CHECKS: _csv(_check_rows(records, verdicts if design.output.validate else None)),
         PROVENANCE: json.dumps(provenance(design, records), indent=2, ensure_ascii=False) + "\n",
     }
+    if design.output.validate:
+        texts.update(set_tables(verdicts, f"Validation of {design.name or design.path.name}"))
     sheet = contact_sheet(outdir, records)
     targets = [outdir / name for name in texts] + ([outdir / CONTACT_SHEET] if sheet is not None else [])
     with atomic_files(targets) as temporary:
@@ -133,7 +137,7 @@ def _condition_rows(records: list[dict[str, Any]], factors: list[str], kinds: li
     return rows
 
 
-def _check_rows(records: list[dict[str, Any]]) -> list[dict[str, Any]]:
+def _check_rows(records: list[dict[str, Any]], verdicts: list[Any] | None) -> list[dict[str, Any]]:
     rows = []
     for record in records:
         check = record.get("check", {})
@@ -146,18 +150,23 @@ def _check_rows(records: list[dict[str, Any]]) -> list[dict[str, Any]]:
                      "measured_video_lag_frames": "" if check.get("measured_video_lag_frames") is None
                      else str(check["measured_video_lag_frames"]),
                      "ok": "yes" if check.get("ok", True) else "NO", "problem": check.get("problem", "")})
+        if verdicts is not None:
+            rows[-1].update(check_columns(record, verdicts))
     return rows
 
 
 def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
     """What made the set, so it can be made the same way again."""
+    names = ["numpy", "scipy", "vtk", "h5py", "lxml"]
+    if design.output.validate:
+        names += ["dlib-bin", "face_recognition_models", "ai-edge-litert", "pillow"]
     libraries: dict[str, str | None] = {}
-    for name in ("numpy", "scipy", "vtk", "h5py", "lxml"):
+    for name in names:
         try:
             libraries[name] = importlib.metadata.version(name)
         except importlib.metadata.PackageNotFoundError:
             libraries[name] = None
-    return {
+    made = {
         "toolkit": {"version": _toolkit_version(), "git_commit": _git_commit()},
         "design": {"file": design.path.name, "sha256": design.sha256, "seed": design.seed,
                    "stimuli": len(records)},
@@ -167,6 +176,14 @@ def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
         "festival": {"version": _festival_version(), "voices": sorted({r["voice"] for r in records})},
         "python": sys.version.split()[0], "platform": platform.platform(), "libraries": libraries,
     }
+    if design.output.validate:
+        from dataclasses import asdict
+
+        from engine.validation.observers import EMOTION_MODEL_SHA256, model_facts
+
+        made["validation"] = {"observers": [asdict(m) for m in model_facts()],
+                              "emotion_model_sha256": EMOTION_MODEL_SHA256}
+    return made
 
 
 def _csv(rows: list[dict[str, Any]]) -> str:
@@ -235,11 +252,5 @@ def _festival_version() -> str | None:
     return (done.stdout or done.stderr).strip().splitlines()[0] if (done.stdout or done.stderr).strip() else None
 
 
-__all__ = ["CHECKS", "CONDITIONS", "FIXED_FACTORS", "MANIFEST", "PROVENANCE", "provenance", "write_set_files"]
-
-
-def level_text(level: Any) -> str | Any:
-    """A level as a table cell: an identity table as ``sex=1;age=60`` (readable in R, pandas and PsychoPy)."""
-    if isinstance(level, dict):
-        return ";".join(f"{k}={v:g}" if isinstance(v, int | float) else f"{k}={v}" for k, v in level.items())
-    return level
+__all__ = ["CHECKS", "CONDITIONS", "FIXED_FACTORS", "MANIFEST", "PROVENANCE", "level_text", "provenance",
+           "write_set_files"]

@@ -15,7 +15,7 @@ and a FER2013 emotion classifier (:mod:`engine.validation.observers`; the option
 >>> write_report(summary, "report.html")                                             # doctest: +SKIP
 """
 
-from engine.validation.intended import Intended, intended_emotion, read_intended, read_set
+from engine.validation.intended import Intended, intended_emotion, read_intended, read_set, stimulus_intended
 from engine.validation.judge import Verdict, judge_file, judge_pixels
 from engine.validation.lips import LipTrack, lip_track, read_landmarks_track
 from engine.validation.observers import EMOTIONS, SAME_PERSON, ObserversMissing, observers
@@ -26,5 +26,5 @@ from engine.validation.table import COLUMNS, write_tables
 
 __all__ = ["COLUMNS", "EMOTIONS", "SAME_PERSON", "Intended", "LipTrack", "NothingReadable", "ObserversMissing",
            "Summary", "Verdict", "intended_emotion", "judge_file", "judge_pixels", "lip_track", "observers",
-           "read_intended", "read_landmarks_track", "read_set", "report_html", "summarise", "validate",
-           "write_report", "write_tables"]
+           "read_intended", "read_landmarks_track", "read_set", "report_html", "stimulus_intended", "summarise",
+           "validate", "write_report", "write_tables"]

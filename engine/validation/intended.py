@@ -21,6 +21,7 @@ An emotion is one of the classifier's seven classes (:data:`EMOTIONS`) or a libr
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -112,7 +113,7 @@ def read_set(folder: str | Path) -> list[SetFile]:
         raise UserError("not a stimulus manifest: it has no 'id' column", file=manifest, line=1)
     files: list[SetFile] = []
     for line, row in rows:
-        intended = _stimulus_intended(row, folder, manifest, line)
+        intended = stimulus_intended(row, folder, manifest, line)
         if row.get("file_png"):
             files.append(SetFile(folder / row["file_png"], "png", intended))
         video = next((kind for kind in VIDEO_KINDS if row.get(f"file_{kind}")), None)
@@ -123,7 +124,9 @@ def read_set(folder: str | Path) -> list[SetFile]:
     return files
 
 
-def _stimulus_intended(row: dict[str, str], folder: Path, manifest: Path, line: int) -> Intended:
+def stimulus_intended(row: Mapping[str, str], folder: Path | None = None, manifest: Path | None = None,
+                      line: int | None = None) -> Intended:
+    """What a stimulus was meant to show, from its levels as the manifest writes them (every cell text)."""
     expression = (row.get("expression") or "").strip()
     expression_b = (row.get("expression_b") or "").strip()
     try:
@@ -137,7 +140,8 @@ def _stimulus_intended(row: dict[str, str], folder: Path, manifest: Path, line: 
         label = f"{expression}→{expression_b} {morph:g} %"
     elif intensity != 100:
         label = f"{label} {intensity:g} %"
-    tracks = folder / row["file_tracks"] if row.get("file_tracks") else None
-    landmarks = folder / row["file_landmarks"] if row.get("file_landmarks") else None
+    tracks = folder / row["file_tracks"] if folder is not None and row.get("file_tracks") else None
+    landmarks = folder / row["file_landmarks"] if folder is not None and row.get("file_landmarks") else None
     return Intended(emotion=intended_emotion(expression, intensity, expression_b, morph), expression=label,
-                    identity=identity or "default head", stimulus=row["id"], landmarks=landmarks, tracks=tracks)
+                    identity=identity or "default head", stimulus=row.get("id", ""), landmarks=landmarks,
+                    tracks=tracks)

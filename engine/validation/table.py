@@ -62,15 +62,18 @@ def verdict_row(v: Verdict) -> dict[str, Any]:
 def write_tables(summary: Summary, path: str | Path) -> list[Path]:
     """``path`` and its two companions, written together (atomically); returns the three paths."""
     path = Path(path)
-    stem = path.name.removesuffix(".csv")
-    confusion = path.with_name(f"{stem}-confusion.csv")
-    identities = path.with_name(f"{stem}-identities.csv")
-    texts = {path: _csv(COLUMNS, [verdict_row(v) for v in summary.verdicts]),
-             confusion: _confusion_text(summary), identities: _identities_text(summary)}
+    texts = {path.with_name(name): text for name, text in table_texts(summary, path.name).items()}
     with atomic_files(texts) as temporary:
         for target, temp in temporary.items():
             temp.write_text(texts[target], encoding="utf-8")
     return list(texts)
+
+
+def table_texts(summary: Summary, name: str) -> dict[str, str]:
+    """The three tables' texts by file name: ``name`` (``validation.csv``) and its two companions."""
+    stem = name.removesuffix(".csv")
+    return {name: _csv(COLUMNS, [verdict_row(v) for v in summary.verdicts]),
+            f"{stem}-confusion.csv": _confusion_text(summary), f"{stem}-identities.csv": _identities_text(summary)}
 
 
 def _confusion_text(summary: Summary) -> str:
