@@ -134,11 +134,11 @@ class NewPersonCommand(ReplaceModelCommand):
 def say_test_sentence(window: MainWindow, text: str):
     """Say ``text`` with the document's model through the window's player, with the script panel's voice.
 
-    Returns the :class:`~workbench.script_panel.jobs.Job` (``None`` where the window has no script panel).
+    Returns the :class:`~workbench.jobs.Job` (``None`` where the window has no script panel).
     """
     from engine.speech.requests import run_say
 
-    from .script_panel.jobs import Job
+    from .jobs import Job
 
     panel = getattr(window, "script_panel", None)
     if panel is None:

@@ -1,7 +1,7 @@
 """The wizard's fit page.
 
 :class:`FitPage` runs :func:`engine.photofit.fit_photos` on a worker thread
-(:class:`~workbench.script_panel.jobs.Job`) as soon as it opens: a progress
+(:class:`~workbench.jobs.Job`) as soon as it opens: a progress
 bar follows the fit's steps, **Stop** (or the wizard's Cancel, or Back)
 stops it and nothing is kept. The fit asks the job's ``cancelled`` flag
 inside its long loops (``should_stop``, :mod:`engine.photofit.stopping`),
@@ -24,9 +24,9 @@ from scipy.spatial import ConvexHull
 from engine.photofit.fit import FIT_STEPS
 from engine.photofit.stopping import FitStopped
 
+from .jobs import Job
 from .photofit_wizard_canvas import PhotoCanvas
 from .photofit_wizard_session import VIEWS, PhotoFitSession
-from .script_panel.jobs import Job
 
 STEP_TEXT = {"shape": "Fitting cameras and face shape…", "head": "Making the head…",
              "rig": "Carrying the rig over…", "texture": "Painting the photographs into the texture…",

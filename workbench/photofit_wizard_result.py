@@ -7,7 +7,7 @@ and played by its own :class:`~workbench.player.Player` and
 :class:`~workbench.playhead.Playhead`, the classes the main window uses.
 **Say** synthesizes the sentence with Festival through the engine's
 :func:`engine.speech.say.speak` on a worker thread (a
-:class:`~workbench.script_panel.jobs.Job`), so the page keeps answering;
+:class:`~workbench.jobs.Job`), so the page keeps answering;
 **Stop**, Back or the wizard's Cancel end the synthesis (Festival is
 killed) or the playing. Finish can say the sentence again in the main window
 (:func:`workbench.photofit_wizard.finish`).
@@ -27,9 +27,9 @@ from PySide6.QtWidgets import (
     QWizardPage,
 )
 
+from .jobs import Job
 from .photofit_wizard_session import PhotoFitSession
 from .playhead import Playhead
-from .script_panel.jobs import Job
 
 if TYPE_CHECKING:
     from engine.speech.say import Speech

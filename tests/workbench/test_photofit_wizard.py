@@ -24,10 +24,10 @@ import engine
 from engine.outputs.render import render_model
 from engine.photofit.initial_points import visible_landmarks
 from tests.engine.test_photofit import project
+from workbench.jobs import running_jobs, wait_for_all
 from workbench.layouts import fresh_window_size
 from workbench.photofit_wizard import SCREEN_MARGIN, UNDO_TEXT, PhotoFitWizard, size_for
 from workbench.photofit_wizard_fit import FitStopped
-from workbench.script_panel.jobs import running_jobs, wait_for_all
 
 LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))
 PHOTO_SIZE = (450, 600)

@@ -27,7 +27,7 @@ from tests.workbench.test_photofit_wizard import (  # noqa: F401  (photographs: 
     wait_for_jobs,
 )
 from tests.workbench.test_viewport_keys import press, press_over_the_head, vtk_state
-from workbench.script_panel.jobs import wait_for_all
+from workbench.jobs import wait_for_all
 
 Next = QWizard.WizardButton.NextButton
 Finish = QWizard.WizardButton.FinishButton

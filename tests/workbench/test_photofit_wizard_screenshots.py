@@ -25,9 +25,9 @@ import engine
 from engine.photofit.points import REQUIRED_FRONT
 from tests.workbench.test_photofit_wizard import FIT_TIMEOUT_MS, open_wizard, photographs  # noqa: F401
 from tests.workbench.test_photofit_wizard_speaking import mouth_gap, open_vowel_ms
+from workbench.jobs import wait_for_all
 from workbench.layouts import fresh_window_size
 from workbench.photofit_wizard_landmarks import MoveMarker
-from workbench.script_panel.jobs import wait_for_all
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "images" / "photofit"
 LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))

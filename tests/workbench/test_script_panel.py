@@ -174,7 +174,7 @@ def test_voices_are_listed_and_the_text_is_kept_across_sessions(make_window, syn
 
 
 def test_cancel_forgets_the_running_say(head_window, qtbot):
-    from workbench.script_panel.jobs import running_jobs
+    from workbench.jobs import running_jobs
 
     panel = head_window.script_panel
     panel.editor.setPlainText("Hyvää yötä")
@@ -195,7 +195,7 @@ def test_cancel_stops_festival_at_once(head_window, qtbot):
     import os
 
     from tests.engine.test_long_speech import LONG_TEXT, alive, festival_children, wait_for
-    from workbench.script_panel.jobs import running_jobs
+    from workbench.jobs import running_jobs
 
     panel = head_window.script_panel
     panel.editor.setPlainText(LONG_TEXT)
@@ -263,7 +263,7 @@ def test_inline_commands_are_highlighted_and_stray_brackets_marked(make_window, 
 
 
 def test_closing_the_window_while_saying_is_safe(head_window, qtbot):
-    from workbench.script_panel.jobs import running_jobs
+    from workbench.jobs import running_jobs
 
     head_window.script_panel.editor.setPlainText("Näkemiin")
     head_window.script_panel.say()

@@ -28,6 +28,8 @@ from PySide6.QtWidgets import (
     QListView,
     QListWidget,
     QListWidgetItem,
+    QMenu,
+    QPushButton,
     QSlider,
     QStyledItemDelegate,
     QStyleOptionViewItem,
@@ -97,10 +99,17 @@ class ExpressionGallery(QWidget):
         self.intensity_label = QLabel()
         self.intensity.valueChanged.connect(self._intensity_changed)
         self.intensity.sliderReleased.connect(self._replay)
+        self.validate_button = QPushButton("Validate")
+        self.validate_button.setObjectName("expression-gallery.validate")
+        self.validate_button.setToolTip("Judge the face last played, at this intensity, with observers trained on "
+                                        "photographs of people: face found, emotion (docs/validation.md)")
+        self.validate_button.clicked.connect(lambda _checked=False: self.validate())
+        self.validation_job = None
         header = QHBoxLayout()
         header.addWidget(QLabel("Intensity"))
         header.addWidget(self.intensity, 1)
         header.addWidget(self.intensity_label)
+        header.addWidget(self.validate_button)
         self.hint = QLabel("Click a face to play it: onset, apex, offset")
         self.hint.setStyleSheet("color: palette(mid)")
         self.expressions_label = QLabel("<b>Expressions</b>")
@@ -195,7 +204,44 @@ class ExpressionGallery(QWidget):
         view.setItemDelegate(NameUnderFace(view))
         view.itemClicked.connect(lambda item: self.preview(item.data(NAME_ROLE)))
         view.itemActivated.connect(lambda item: self.preview(item.data(NAME_ROLE)))
+        view.setContextMenuPolicy(Qt.ContextMenuPolicy.CustomContextMenu)
+        view.customContextMenuRequested.connect(lambda point, v=view: self._context_menu(v, point))
         return view
+
+    def _context_menu(self, view: QListWidget, point) -> None:
+        item = view.itemAt(point)
+        if item is None:
+            return
+        name = item.data(NAME_ROLE)
+        menu = QMenu(self)
+        menu.addAction(f"Play {name}", lambda: self.preview(name))
+        menu.addAction(f"Validate {name}", lambda: self.validate(name))
+        menu.exec(view.viewport().mapToGlobal(point))
+
+    def validate(self, name: str | None = None):
+        """Judge entry ``name`` (the one last played by default) at the slider's intensity, front view: the
+        verdict opens in a dialog (:mod:`workbench.validation_view`). Returns the job judging it."""
+        from engine.validation import Intended, intended_emotion
+
+        from ..validation_view import STILL_SIZE, judge_in_background, render_frames
+
+        name = name or self.last_preview
+        if name not in self.entries:
+            self.window_.statusBar().showMessage("Click a face first: Validate judges the face last played", 6000)
+            return None
+        entry, intensity = self.entries[name], float(self.intensity.value())
+        model = self.window_.document.model
+        try:
+            values = entry.timeline(model, intensity).values_at(entry.apex_time)
+        except UserError as exc:
+            self.window_.statusBar().showMessage(f"Cannot validate {name}: {exc}", 6000)
+            return None
+        frames = render_frames(model, [model.deform(values)], STILL_SIZE, self)
+        meant = intended_emotion(name, intensity) if entry.kind == "expression" else None
+        intended = Intended(emotion=meant, expression=f"{name} {intensity:g} %")
+        self.window_.statusBar().showMessage(f"Judging {name}… (the observers take a few seconds to load)", 6000)
+        self.validation_job = judge_in_background(frames, intended, None, f"{name} at {intensity:g} %", self)
+        return self.validation_job
 
     def rebuild(self, *_args) -> None:
         """List what the library and the model offer now; pictures come as they are rendered."""

@@ -40,7 +40,7 @@ from engine.outputs.speech_files import KINDS, ExportCancelled, ExportPlan, expo
 
 from .. import settings
 from ..file_controller import is_shipped
-from .jobs import Job
+from ..jobs import Job
 
 PREFIX = "script_panel/export/"
 FOLDER_FOR = PREFIX + "folder_for"      # the model file whose speech was last exported (to PREFIX + "folder")

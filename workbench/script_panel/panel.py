@@ -39,8 +39,8 @@ from engine.errors import UserError
 from engine.speech.requests import SayRequest, SayResult, described_error, error_location, run_say
 
 from ..icons import icon
+from ..jobs import Job
 from .highlighter import InlineCommandHighlighter
-from .jobs import Job
 from .recording_chooser import RecordingChooser
 from .table_chooser import PhoneTableChooser
 
@@ -51,6 +51,8 @@ KEY_PROSODY = "script_panel/prosody"
 KEY_SEED = "script_panel/prosody_seed"
 DEFAULT_TEXT = "Hyvää <Happy/> huomenta! Mitä kuuluu?"
 DEFAULT_VOICE = "suo_fi_lj_diphone"
+#: The library expressions whose emotion the classifier knows (a script holding one of them means it).
+EXPRESSION_NAMES = frozenset({"Happy", "Sad", "Surprise", "Fear", "Anger", "Disgust", "Neutral"})
 #: The coarticulation menu: label → the engine's name for it.
 COARTICULATIONS = (("Cohen–Massaro", "cohen-massaro"), ("none (target interpolation)", "none"))
 MESSAGE_MS = 6000
@@ -127,6 +129,13 @@ class ScriptPanel(QWidget):
         self.export_button.setObjectName("script_panel.export")
         self.export_button.setToolTip("Write the last utterance as MP4, WAV and CSV files")
         self.export_button.setEnabled(False)
+        self.validate_button = QPushButton("Validate")
+        self.validate_button.setObjectName("script_panel.validate")
+        self.validate_button.setToolTip("Judge the last utterance's face, frame by frame, with observers trained on "
+                                        "photographs of people: face found, emotion, lips against the engine's")
+        self.validate_button.setEnabled(False)
+        self.validate_button.clicked.connect(lambda _checked=False: self.validate())
+        self.validation_job: Job | None = None
         self.busy_bar = QProgressBar()
         self.busy_bar.setRange(0, 0)                 # "busy", no known length
         self.busy_bar.setTextVisible(False)
@@ -150,6 +159,7 @@ class ScriptPanel(QWidget):
         buttons.addWidget(self.say_button)
         buttons.addWidget(self.cancel_button)
         buttons.addStretch(1)
+        buttons.addWidget(self.validate_button)
         buttons.addWidget(self.export_button)
         layout = QVBoxLayout(self)
         layout.setContentsMargins(6, 6, 6, 6)
@@ -272,6 +282,7 @@ class ScriptPanel(QWidget):
         self._forget_previous_wav(result)
         self.result = result
         self.export_button.setEnabled(True)
+        self.validate_button.setEnabled(True)
         phones = result.speech.utterance.phones
         summary = (f"{result.duration:.2f} s, {len(phones)} phone{'s' * (len(phones) != 1)}, "
                    f"voice {result.speech.utterance.voice}")
@@ -282,6 +293,35 @@ class ScriptPanel(QWidget):
         self.info.setToolTip("\n".join(f"Warning: {w}" for w in result.speech.warnings))
         self.info.setText(summary)
         self.said.emit(result)
+
+    def validate(self) -> Job | None:
+        """Judge the last utterance as a video (front view, 30 fps): drawn here, judged on a worker
+        thread, the verdict in a dialog (:mod:`workbench.validation_view`). Returns the job."""
+        import numpy as np
+
+        from engine.validation import Intended, intended_emotion, lip_track
+
+        from ..validation_view import VIDEO_FPS, VIDEO_SIZE, judge_in_background, render_frames
+
+        result = self.result
+        if result is None:
+            return None
+        model, speech = result.request.model, result.speech
+        times = np.arange(0.0, max(speech.end_ms, 1000.0 / VIDEO_FPS), 1000.0 / VIDEO_FPS)
+        values = speech.timeline.sample(times)
+        deformer = model.deformer()
+        frames = render_frames(model, [deformer.deform(row) for row in values], VIDEO_SIZE, self)
+        if frames is None:
+            return None
+        expressions = {c.command.name for c in speech.script.commands} & EXPRESSION_NAMES
+        meant = "neutral" if not expressions else intended_emotion(expressions.pop()) if len(expressions) == 1 \
+            else None
+        text = " ".join(speech.script.text.split())
+        title = text if len(text) <= 40 else text[:39] + "…"
+        self.info.setText("Judging the face… (the observers take a few seconds to load)")
+        self.validation_job = judge_in_background(frames, Intended(emotion=meant, expression=", ".join(
+            sorted(expressions)) or "none"), lip_track(model, times, values), title, self, fps=VIDEO_FPS)
+        return self.validation_job
 
     def _play(self, result: SayResult) -> None:
         player = getattr(self.window, "player", None)
