@@ -9,6 +9,8 @@ sound; ``--headless`` renders nothing. ``--festival HOST:PORT`` synthesizes with
 server (``festival --server``) instead of a local Festival; ``--lsl`` pushes every event to a Lab
 Streaming Layer marker outlet too, liblsl kept to this computer unless told otherwise.
 
+>>> listen_host("[::1]")                    # an IPv6 literal, bare or in brackets as in a URL
+'::1'
 >>> check_listen_address("127.0.0.1", None)
 >>> check_listen_address("0.0.0.0", None)   # doctest: +ELLIPSIS
 Traceback (most recent call last):
@@ -38,8 +40,9 @@ def add_verbs(verbs: Any) -> None:
     p = verbs.add_parser("serve", help="the live animator over WebSocket/JSON, in a window of its own or headless")
     add_model_option(p)
     add_library_option(p)
-    p.add_argument("--host", default="127.0.0.1", metavar="H",
-                   help="address to listen on (default 127.0.0.1; any other needs --token)")
+    p.add_argument("--host", type=listen_host, default="127.0.0.1", metavar="H",
+                   help="address to listen on: a host name, an IPv4 address or an IPv6 address, bare or in brackets "
+                        "(::1 or [::1]) (default 127.0.0.1; any but loopback needs --token)")
     p.add_argument("--port", type=port_number, default=8765, metavar="P", help="port (default 8765; 0: any free one)")
     shown = p.add_mutually_exclusive_group(required=True)
     shown.add_argument("--window", action="store_true",
@@ -144,6 +147,26 @@ def served_model_folders(model: str | None, libraries: list[str], extra: list[st
     return folders
 
 
+def listen_host(text: str) -> str:
+    """``--host``: a host name, an IPv4 address, or an IPv6 address bare or in brackets (``[::1]``, as in a URL); the
+    brackets are dropped. What cannot be one (unbalanced or misplaced brackets, a port, nothing) is refused here;
+    a name that does not resolve, or an address that is not this computer's, when the server binds (exit 2 both)."""
+    host = text.strip()
+    bracketed = host.startswith("[") and host.endswith("]")
+    if bracketed:
+        host = host[1:-1]
+    try:
+        is_ipv6 = ipaddress.ip_address(host).version == 6
+    except ValueError:
+        is_ipv6 = False
+    if bracketed and not is_ipv6:
+        raise argparse.ArgumentTypeError(f"'{text}' is not an address: brackets hold an IPv6 address, as in [::1]")
+    if not host or "[" in host or "]" in host or (":" in host and not is_ipv6) or any(c.isspace() for c in host):
+        raise argparse.ArgumentTypeError(f"'{text}' is not a host name or an address (an IPv6 address may be put in "
+                                         "brackets, [::1]; the port goes in --port)")
+    return host
+
+
 def check_listen_address(host: str, token: str | None) -> None:
     """Refuse to listen beyond this computer without a token."""
     if token is None and not is_loopback(host):
@@ -156,7 +179,7 @@ def is_loopback(host: str) -> bool:
     if host.lower() in LOOPBACK_NAMES:
         return True
     try:
-        return ipaddress.ip_address(host.strip("[]")).is_loopback
+        return ipaddress.ip_address(host).is_loopback
     except ValueError:
         return False
 
