@@ -6,6 +6,8 @@ The parts, each usable on its own:
 * :mod:`engine.live.head` is the headless animator: parameter values, performances (utterances, commands)
   placed on the frame clock, and the events each frame brings;
 * :mod:`engine.live.server` runs the frame clock and the WebSocket server (``websockets``, imported there);
+  :mod:`engine.live.connection` is one client's outbox (bounded, its one encoder of replies and events),
+  :mod:`engine.live.served_models` the folders a ``load`` reads from and the one check that keeps it there;
 * :mod:`engine.live.client` is a blocking and an asyncio Python client;
 * :mod:`engine.live.lsl` is ``serve --lsl``'s marker outlet (``pylsl``, imported when it opens) and its
   loopback-only liblsl configuration.

@@ -123,8 +123,10 @@ class MarkerOutlet:
         """The LSL clock's reading at the frame time ``t_ms``."""
         return self.epoch_monotonic_s + t_ms / 1000.0 + self.lsl_minus_monotonic_s
 
-    def push(self, event: dict[str, Any]) -> None:
-        text = json.dumps(event, ensure_ascii=False, allow_nan=False)
+    def push(self, event: dict[str, Any], text: str | None = None) -> None:
+        """``event`` as a marker at its frame's moment; ``text``: its JSON as its client got it (default: made here)."""
+        if text is None:
+            text = json.dumps(event, ensure_ascii=False, allow_nan=False)
         self.outlet.push_sample([text], self.timestamp(float(event["t"])))
         self.pushed += 1
 

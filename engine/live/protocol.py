@@ -35,6 +35,8 @@ SCHEMA_VERSION = 1
 MAX_MESSAGE_BYTES = 64 * 1024
 #: The largest WebSocket frame the server accepts at all: beyond it the connection is closed (code 1009).
 MAX_FRAME_BYTES = 1024 * 1024
+#: Frames the server holds unread per connection before it stops reading the socket (TCP then holds the client back).
+MAX_INCOMING_FRAMES = 4
 #: Longest ``say`` text and ``command`` XML, characters.
 MAX_TEXT_CHARS = 8000
 #: Longest string id.
@@ -68,6 +70,8 @@ EVENT_TYPES = ("applied", "speech_start", "word", "phone", "command_start", "com
 MAX_MODEL_NAME_CHARS = 1024
 MESSAGE_NAME = "<message>"
 _VOICE_NAME = re.compile(r"[A-Za-z0-9_]{1,64}\Z")
+#: A UTF-16 surrogate on its own (JSON's ``"\\ud800"``): not a character, and no UTF-8 text can hold it.
+LONE_SURROGATE = re.compile("[\ud800-\udfff]")
 
 RequestId = str | int | None
 
@@ -105,6 +109,7 @@ def parse_request(text: str | bytes) -> Request:
     if not isinstance(data, dict):
         raise RequestError(f"a request is a JSON object, not {_kind(data)}")
     request_id = check_id(data.get("id"), "id") if "id" in data else None
+    refuse_lone_surrogates(data, request_id)
     if "id" not in data:
         raise RequestError("the request has no \"id\" (a string or an integer the reply will carry)")
     kind = data.get("type")
@@ -143,11 +148,47 @@ def parse_request(text: str | bytes) -> Request:
 def check_id(value: object, what: str, request_id: RequestId = None) -> str | int:
     """An id: a string of at most :data:`MAX_ID_CHARS` characters or an integer that fits in 53 bits."""
     if isinstance(value, str) and len(value) <= MAX_ID_CHARS:
+        if LONE_SURROGATE.search(value):
+            raise RequestError(f"\"{what}\" {_lone_surrogate(value)}", request_id)
         return value
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) < 2**53:
         return value
     raise RequestError(f"\"{what}\" must be a string (at most {MAX_ID_CHARS} characters) or an integer, "
                        f"not {_kind(value)}", request_id)
+
+
+def refuse_lone_surrogates(data: dict[str, Any], request_id: RequestId) -> None:
+    """Refuse a request with a lone surrogate in any string, field name or nested value (the reply names the field).
+
+    Such a string is valid JSON (``"\\ud800"``) but no text: it cannot be written as UTF-8, so nothing
+    downstream (the XML parser, Festival, the reply echoing it) could take it.
+
+    >>> refuse_lone_surrogates({"type": "say", "id": 1, "text": "moi \\ud800"}, 1)   # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    engine.live.protocol.RequestError: <message>:1: "text" holds a lone UTF-16 surrogate (U+D800), ...
+    """
+    for name, value in data.items():
+        if LONE_SURROGATE.search(name):
+            raise RequestError(f"a field name {_lone_surrogate(name)}", request_id)
+        pending = [value]
+        while pending:                                   # json.loads has bounded the depth already
+            item = pending.pop()
+            if isinstance(item, str):
+                if LONE_SURROGATE.search(item):
+                    raise RequestError(f"\"{name}\" {_lone_surrogate(item)}", request_id)
+            elif isinstance(item, dict):
+                pending.extend(item.keys())
+                pending.extend(item.values())
+            elif isinstance(item, list):
+                pending.extend(item)
+
+
+def _lone_surrogate(text: str) -> str:
+    found = LONE_SURROGATE.search(text)
+    assert found is not None
+    return (f"holds a lone UTF-16 surrogate (U+{ord(found.group()):04X}), which is no character: "
+            "escape a character outside the BMP as a pair, \\ud83d\\ude00")
 
 
 def model_name(value: object, request_id: RequestId = None) -> str:

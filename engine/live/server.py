@@ -40,7 +40,7 @@ from websockets.http11 import Response as HttpResponse
 from engine.commands import Library, load_library, parse_commands_text, translate
 from engine.commands.command_files import Activation, HighLevelCommand
 from engine.errors import UserError
-from engine.live.connection import Client
+from engine.live.connection import Client, release_freed_memory
 from engine.live.head import Event, LiveHead
 from engine.live.lsl import STREAM_NAME, MarkerOutlet, lsl_source_id
 from engine.live.presentation import PresentationStamps, Presenter, Sound, SoundKey, stopped_sounds
@@ -49,6 +49,7 @@ from engine.live.protocol import (
     MAX_AHEAD_MS,
     MAX_CLIENTS,
     MAX_FRAME_BYTES,
+    MAX_INCOMING_FRAMES,
     MAX_MESSAGE_BYTES,
     MAX_SCHEDULED,
     MAX_TEXT_CHARS,
@@ -63,6 +64,7 @@ from engine.live.protocol import (
     error_reply,
     parse_request,
 )
+from engine.live.served_models import ServedFolders
 from engine.model.model import Model
 from engine.speech.synthesis import Synthesizer
 
@@ -90,7 +92,7 @@ class LiveServer:
         self.model_reader = model_reader
         self.model_name = model_name
         #: The folders a ``load`` request may name a model file in (resolved; nothing outside them is read).
-        self.model_folders = [Path(folder).resolve() for folder in model_folders]
+        self.served = ServedFolders(model_folders)
         self._loading: asyncio.Lock | None = None
         self._announcements: list[tuple[Client, Event]] = []
         self.lsl = lsl
@@ -128,9 +130,13 @@ class LiveServer:
         for signum in (signal.SIGINT, signal.SIGTERM):
             with suppress(NotImplementedError, RuntimeError):
                 loop.add_signal_handler(signum, self._stopping.set)
-        async with serve(self._serve_client, self.host, self.port, max_size=MAX_FRAME_BYTES,
-                         process_request=self._check_token, origins=[None], server_header=None,
-                         ping_interval=20, ping_timeout=20) as server:
+        try:
+            listening = await serve(self._serve_client, self.host, self.port, max_size=MAX_FRAME_BYTES,
+                                    max_queue=MAX_INCOMING_FRAMES, process_request=self._check_handshake,
+                                    origins=[None], server_header=None, ping_interval=20, ping_timeout=20)
+        except OSError as exc:                   # a name that does not resolve, an address not ours, a port taken
+            raise UserError(f"cannot listen on {self.host} port {self.port}: {exc.strerror or exc}") from None
+        async with listening as server:
             host, port = server.sockets[0].getsockname()[:2]
             shown = f"[{host}]" if ":" in host else host
             self.epoch = time.monotonic()
@@ -211,10 +217,10 @@ class LiveServer:
                 print(f"internal error in frame {self.frame}:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
                 self._deliver(self.head.stop())
 
-    def _push_marker(self, event: dict[str, Any]) -> None:
+    def _push_marker(self, event: dict[str, Any], text: str) -> None:
         assert self.markers is not None
         try:
-            self.markers.push(event)
+            self.markers.push(event, text)
         except Exception:                                 # a bug of ours or liblsl's: said, the clients served on
             print(f"internal error pushing an LSL marker:\n{traceback.format_exc()}", file=sys.stderr, flush=True)
 
@@ -229,34 +235,58 @@ class LiveServer:
 
     # -- connections ---------------------------------------------------------------------
 
+    async def _check_handshake(self, connection: ServerConnection, request: HttpRequest) -> HttpResponse | None:
+        """The handshake's refusals: too many clients (503), a missing, wrong or doubled token (401, 400).
+
+        A client that sent bytes after its handshake request that are no WebSocket frame has had its stream
+        ended by websockets already, which (17.x) then fails on an assertion, with a traceback in the log, when
+        it sends the response: such a connection is closed without one.
+        """
+        if connection.protocol.eof_sent:
+            connection.transport.abort()
+            await connection.wait_closed()                # closed: websockets sends nothing more
+            return None
+        return self._check_token(connection, request)
+
     def _check_token(self, connection: ServerConnection, request: HttpRequest) -> HttpResponse | None:
         if len(self._clients) >= MAX_CLIENTS:
             return connection.respond(HTTPStatus.SERVICE_UNAVAILABLE, f"at most {MAX_CLIENTS} clients at a time\n")
         if self.token is None:
             return None
-        given = request.headers.get(TOKEN_HEADER, "")
+        given_all = request.headers.get_all(TOKEN_HEADER)
+        if len(given_all) > 1:                            # which one counts would be a guess: neither does
+            return connection.respond(HTTPStatus.BAD_REQUEST, f"one {TOKEN_HEADER} header, not {len(given_all)}\n")
+        given = given_all[0] if given_all else ""
         expected = f"Bearer {self.token}"
         if hmac.compare_digest(given.encode("utf-8", "replace"), expected.encode("utf-8")):
             return None
         return connection.respond(HTTPStatus.UNAUTHORIZED, "a token is required: Authorization: Bearer TOKEN\n")
 
     async def _serve_client(self, connection: ServerConnection) -> None:
-        client = Client(connection, self._push_marker if self.markers is not None else None)
+        client = Client(connection, self._push_marker if self.markers is not None else None, self._forget)
         self._clients.add(client)
         writer = asyncio.ensure_future(client.write())
         try:
             async for message in connection:
                 client.send(await self._answer(client, message))
+                await client.room_for_replies()                 # one that does not read is not read either
         except ConnectionClosed:
             pass
         finally:
             client.closed = True
             self._clients.discard(client)
-            client.cancelled.update(client.waiting_utterances)
-            self._deliver(self.head.forget(client))            # to no one: the client is gone (sounds end)
-            client.outbox.put_nowait(None)
+            self._forget(client)
+            client.discard_outbox()                             # its memory goes with it
+            client.end_writer()
             with suppress(asyncio.CancelledError, ConnectionClosed):
                 await writer
+            if client.held_much:
+                release_freed_memory()                          # and back to the system, not only to the heap
+
+    def _forget(self, client: Client) -> None:
+        """A client gone, or being disconnected: its performances end, its sets and utterances do not happen."""
+        client.cancelled.update(client.waiting_utterances)
+        self._deliver(self.head.forget(client))                # to no one: the client is gone (sounds end)
 
     async def _answer(self, client: Client, message: str | bytes) -> dict[str, Any]:
         request_id: RequestId = None
@@ -402,11 +432,11 @@ class LiveServer:
     async def _load(self, client: Client, request: Request) -> dict[str, Any]:
         """Read another model file from a served folder; it replaces the head from the next frame."""
         name = request.fields["model"]
-        path = self.model_path(name, request.id)
+        path = self.served.model_path(name, request.id)
         assert self._loading is not None
         async with self._loading:
             try:
-                model = await asyncio.to_thread(self.model_reader, str(path))
+                model = await asyncio.to_thread(self._read_served_model, path)
             except UserError as exc:
                 shown = name if exc.file is None or Path(exc.file).resolve() == path else Path(exc.file).name
                 raise RequestError(exc.message, request.id, file=shown, line=exc.line) from None
@@ -420,16 +450,10 @@ class LiveServer:
             return {"id": request.id, "ok": True, "t": self.next_frame_time(), "model": name,
                     "parameter_count": len(head.names)}
 
-    def model_path(self, name: str, request_id: RequestId = None) -> Path:
-        """The file ``name`` (checked by the protocol: relative, no ``..``) in the first served folder that has it.
-
-        Symbolic links are followed and must end inside that folder: nothing outside the folders is read.
-        """
-        for folder in self.model_folders:
-            candidate = (folder / name).resolve()
-            if candidate.is_relative_to(folder) and candidate.is_file():
-                return candidate
-        raise RequestError(f"no model file {name!r} in the folders this server was started with", request_id)
+    def _read_served_model(self, path: Path) -> Model:
+        """The model at ``path``, once every file it names is known to lie in the served folders (in a worker)."""
+        self.served.check_named_files(path)
+        return self.model_reader(str(path))
 
     # -- state and capabilities ------------------------------------------------------------------
 
