@@ -19,6 +19,7 @@ import subprocess
 import sys
 import time
 from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -60,12 +61,11 @@ def read_xwd(data: bytes) -> np.ndarray:
     return pixels[..., 2::-1].copy() if byte_order == 0 else pixels[..., 1:].copy()      # BGRX / XRGB → RGB
 
 
-@pytest.fixture(scope="module")
-def screen(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Screen]:
-    """An X server of this module's own, its screen in a file."""
-    folder = tmp_path_factory.mktemp("screen")
+@contextmanager
+def screen_of(width: int, height: int, folder: Path) -> Iterator[Screen]:
+    """An X server with one screen of ``width`` × ``height``, its pixels in a file in ``folder``."""
     read, write = os.pipe()
-    process = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", f"{SCREEN[0]}x{SCREEN[1]}x24",
+    process = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", f"{width}x{height}x24",
                                 "-fbdir", str(folder), "-nolisten", "tcp"], pass_fds=(write,),
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     os.close(write)
@@ -78,6 +78,13 @@ def screen(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Screen]:
         os.close(read)
         os.killpg(process.pid, signal.SIGTERM)
         process.wait(timeout=30)
+
+
+@pytest.fixture(scope="module")
+def screen(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Screen]:
+    """An X server of this module's own, its screen in a file."""
+    with screen_of(SCREEN[0], SCREEN[1], tmp_path_factory.mktemp("screen")) as opened:
+        yield opened
 
 
 @dataclass

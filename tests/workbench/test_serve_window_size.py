@@ -11,12 +11,7 @@ does not fit is made smaller with a note on stderr.
 
 from __future__ import annotations
 
-import os
-import select
 import signal
-import subprocess
-from collections.abc import Iterator
-from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -24,29 +19,10 @@ import pytest
 from PySide6.QtCore import QRect
 
 from engine.live.client import LiveClient
-from tests.workbench.test_serve_window import Screen, applied, needs_xvfb, screen_when, start_window_server
+from tests.workbench.test_serve_window import Screen, applied, needs_xvfb, screen_of, screen_when, start_window_server
 from workbench.live_window import fitted_size, place_on_screen
 
 SCREENSHOTS = Path("/tmp")
-
-
-@contextmanager
-def screen_of(width: int, height: int, folder: Path) -> Iterator[Screen]:
-    """An X server with one screen of ``width`` × ``height``, its pixels in a file in ``folder``."""
-    read, write = os.pipe()
-    process = subprocess.Popen(["Xvfb", "-displayfd", str(write), "-screen", "0", f"{width}x{height}x24",
-                                "-fbdir", str(folder), "-nolisten", "tcp"], pass_fds=(write,),
-                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
-    os.close(write)
-    try:
-        ready, _, _ = select.select([read], [], [], 30)
-        number = os.read(read, 64).decode().strip() if ready else ""
-        assert number.isdigit(), "Xvfb did not start"
-        yield Screen(f":{number}", folder / "Xvfb_screen0")
-    finally:
-        os.close(read)
-        os.killpg(process.pid, signal.SIGTERM)
-        process.wait(timeout=30)
 
 
 def box(mask: np.ndarray) -> tuple[int, int, int, int]:
