@@ -16,7 +16,6 @@ Sizes: ``AP_FUZZ_EXAMPLES`` (``tests/engine/fuzz_support.py``, ``docs/robustness
 from __future__ import annotations
 
 import json
-import socket
 import time
 from typing import Any
 
@@ -34,6 +33,7 @@ from tests.engine.test_serve import (
     start_server,
     stop_server,
 )
+from tests.engine.test_serve_hardening import status_line
 
 LONE_SURROGATES = st.integers(0xD800, 0xDFFF).map(chr)
 SURROGATE_TEXT = st.text(st.characters(categories=["L", "N", "P", "Zs", "Cs"]), min_size=1, max_size=20)
@@ -159,15 +159,7 @@ HANDSHAKES = st.tuples(
 
 def handshake_status(address: tuple[str, int], request: bytes) -> bytes:
     """The status code the server answers ``request`` with (b"" when it closes the connection without one)."""
-    with socket.create_connection(address, timeout=30) as sock:
-        sock.sendall(request)
-        answer = b""
-        while b"\r\n" not in answer:
-            chunk = sock.recv(4096)
-            if not chunk:
-                break
-            answer += chunk
-    parts = answer.split(b" ", 2)
+    parts = status_line(address, request).split(b" ", 2)
     return parts[1] if len(parts) > 1 else b""
 
 

@@ -110,7 +110,12 @@ def handshake(url: str, *headers: bytes, after: bytes = b"") -> bytes:
     request = (b"GET / HTTP/1.1\r\nHost: " + f"{host}:{port}".encode() + b"\r\nUpgrade: websocket\r\n"
                b"Connection: Upgrade\r\nSec-WebSocket-Key: " + key + b"\r\nSec-WebSocket-Version: 13\r\n"
                + b"".join(header + b"\r\n" for header in headers) + b"\r\n" + after)
-    with socket.create_connection((host, port), timeout=30) as sock:
+    return status_line((host, port), request)
+
+
+def status_line(where: tuple[str, int], request: bytes) -> bytes:
+    """The first line the server answers the raw ``request`` with (empty when it closes without one)."""
+    with socket.create_connection(where, timeout=30) as sock:
         sock.sendall(request)
         answer = b""
         while b"\r\n" not in answer:
