@@ -29,9 +29,9 @@ from engine.mocap.naming import read_mapping, write_mapping
 from engine.mocap.readers import read_marker_file
 from engine.mocap.sample_files import write_sample_recording
 from engine.mocap.session import load_session
+from tests.workbench.test_mocap_tool import read_into_dialog, wait_jobs
 from workbench.layouts import fresh_window_size
 from workbench.mocap.import_dialog import POINT
-from workbench.mocap.worker import running_jobs
 from workbench.recent_files import add_recent_file
 
 FACIAL_SING = Path(__file__).parents[1] / "engine" / "data" / "capture" / "Facial-Sing-200-frames.c3d"
@@ -63,18 +63,6 @@ def project(tmp_path) -> Path:
 @pytest.fixture
 def head_window(make_window):
     return make_window(engine.default_model_path(), size=(LAPTOP.width(), LAPTOP.height()))
-
-
-def wait_jobs(qtbot):
-    qtbot.waitUntil(lambda: running_jobs() == 0, timeout=60000)
-    qtbot.wait(20)          # the queued result reaches its slot
-
-
-def read_into_dialog(window, qtbot, path):
-    dialog = window.mocap.import_dialog_for(path)
-    wait_jobs(qtbot)
-    assert dialog.recording is not None
-    return dialog
 
 
 def import_take(window, qtbot, path):
