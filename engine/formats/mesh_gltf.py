@@ -39,17 +39,17 @@ from typing import NoReturn
 import numpy as np
 
 from engine.errors import MeshImportError
-from engine.formats.gltf_read import (
+from engine.formats.gltf_document import (
     GLB_MAGIC,
     GltfFileError,
-    _quaternion_matrix,
-    _split_glb,
     decode_accessor,
     document_file,
     element,
     index_of,
     integers,
     load_buffer,
+    quaternion_matrix,
+    split_glb,
 )
 from engine.formats.mesh_data import MeshMaterial, MeshTexture, RawMesh
 
@@ -68,7 +68,7 @@ def read_gltf_mesh(path: Path) -> RawMesh:
         raise MeshImportError(f"cannot read file: {exc.strerror or exc}", file=path) from None
     try:
         if blob[:4] == struct.pack("<I", GLB_MAGIC):
-            document, embedded = _split_glb(blob, path, strict=False)
+            document, embedded = split_glb(blob, path, strict=False)
         else:
             try:
                 document = json.loads(blob.decode("utf-8"))
@@ -280,7 +280,7 @@ def _local_matrix(node: dict) -> np.ndarray:
         raise ValueError("a node transform holds a number that is not finite")
     if np.linalg.norm(rotation) == 0:
         raise ValueError("a node rotation is the zero quaternion")
-    local[:3, :3] = _quaternion_matrix(rotation) * scale
+    local[:3, :3] = quaternion_matrix(rotation) * scale
     local[:3, 3] = translation
     return local
 

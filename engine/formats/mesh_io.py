@@ -32,7 +32,7 @@ import numpy.typing as npt
 
 from engine.errors import MeshImportError, UserError
 from engine.formats.atomic import atomic_write_bytes
-from engine.formats.gltf_read import LFS_POINTER
+from engine.formats.gltf_document import LFS_POINTER
 from engine.formats.mesh_child import read_in_child
 from engine.formats.mesh_data import ImportedMesh, RawMesh
 from engine.formats.mesh_gltf import read_gltf_mesh

@@ -27,7 +27,7 @@ from typing import NoReturn
 import numpy as np
 
 from engine.errors import MeshImportError, UserError
-from engine.formats.gltf_read import GLB_MAGIC, GltfFileError, _split_glb, load_buffer
+from engine.formats.gltf_document import GLB_MAGIC, GltfFileError, load_buffer, split_glb
 from engine.formats.mesh_data import ImportedMesh
 from engine.model.cells import cell_sizes
 from engine.model.texture import MAX_IMAGE_SIDE, ModelTexture, TextureImage, unique_image_names
@@ -139,7 +139,7 @@ def _embedded_gltf_images(path: Path) -> dict[str, bytes]:
     try:
         blob = path.read_bytes()
         if blob[:4] == struct.pack("<I", GLB_MAGIC):
-            document, embedded = _split_glb(blob, path, strict=False)
+            document, embedded = split_glb(blob, path, strict=False)
         else:
             document, embedded = json.loads(blob.decode("utf-8")), {}
         out: dict[str, bytes] = {}

@@ -48,17 +48,14 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from engine.errors import UserError
+from engine.formats.gltf_document import GLB_BIN, GLB_JSON, GLB_MAGIC, split_glb
 from engine.formats.gltf_read import (
     _TRIANGLES,
-    GLB_BIN,
-    GLB_JSON,
-    GLB_MAGIC,
     METRES_PER_MM,
     MODEL_VERTEX,
     GltfFileError,
     GltfMesh,
     _parse,
-    _split_glb,
     read_gltf,
 )
 from engine.outputs.gltf_buffer import GltfBuffer
@@ -472,7 +469,7 @@ def export_gltf(model: Model, path: str | Path, targets: Iterable[MorphTarget] =
     document, data = gltf_document(model, targets, target_normals=target_normals, skeleton=skeleton)
     if suffix == ".glb":
         blob = glb_bytes(document, data)
-        mesh = _parse(path, *_split_glb(blob, path))
+        mesh = _parse(path, *split_glb(blob, path))
         atomic_write_bytes(path, blob)
         return mesh
     bin_path = path.with_suffix(".bin")

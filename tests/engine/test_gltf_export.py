@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, UserError
-from engine.formats.gltf_read import _quaternion_matrix as _matrix
+from engine.formats.gltf_document import quaternion_matrix as _matrix
 from engine.model.cells import cells_to_triangles
 from engine.outputs.gltf_export import (
     METRES_PER_MM,
