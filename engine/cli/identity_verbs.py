@@ -14,6 +14,13 @@ def add_verbs(verbs: Any) -> None:
                                           "between two identities), its rig carried over; --list shows them")
     p.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="an identity parameter, e.g. sex=1, age=60, nose-scale-horiz-decr-incr=0.4 (repeat)")
+    p.add_argument("--random", action="store_true",
+                   help="draw a plausible adult from the population model (docs/identity.md); needs --seed")
+    p.add_argument("--seed", metavar="N", help="with --random: which person, a whole number 0 … 4294967295 "
+                                               "(the same seed draws the same person)")
+    p.add_argument("--sex", metavar="female|male", help="with --random: draw a woman or a man")
+    p.add_argument("--age", metavar="YEARS|LOW-HIGH", help="with --random: this age, or an age drawn from this "
+                                                           "range (default 18-75)")
     p.add_argument("--from", dest="source", metavar="A.xml", help="morph: the identity at T = 0 (a model file)")
     p.add_argument("--to", dest="target", metavar="B.xml", help="morph: the identity at T = 1 (a model file)")
     p.add_argument("--at", type=float, default=None, metavar="T", help="morph: where between A and B, 0 … 1")
@@ -47,16 +54,61 @@ def run_identity(args: argparse.Namespace) -> int:
     morphing = [args.source, args.target, args.at]
     if any(v is not None for v in morphing) and not all(v is not None for v in morphing):
         raise IdentityError("a morph needs all of --from A.xml, --to B.xml and --at T")
-    identity = _morph(args) if args.source is not None else _identity({})
-    identity = identity.with_values(_assignments(args.set))
+    if args.random:
+        if args.source is not None:
+            raise IdentityError("--random draws a new person; it cannot also morph (--from, --to, --at)")
+        identity = _random(args)
+    else:
+        for option in ("seed", "sex", "age"):
+            if getattr(args, option) is not None:
+                raise IdentityError(f"--{option} chooses what --random draws: give --random too (or --set "
+                                    f"{'sex=0' if option == 'sex' else 'age=40' if option == 'age' else 'NAME=VALUE'})")
+        identity = _morph(args) if args.source is not None else _identity({})
+        identity = identity.with_values(_assignments(args.set))
     from engine.formats.model_files import save_model
     from engine.identity import make_identity_head
 
     head = make_identity_head(identity)
+    if identity.drawn is not None:
+        head.name = f"random-person-{identity.drawn['seed']}"
     written = save_model(head, args.output)
-    values = ", ".join(f"{k}={v:g}" for k, v in identity.values.items()) or "the default head"
+    if identity.drawn is not None:
+        values = (f"drawn from population model {identity.drawn['population']} with seed {identity.drawn['seed']}: "
+                  f"sex={identity.value('sex'):g}, age={identity.value('age'):g}, {len(identity.values)} values")
+    else:
+        values = ", ".join(f"{k}={v:g}" for k, v in identity.values.items()) or "the default head"
     print(f"{written}: {head.name} ({values}); rig carried over, {len(head.parameters)} parameters")
     return 0
+
+
+def _random(args: argparse.Namespace) -> Any:
+    """The person ``--random --seed N [--sex …] [--age …] [--set …]`` asks for."""
+    from engine.identity import IdentityError
+    from engine.identity.population import MAX_SEED, draw_identity
+
+    if args.seed is None:
+        raise IdentityError("--random needs --seed N (a whole number 0 … 4294967295), so the same person can be "
+                            "drawn again")
+    text = args.seed.strip()
+    if not text.isdigit() or len(text) > 10 or int(text) > MAX_SEED:
+        shown = text if len(text) <= 20 else f"{text[:20]}… ({len(text)} characters)"
+        raise IdentityError(f"--seed must be a whole number from 0 to {MAX_SEED}, not '{shown}'")
+    fixed = _assignments(args.set)
+    ages = None
+    if args.age is not None:
+        low, dash, high = args.age.strip().partition("-")
+        try:
+            numbers = (float(low), float(high) if dash else float(low))
+        except ValueError:
+            raise IdentityError(f"--age must be YEARS or LOW-HIGH (e.g. 40 or 20-35), not '{args.age[:20]}'") \
+                from None
+        if not dash:
+            if "age" in fixed and fixed["age"] != numbers[0]:
+                raise IdentityError(f"--age {args.age} contradicts --set age={fixed['age']:g}")
+            fixed["age"] = numbers[0]
+        else:
+            ages = numbers
+    return draw_identity(int(text), sex=args.sex, ages=ages, fixed=fixed)
 
 
 def _assignments(items: list[str]) -> dict[str, float]:

@@ -162,13 +162,16 @@ class Identity(IdentityRecord):
             raise IdentityError("the ancestry shares african, asian and caucasian cannot all be 0")
         order = {p.name: k for k, p in enumerate(identity_parameters())}
         super().__init__(dict(sorted(checked.items(), key=lambda kv: order[kv[0]])), source_version())
+        self.drawn: dict[str, str] | None = None
+        """How a random identity was drawn (:func:`engine.identity.population.draw_identity`): the
+        ``population`` model's version, the ``seed`` and what was ``given``; None for one not drawn."""
 
     def value(self, name: str) -> float:
         """The value of ``name`` (its default when not set)."""
         return self.values.get(name, identity_parameter(name).default)
 
     def with_values(self, values: Mapping[str, float]) -> Identity:
-        """A copy with some values changed."""
+        """A copy with some values changed (no longer a draw: ``drawn`` is not kept)."""
         return Identity({**self.values, **values})
 
     def ancestry(self) -> dict[str, float]:
