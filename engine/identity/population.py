@@ -53,6 +53,7 @@ import random
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from functools import cache
+from typing import Any
 
 import numpy as np
 
@@ -156,6 +157,65 @@ def draw_identities(count: int, seed: int, sex: str | None = None, ages: tuple[f
         chosen.append(best)
         nearest = np.minimum(nearest, [_distance(shapes[best], s) for s in shapes])
     return [people[k] for k in chosen]
+
+
+def random_levels(table: Mapping[str, Any]) -> list[dict[str, Any]]:
+    """A stimulus design's random people, ``{random = N, seed = S}`` (docs/stimuli.md), as N levels of one person
+    each, ``{random = 1, seed = s, population = 1, …}``; what else the table gives is kept in every level.
+
+    The table may give ``apart = true`` (the N furthest apart of APART_POOL × N draws), ``sex = "female"``
+    or ``"male"``, ``age`` (years, or ``[LOW, HIGH]``), ``population`` (1) and any identity parameter's
+    value. A mistake is an :class:`IdentityError` saying what is wrong.
+    """
+    count = table.get("random")
+    apart = table.get("apart", False)
+    if not isinstance(apart, bool):
+        raise IdentityError("apart must be true or false")
+    request = level_request(table)
+    people = draw_identities(count, request.seed, request.sex, request.ages, request.fixed, apart,
+                             request.population) if isinstance(count, int) else []
+    if not people:
+        raise IdentityError(f"random must be the number of people, 1 to {MAX_COUNT}, not {_shown(count)}")
+    given = {k: v for k, v in table.items() if k not in ("random", "seed", "apart", "population")}
+    return [{"random": 1, "seed": int(p.drawn["seed"]) if p.drawn else 0, "population": request.population,
+             **given} for p in people]
+
+
+def level_request(level: Mapping[str, Any]) -> DrawRequest:
+    """The draw a random-identity level or table asks for (its ``random`` count aside), checked."""
+    known = {"random", "seed", "apart", "population", "sex", "age"}
+    fixed: dict[str, float] = {}
+    for name, value in level.items():
+        if name in known - {"age"}:
+            continue
+        if name == "age" and isinstance(value, list):
+            continue
+        if isinstance(value, bool) or not isinstance(value, int | float):
+            raise IdentityError(f"{name} must be a number, not {_shown(value)}")
+        fixed[name] = float(value)
+    age = level.get("age")
+    ages = None
+    if isinstance(age, list):
+        if len(age) != 2 or not all(isinstance(a, int | float) and not isinstance(a, bool) for a in age):
+            raise IdentityError(f"an age range is two numbers of years, [LOW, HIGH], not {_shown(age)}")
+        ages = (float(age[0]), float(age[1]))
+    sex = level.get("sex")
+    if isinstance(sex, int | float) and not isinstance(sex, bool):
+        fixed["sex"], sex = float(sex), None
+    return check_request(DrawRequest(level.get("seed"), sex, ages, fixed,   # type: ignore[arg-type]
+                                     level.get("population", POPULATION)))
+
+
+def level_identity(level: Mapping[str, Any]) -> Identity:
+    """The person of one random-identity level ``{random = 1, seed = s, …}``."""
+    if level.get("random") != 1 or isinstance(level.get("random"), bool):
+        raise IdentityError("a level of one random person has random = 1")
+    return _identity(level_request(level))
+
+
+def is_random_level(level: object) -> bool:
+    """Whether a design's identity level (or table) asks for random people (``random = …``)."""
+    return isinstance(level, Mapping) and "random" in level
 
 
 def check_request(request: DrawRequest) -> DrawRequest:

@@ -226,7 +226,7 @@ def _known_level(name: str, value: Any, factors: dict[str, list[Any]], index: di
     """Refuse ``value`` of factor ``name`` in the ``number``-th of the ``[[tables]]`` (rows or blocks) unless
     it is one of the factor's levels: looked up in ``index``, so a design of many rows takes time in
     proportion to its length. The error names the line in that table."""
-    if name in factors and _key(value) in index[name]:
+    if name in factors and _key(_one_person(name, value)) in index[name]:
         return
     line = where.line_in_table(tables, number, name)
     if name not in factors:
@@ -253,14 +253,42 @@ def _cross(factors: dict[str, list[Any]]) -> list[dict[str, Any]]:
 
 
 def _levels(name: str, values: Any, where: Locator, folder: Path) -> list[Any]:
+    if _random_people(name, values):
+        values = [values]                          # identity = {random = 10, seed = 7}: ten random people
     if not isinstance(values, list) or not values:
         raise where.error(name, f"factor '{name}' must be a list of its levels, e.g. {name} = [...]")
     if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name):
         raise where.error(name, f"factor name '{name}': letters, digits and _ only")
-    checked = [_level(name, value, where, folder) for value in values]
+    checked = [level for value in values for level in (_people(name, value, where) if _random_people(name, value)
+                                                       else [_level(name, value, where, folder)])]
     if len({repr(v) for v in checked}) != len(checked):
         raise where.error(name, f"factor '{name}' lists a level twice")
     return checked
+
+
+def _random_people(name: str, value: Any) -> bool:
+    """Whether ``value`` of factor ``name`` asks for random people (``{random = 10, seed = 7}``, docs/stimuli.md)."""
+    return name in ("identity", "identity_b") and isinstance(value, dict) and "random" in value
+
+
+def _people(name: str, table: dict[str, Any], where: Locator) -> list[dict[str, Any]]:
+    """A random-people table as its levels, one person each (``{random = 1, seed = 8, population = 1}``)."""
+    from engine.identity import IdentityError
+    from engine.identity.population import random_levels
+
+    try:
+        return random_levels(table)
+    except IdentityError as exc:
+        raise where.error(name, f"'{name}' random people: {exc.message}") from None
+
+
+def _one_person(name: str, value: Any) -> Any:
+    """A row's or block's level as the factor's levels hold it (a random person with its population model)."""
+    if _random_people(name, value) and "population" not in value:
+        from engine.identity.population import POPULATION
+
+        return {**value, "population": POPULATION}
+    return value
 
 
 def _level(name: str, value: Any, where: Locator, folder: Path) -> Any:

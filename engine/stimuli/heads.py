@@ -44,7 +44,11 @@ def head_key(levels: dict[str, Any]) -> str:
 
 
 def _identity_values(design: Design, level: Any) -> tuple[tuple[str, float], ...]:
-    """An identity level as sorted (name, value) pairs: a table, or the identity of a model file."""
+    """An identity level as sorted (name, value) pairs: a table, a random person, or the identity of a model file."""
+    from engine.identity.population import is_random_level, level_identity
+
+    if is_random_level(level):                 # {random = 1, seed = 8, population = 1}: drawn again, the same
+        return tuple(sorted(level_identity(level).values.items()))
     if isinstance(level, str):
         record = _model(str(design.extra_files[level])).identity
         return tuple(sorted(record.values.items())) if record is not None else ()
