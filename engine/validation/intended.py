@@ -97,10 +97,18 @@ def read_intended(path: str | Path) -> dict[Path, Intended]:
                 raise UserError(f"'{emotion_text}' is no emotion: use one of {', '.join(EMOTIONS)} "
                                 "or a library expression (Happy, Anger …)", file=path, line=line)
         landmarks = (row.get("landmarks") or "").strip()
-        out[(path.parent / name).resolve()] = Intended(
+        out[_named_file(path, name, line)] = Intended(
             emotion=emotion, expression=emotion_text, identity=(row.get("identity") or "").strip(),
-            landmarks=(path.parent / landmarks).resolve() if landmarks else None)
+            landmarks=_named_file(path, landmarks, line) if landmarks else None)
     return out
+
+
+def _named_file(table: Path, name: str, line: int) -> Path:
+    """A file the table names, relative to the table's folder (a NUL byte or an unusable name refused)."""
+    try:
+        return (table.parent / name).resolve()
+    except (ValueError, OSError) as exc:
+        raise UserError(f"'{name[:60]}' is no usable file name ({exc})", file=table, line=line) from None
 
 
 def read_set(folder: str | Path) -> list[SetFile]:

@@ -29,6 +29,7 @@ from engine.model import Model
 from engine.validation.measures import CLOSED_APERTURE
 
 UPPER, LOWER = "2.2", "2.3"
+MAX_COORDINATE_MM = 1e6
 CLOSED_GAP_MM = 1.0
 """An intended gap of at most this is a closure (the default head: 2.6 mm at rest, 0.2–0.4 mm at /p/)."""
 
@@ -103,6 +104,9 @@ def read_landmarks_track(path: str | Path) -> LipTrack:
             raise UserError("a row with a missing or non-numeric value", file=path, line=line) from None
         if not all(np.isfinite([t, *xyz])) or (times and t < times[-1]):
             raise UserError("times must be finite and must not go back; coordinates finite", file=path, line=line)
+        if max(abs(c) for c in xyz) > MAX_COORDINATE_MM:
+            raise UserError(f"a coordinate beyond ±{MAX_COORDINATE_MM:g} mm: not a face's landmark", file=path,
+                            line=line)
         times.append(t)
         gaps.append(float(np.linalg.norm(np.subtract(xyz[:3], xyz[3:]))))
     if not times:
