@@ -29,7 +29,7 @@ from engine.errors import UserError
 #: The engine's own verb modules, in the order ``--help`` lists them; each has ``add_verbs(verbs)``.
 VERB_MODULES = ("model_verbs", "command_verbs", "speech_verbs", "stimuli_verbs", "identity_verbs", "export_verbs",
                 "config_verbs", "mocap_verbs", "capture_verbs", "serve_verbs", "photofit_verbs", "web_verbs",
-                "validate_verbs")
+                "validate_verbs", "study_verbs")
 #: System errors that a user's own file name causes (too long, a folder where a file belongs):
 #: bad input, status 2, like every other mistake in the arguments.
 USER_ERRNOS = frozenset({errno.ENAMETOOLONG, errno.EISDIR, errno.ENOTDIR})
