@@ -145,6 +145,9 @@ def _identification(analysis: Analysis) -> None:
         for emotion in [*rows, ALL]:
             analysis.recognition.append(_recognition_row(condition, emotion, trials, pooled_hu, per_participant))
     analysis.conditions = [c for c in CONDITION_ORDER if c in analysis.confusion]
+    rank = {c: k for k, c in enumerate(CONDITION_ORDER)}
+    analysis.recognition.sort(key=lambda r: rank[(r["source"], r["presentation"])])
+    analysis.hu.sort(key=lambda r: (_natural(r["participant"]), rank[(r["source"], r["presentation"])]))
 
 
 def _recognition_row(condition: tuple[str, str], emotion: str, trials: list[Trial],
@@ -191,6 +194,9 @@ def _ratings(analysis: Analysis) -> None:
                 analysis.ratings.append({"scale": scale, "source": condition[0], "presentation": condition[1],
                                          "emotion": emotion, "trials": n, "mean": mean, "sd": sd, "ci_low": low,
                                          "ci_high": high})
+    rank = {c: k for k, c in enumerate(CONDITION_ORDER)}
+    scales = analysis.results.scales
+    analysis.ratings.sort(key=lambda r: (scales.index(r["scale"]), rank[(r["source"], r["presentation"])]))
 
 
 def _contrasts(analysis: Analysis) -> None:

@@ -102,9 +102,17 @@ def confusion_figure(analysis: Analysis) -> bytes:
     conditions = [c for c in analysis.conditions if c in analysis.confusion]
     columns = analysis.responses
     rows_most = max(len(analysis.confusion[c][0]) for c in conditions)
-    fig, axes = _figure(min(4.6 * len(conditions), 18.0), 1.6 + 0.42 * rows_most + 0.12 * len(columns),
-                        len(conditions))
-    for ax, condition in zip(axes, conditions, strict=True):
+    across = min(2, len(conditions))
+    down = -(-len(conditions) // across)
+    from matplotlib.figure import Figure
+
+    cell = 0.5 + 0.5 * len(columns)
+    fig = Figure(figsize=(1.4 + across * cell, down * (1.4 + 0.42 * rows_most + 0.1 * len(columns))), dpi=100,
+                 layout="constrained")
+    axes = fig.subplots(down, across, squeeze=False).ravel()
+    for ax in axes[len(conditions):]:
+        ax.set_visible(False)
+    for ax, condition in zip(axes, conditions, strict=False):
         rows, matrix = analysis.confusion[condition]
         counts = np.array(matrix, dtype=float)
         shares = counts / np.maximum(counts.sum(axis=1, keepdims=True), 1)

@@ -171,7 +171,7 @@
       const target = document.body;
       target.innerHTML = `<form id="ap-participant" class="ap-page" style="margin: 15vh auto;">` +
         `<p><label>Participant number or code <input name="participant" autofocus required maxlength="64" ` +
-        `pattern="[A-Za-z0-9_-]+"></label></p><p><button class="jspsych-btn" type="submit">Start</button></p></form>`;
+        `pattern="[A-Za-z0-9_\\-]+"></label></p><p><button class="jspsych-btn" type="submit">Start</button></p></form>`;
       target.querySelector("form").addEventListener("submit", (event) => {
         event.preventDefault();
         const value = target.querySelector("input").value.trim();
