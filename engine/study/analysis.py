@@ -100,6 +100,10 @@ def analyse(results: Results, min_attention: float = 1.0) -> Analysis:
     return analysis
 
 
+def _mean(values: list[float]) -> float:
+    return statistics.fmean(values) if values else math.nan
+
+
 def _natural(name: str) -> tuple[int, int | str]:
     return (0, int(name)) if name.isdigit() else (1, name)
 
@@ -128,7 +132,7 @@ def _by_condition(trials: Iterable[Trial]) -> dict[tuple[str, str], list[Trial]]
 
 def _identification(analysis: Analysis) -> None:
     columns = analysis.responses
-    for condition, trials in _by_condition(analysis.included).items():
+    for condition, trials in _by_condition(t for t in analysis.included if t.response).items():
         rows = categories_of([t.intended for t in trials])
         pooled = confusion_counts([(t.intended, t.response) for t in trials], rows, columns)
         analysis.confusion[condition] = (rows, pooled)
@@ -167,10 +171,11 @@ def _recognition_row(condition: tuple[str, str], emotion: str, trials: list[Tria
                            "participant_mean": statistics.fmean(rates) if rates else math.nan,
                            "participant_sd": statistics.stdev(rates) if len(rates) > 1 else math.nan}
     if emotion == ALL:
-        hus = [statistics.fmean(v["hu"] for v in table.values() if v["stimuli"]) for table in per_participant.values()]
-        pcs = [statistics.fmean(v["pc"] for v in table.values() if v["stimuli"]) for table in per_participant.values()]
+        hus = [_mean([v["hu"] for v in table.values() if v["stimuli"]]) for table in per_participant.values()]
+        pcs = [_mean([v["pc"] for v in table.values() if v["stimuli"]]) for table in per_participant.values()]
+        hus, pcs = [x for x in hus if not math.isnan(x)], [x for x in pcs if not math.isnan(x)]
         pooled = [v for v in pooled_hu.values() if v["stimuli"]]
-        pooled_values = (statistics.fmean(v["hu"] for v in pooled), statistics.fmean(v["pc"] for v in pooled))
+        pooled_values = (_mean([v["hu"] for v in pooled]), _mean([v["pc"] for v in pooled]))
     else:
         hus = [table[emotion]["hu"] for table in per_participant.values() if table[emotion]["stimuli"]]
         pcs = [table[emotion]["pc"] for table in per_participant.values() if table[emotion]["stimuli"]]
@@ -223,6 +228,9 @@ def _contrasts(analysis: Analysis) -> None:
 
 def _contrast_row(measure: str, ta: list[Trial], tb: list[Trial], analysis: Analysis, a: tuple[str, str],
                   b: tuple[str, str], emotion: str) -> dict[str, Any] | None:
+    if measure == "hit_rate":                   # the answered trials (a trial with no answer is in no matrix)
+        ta, tb = [t for t in ta if t.response], [t for t in tb if t.response]
+
     def value(trials: list[Trial]) -> float:
         if measure == "hit_rate":
             return sum(t.response == t.intended for t in trials) / len(trials) if trials else math.nan

@@ -199,6 +199,8 @@ def _trial(row: dict[str, str], header: list[str], results: Results, name: str, 
             raise fail(f"{column}: more than 200 characters")
     if row["presentation"] not in ("static", "dynamic"):
         raise fail(f"presentation {row['presentation'][:40]!r} is not static or dynamic")
+    if row["source"] not in ("synthetic", "human"):
+        raise fail(f"source {row['source'][:40]!r} is not synthetic or human")
     ratings = {}
     for scale in results.scales:
         text = row.get(f"rating_{scale}", "").strip()
@@ -208,7 +210,7 @@ def _trial(row: dict[str, str], header: list[str], results: Results, name: str, 
     levels = {c: row[c] for c in header if c not in known and not c.startswith(("rating_", "ap_"))
               and c not in _NOT_LEVELS}
     rt_text = row["rt"].strip()
-    return Trial(participant, number, row["phase"], row["stimulus"].strip(), row["source"].strip(),
+    return Trial(participant, number, row["phase"], row["stimulus"].strip(), row["source"],
                  row["presentation"], row["intended"].strip(), row["response"].strip(),
                  _number(rt_text, "rt", fail, MAX_RT_MS) if rt_text else None, row.get("expected", "").strip(),
                  ratings, levels, row.get("block_order", "").strip(), name, line)

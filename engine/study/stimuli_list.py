@@ -242,9 +242,10 @@ def _human_spec(table: Path, line: int, row: dict[str, str], extra: list[str], p
     if (presentation == "static") != (suffix in IMAGE_SUFFIXES):
         raise fail(f"a {presentation} stimulus must be a {'picture' if presentation == 'static' else 'video'}")
     text = row["emotion"].strip().lower()
-    emotion = re.sub(r"[^a-z0-9_]+", "_", EXPRESSION_CLASSES.get(text, text)).strip("_")[:40]
-    if not emotion or not emotion[0].isalpha():
-        raise fail(f"emotion {row['emotion'][:40]!r} names no emotion")
+    if not re.match(r"^[a-z][a-z0-9 _-]{0,39}$", text):
+        raise fail(f"emotion {row['emotion'][:40]!r} names no emotion (a word such as happy, or a library "
+                   "expression such as Happy)")
+    emotion = re.sub(r"[^a-z0-9_]+", "_", EXPRESSION_CLASSES.get(text, text)).strip("_")
     ident = (row.get("id") or "").strip() or f"human-{len(used) + 1:03d}"
     if not _ID.match(ident):
         raise fail(f"id {ident[:40]!r} is not letters, digits, '-' or '_'")

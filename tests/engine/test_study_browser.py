@@ -83,12 +83,12 @@ def built(tmp_path_factory):
 
 
 def _answer(url: str, document: dict, policy, participant: str | None = None, download: Path | None = None,
-            shots: Path | None = None) -> dict:
+            shots: Path | None = None, after_the_end: bool = False) -> dict:
     with Browser() as chromium:
         if download is not None:
             chromium.call("Browser.setDownloadBehavior", {"behavior": "allow", "downloadPath": str(download)})
         page = chromium.open(url, SIZE)
-        end = Participant(page, document, policy, shots).run(participant)
+        end = Participant(page, document, policy, shots, after_the_end).run(participant)
         return {"page": page, "end": end, "problems": page.problems(), "requested": page.requested(),
                 "rows": page.evaluate("window.APStudy.csv()"),
                 "all_trials_csv": page.evaluate("window.APStudy.jsPsych.data.get().csv()"),
@@ -283,3 +283,54 @@ def _report_picture(report: Path) -> None:
         page = chromium.open((report / "report.html").as_uri(), (1180, 1500))
         page.wait_for("document.readyState === 'complete' && [...document.images].every((i) => i.complete)")
         Image.fromarray(page.screenshot((1180, 1500))).save(SHOTS / "study-report.png")
+
+
+LIVE_DESIGN = """name = "tiny-live"
+seed = 5
+
+[stimuli]
+set = "set"
+
+[conditions]
+presentation = ["dynamic"]
+dynamic = "live"
+
+[procedure]
+tasks = ["identification"]
+fixation_ms = 0
+"""
+
+
+def test_the_live_player_condition_plays_each_stimulus_and_times_the_answer_on_its_clock(built):
+    """dynamic = "live": the web player (web-export --stimuli's site, in live/) draws each stimulus in the trial;
+    rt is where the heard sound was at the key press, and the words are the player's word events."""
+    folder, _, _ = built
+    (folder / "live.toml").write_text(LIVE_DESIGN)
+    made = run("study", folder / "live.toml", "-o", folder / "live-study")
+    assert made.returncode == 0, made.stderr
+    study = folder / "live-study"
+    document = json.loads((study / "study.json").read_text())
+    assert document["live"] and (study / "live" / "player.js").is_file() and (study / "live" / "stimuli.json").is_file()
+    assert '"three": "./live/three/build/three.module.min.js"' in (study / "index.html").read_text()
+    assert not (study / "hosts" / "cognition").exists()
+    lab = subprocess.Popen([sys.executable, str(study / "run-lab.py"), "--port", "0", "--no-browser", "--participant",
+                            "1"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        url = lab.stdout.readline().split(" at ", 1)[1].split(" ", 1)[0]
+        session = _answer(url, document, intended, after_the_end=True)
+    finally:
+        lab.terminate()
+        lab.wait(timeout=30)
+    assert session["problems"] == []
+    assert outside(session["requested"], url.split("/index.html")[0], lambda u: u.startswith("blob:")) == []
+    rows = _rows((study / "data" / "tiny-live_1.csv").read_bytes().decode("utf-8"))
+    assert sorted(r["stimulus"] for r in rows) == ["0001", "0002", "0003"]
+    for row in rows:
+        assert row["media"] == "live" and row["correct"] == "1" and row["sound"] == "1" and int(row["frames"]) >= 1
+        assert float(row["play_t"]) <= float(row["first_frame_t"]) <= float(row["response_t"])
+        assert float(row["speech_onset_t"]) == pytest.approx(float(row["clip_start_t"]) + float(row["speech_onset_ms"]),
+                                                             abs=0.002)
+        words = json.loads(row["word_onsets"])            # every word shown, in time, before the key
+        assert [w["word"] for w in words] == ["Moi"]
+        assert float(row["play_t"]) <= words[0]["t"] <= float(row["ended_t"]) <= float(row["response_t"])
+        assert float(row["rt"]) >= float(row["duration_ms"]) - 2.0

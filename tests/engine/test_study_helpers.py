@@ -66,6 +66,7 @@ STATE = """(() => {
           form: Boolean(f), task: q ? q.dataset.task || null : null, ask: q ? q.dataset.ask || null : null,
           expected: q ? q.dataset.expected || null : null, stimulus: s ? s.dataset.stimulus : null,
           presentation: s ? s.dataset.presentation : null, state: s ? s.dataset.state : null,
+          ended: s ? s.dataset.ended === "1" : false,
           done: (document.body && document.body.dataset.apDone) || null, error: e ? e.textContent : null};
 })()"""
 
@@ -116,8 +117,11 @@ def always_happy(state: dict[str, Any], study: dict[str, Any]) -> str:
 class Participant:
     """Answers the study open in ``page`` by key presses, one per question or page, until its debrief."""
 
-    def __init__(self, page: Any, study: dict[str, Any], policy: Policy, shots: Path | None = None) -> None:
+    def __init__(self, page: Any, study: dict[str, Any], policy: Policy, shots: Path | None = None,
+                 after_the_end: bool = False) -> None:
         self.page = page
+        self.after_the_end = after_the_end
+        """Answer a dynamic stimulus only once it has played to its end (else as soon as it shows)."""
         self.study = study
         self.policy = policy
         self.keys = {c["value"]: c["key"] for c in study["choices"]}
@@ -169,6 +173,8 @@ class Participant:
             return " "
         task = state.get("task")
         if not task or state.get("state") not in ("showing", "hidden"):
+            return None
+        if self.after_the_end and state.get("presentation") == "dynamic" and not state.get("ended"):
             return None
         answer = self.policy(state, self.study)
         if task == "identification":

@@ -102,7 +102,7 @@ var jsPsychApStudyTrial = (function (jspsych) {
       if (!stopped) video.requestVideoFrameCallback(onFrame);
     };
     video.requestVideoFrameCallback(onFrame);
-    video.addEventListener("ended", () => { ended_t = performance.now(); }, { once: true });
+    video.addEventListener("ended", () => { ended_t = performance.now(); stage.dataset.ended = "1"; }, { once: true });
     const play_t = performance.now();
     try {
       await video.play();
@@ -162,16 +162,18 @@ var jsPsychApStudyTrial = (function (jspsych) {
     const player = new ArtificialPerson(canvas);
     const seen = { play_t: null, ended_t: null, words: [] };
     player.addEventListener("play", (e) => { if (seen.play_t === null) seen.play_t = e.detail.t; });
-    player.addEventListener("word", (e) => seen.words.push({ word: e.detail.word, start_ms: e.detail.start_ms,
-                                                             t: e.detail.t }));
-    player.addEventListener("ended", (e) => { seen.ended_t = e.detail.t; });
+    player.addEventListener("word", (e) => {
+      seen.words.push({ word: e.detail.word, start_ms: e.detail.start_ms, t: e.detail.t });
+      stage.dataset.words = String(seen.words.length);
+    });
+    player.addEventListener("ended", (e) => { seen.ended_t = e.detail.t; stage.dataset.ended = "1"; });
     await player.load(new URL(listed.animation, base).href);
     const context = player.audioContext;
     if (context.state !== "running") {
       await Promise.race([context.resume().catch(() => {}), new Promise((r) => setTimeout(r, 300))]);
       if (context.state !== "running") await clickToStart(stage, () => context.resume());
     }
-    await player.play();
+    const sounding = await player.play();
     const zeros = () => {
       const heard = player.timings.filter((f) => f.heard_ms !== null).map((f) => f.t - f.heard_ms);
       return heard.length ? heard : player.timings.map((f) => f.t - f.drawn_ms);
@@ -192,7 +194,7 @@ var jsPsychApStudyTrial = (function (jspsych) {
         return {
           play_t: seen.play_t, clip_start_t: zero, first_frame_t: player.timings.length ? player.timings[0].t : null,
           ended_t: seen.ended_t, frames: player.timings.length, dropped_frames: null,
-          sound: player.timings.some((f) => f.heard_ms !== null),
+          sound: sounding && context.state === "running",
           clock_spread_ms: z.length ? Math.max(...z) - Math.min(...z) : null,
           ...clipTimes(zero, clock), word_onsets: JSON.stringify(seen.words),
         };
