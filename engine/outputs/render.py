@@ -36,7 +36,11 @@ from typing import TYPE_CHECKING, Any, SupportsInt
 import numpy as np
 
 from engine.errors import UserError
+from engine.outputs.antialias import fxaa
 from engine.outputs.camera import VIEW_ANGLE, VIEWS, camera_pose, framed_points
+from engine.outputs.look_actors import OCCLUSION_ARRAY, dress_actor, set_antialias
+from engine.outputs.looks import Look, look_from
+from engine.outputs.occlusion import model_occlusion
 from engine.outputs.part_layout import PartLayout
 from engine.outputs.part_materials import colour_rgb, eye_colours, hex_rgb, is_eyeball, part_material
 from engine.outputs.png_file import write_png
@@ -60,7 +64,8 @@ BACKGROUND = ("#cfd1d4", "#eef0f2")   # bottom, top of a faint vertical gradient
 
 
 def render_model(model: Model, values: Mapping[str, float] | None = None, view: str = "front",
-                 size: tuple[int, int] = DEFAULT_SIZE, path: str | Path | None = None) -> np.ndarray:
+                 size: tuple[int, int] = DEFAULT_SIZE, path: str | Path | None = None,
+                 look: str | Look | None = None) -> np.ndarray:
     """Render one pose of ``model`` offscreen and return the picture.
 
     Parameters
@@ -78,6 +83,8 @@ def render_model(model: Model, values: Mapping[str, float] | None = None, view: 
         In pixels.
     path : file name, optional
         Also write the picture there as PNG (atomically).
+    look : a look's name, a :class:`~engine.outputs.looks.Look` or its settings, optional
+        How the head is lit and shaded (:mod:`engine.outputs.looks`; default ``portrait``).
 
     Returns
     -------
@@ -95,7 +102,7 @@ def render_model(model: Model, values: Mapping[str, float] | None = None, view: 
     if path is not None and Path(path).suffix.lower() != ".png":
         raise UserError("the picture must be written as .png", file=path)
     positions = model.deform(values)
-    with FrameRenderer(model, size=size, view=view) as renderer:
+    with FrameRenderer(model, size=size, view=view, look=look) as renderer:
         image = renderer.render(positions)
     if path is not None:
         write_png(path, image)
@@ -114,10 +121,13 @@ class FrameRenderer:
             for values in frames:                       # values in tree order
                 image = renderer.render(head.deformer().deform(values))
 
-    ``antialias``: ``True`` (default) draws with 8× multisampling, exactly as
-    :func:`render_model` does; ``False`` draws without it, which on a
-    software OpenGL (Mesa llvmpipe, no GPU) costs about a third as much per
-    frame, at the price of stair-stepped outlines and broken thin eyelashes.
+    ``look`` (:mod:`engine.outputs.looks`): the lights, shading, occlusion,
+    anti-aliasing method and background; default ``portrait``. ``antialias``:
+    ``True`` (default) smooths the edges as the look says, exactly as
+    :func:`render_model` does — FXAA for ``portrait`` and ``flat``, 8×
+    multisampling for ``legacy``; ``False`` draws without it (on a software
+    OpenGL, Mesa llvmpipe, 8× multisampling costs about three times the rest of
+    the drawing, FXAA a few per cent: docs/looks.md).
 
     The camera frames the model's rest pose (as in :func:`render_model`), so
     every pose is seen from the same place. The scene is plain VTK: pyvista's
@@ -125,13 +135,15 @@ class FrameRenderer:
     """
 
     def __init__(self, model: Model, size: tuple[int, int] = (640, 480), view: str = "front",
-                 antialias: bool = True) -> None:
+                 antialias: bool = True, look: str | Look | None = None) -> None:
         if view not in VIEWS:
             raise UserError(f"unknown view '{view}' (use {', '.join(VIEWS)})")
         self.width, self.height = check_size(size)
         self.model = model
         self.view = view
         self.antialias = bool(antialias)
+        self.look = look_from(look)
+        self._fxaa = self.antialias and self.look.antialias == "fxaa"      # after the read-back: _grab
         self._layout = PartLayout(model)
         self._window: vtkRenderWindow | None = None
         self._meshes: list[_MeshArrays] = []
@@ -142,7 +154,7 @@ class FrameRenderer:
         self._vtk_to_numpy = vtk_to_numpy
         self._pixels = vtkUnsignedCharArray()
         self._window, self._meshes = _build_scene(model, self._layout, view, self.width, self.height,
-                                                  self.antialias)
+                                                  self.antialias, self.look)
 
     # -- use ---------------------------------------------------------------
     def render(self, positions: np.ndarray) -> np.ndarray:
@@ -165,6 +177,8 @@ class FrameRenderer:
         window.Render()
         window.GetPixelData(0, 0, self.width - 1, self.height - 1, 1, self._pixels, 0)
         image = self._vtk_to_numpy(self._pixels).reshape(self.height, self.width, -1)
+        if self._fxaa:
+            return fxaa(image[::-1, :, :3])
         return np.ascontiguousarray(image[::-1, :, :3])
 
     # -- lifetime ------------------------------------------------------------
@@ -198,7 +212,7 @@ def check_size(size: Iterable[SupportsInt]) -> tuple[int, int]:
 
 
 def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height: int,
-                 antialias: bool) -> tuple[vtkRenderWindow, list[_MeshArrays]]:
+                 antialias: bool, look: Look) -> tuple[vtkRenderWindow, list[_MeshArrays]]:
     """An offscreen render window with :func:`scene_renderer`'s scene in it, and anti-aliasing.
 
     Returns the window and, per part, the VTK points and normals arrays with
@@ -206,17 +220,17 @@ def _build_scene(model: Model, layout: PartLayout, view: str, width: int, height
     """
     from vtkmodules.vtkRenderingCore import vtkRenderWindow
 
-    renderer, meshes = scene_renderer(model, layout, view, width, height)
+    renderer, meshes = scene_renderer(model, layout, view, width, height, look, antialias=False)
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
-    window.SetMultiSamples(8 if antialias else 0)
+    set_antialias(window, renderer, look, antialias)
     window.SetSize(width, height)
     window.AddRenderer(renderer)
     return window, meshes
 
 
-def scene_renderer(model: Model, layout: PartLayout, view: str, width: int,
-                   height: int) -> tuple[Any, list[_MeshArrays]]:
+def scene_renderer(model: Model, layout: PartLayout, view: str, width: int, height: int,
+                   look: str | Look | None = None, antialias: bool = True) -> tuple[Any, list[_MeshArrays]]:
     """A VTK renderer with the background, one actor per part (at the rest pose),
     lights and the camera of ``view`` for a ``width`` × ``height`` picture, to put
     in a render window of one's own (an on-screen one: ``serve --window``).
@@ -224,46 +238,36 @@ def scene_renderer(model: Model, layout: PartLayout, view: str, width: int,
     Returns the renderer and, per part, the VTK points and normals arrays with
     writable numpy views on them (:func:`copy_pose` fills them).
 
-    The settings are those pyvista's ``Plotter`` and ``add_mesh`` used to
-    make (the pictures are identical to the pixel), including one quirk:
-    parts coloured per vertex keep pyvista's default colour, light blue, as
-    their specular colour.
+    ``look`` (:mod:`engine.outputs.looks`; default ``portrait``) lights and shades
+    the parts; a look smoothed by FXAA has it switched on here while ``antialias``
+    (multisampling is the window's: :func:`_build_scene`). The ``legacy`` look's
+    settings are those pyvista's ``Plotter`` and ``add_mesh`` used to make (the
+    pictures are identical to the pixel), including one quirk: parts coloured per
+    vertex keep pyvista's default colour, light blue, as their specular colour.
     """
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL implementations of the classes below)
-    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
     from vtkmodules.vtkRenderingCore import vtkActor, vtkLight, vtkPolyDataMapper, vtkRenderer
 
+    look = look_from(look)
+    legacy = look.shading == "legacy"
     renderer = vtkRenderer()
-    renderer.SetBackground(*hex_rgb(BACKGROUND[0]))
-    renderer.SetBackground2(*hex_rgb(BACKGROUND[1]))
+    renderer.SetBackground(*hex_rgb(BACKGROUND[0] if legacy else look.background[0]))
+    renderer.SetBackground2(*hex_rgb(BACKGROUND[1] if legacy else look.background[1]))
     renderer.GradientBackgroundOn()
     renderer.AutomaticLightCreationOff()
     points, normals = layout.points_and_normals(model.vertices)
+    occlusion = None if legacy else model_occlusion(model, look.occlusion_radius_mm, layout)
     meshes: list[_MeshArrays] = []
     textures: dict[int, Any] = {}           # image index → its vtkTexture, shared by the meshes showing it
-    for k, (part, cells) in enumerate(zip(layout.parts, layout.cells, strict=True)):
+    for k, part in enumerate(layout.parts):
         start, stop = layout.slices[k]
         used = layout.used(k)
         colour_name, ambient, diffuse, specular, power = part_material(part, model.part_colors)
         colour = colour_rgb(colour_name, part_material(part)[0])
-        mesh = vtkPolyData()
-        point_array = numpy_to_vtk(points[start:stop], deep=True)
-        vtk_points = vtkPoints()
-        vtk_points.SetData(point_array)
-        mesh.SetPoints(vtk_points)
-        polys = vtkCellArray()
-        polys.ImportLegacyFormat(numpy_to_vtkIdTypeArray(np.ascontiguousarray(cells, dtype=np.int64), deep=True))
-        mesh.SetPolys(polys)
-        normal_array = numpy_to_vtk(normals[start:stop], deep=True)
-        normal_array.SetName("Normals")
-        mesh.GetPointData().SetNormals(normal_array)
-        uv = layout.uv[k]
-        if uv is not None and model.texture is not None:
-            coordinates = numpy_to_vtk(np.ascontiguousarray(uv, dtype=np.float32), deep=True)
-            coordinates.SetName("TextureCoordinates")
-            mesh.GetPointData().SetTCoords(coordinates)
+        mesh, point_array, normal_array = _part_mesh(layout, k, points[start:stop], normals[start:stop])
+        textured = layout.uv[k] is not None and model.texture is not None
+        if textured:
             rgb = None
         elif model.vertex_colors is not None:
             rgb = model.vertex_colors[used]
@@ -277,16 +281,19 @@ def scene_renderer(model: Model, layout: PartLayout, view: str, width: int,
         actor = vtkActor()
         actor.SetMapper(mapper)
         prop = actor.GetProperty()
-        if uv is not None and model.texture is not None:
+        texture = None
+        if textured and model.texture is not None:
             image = layout.image[k]
             if image not in textures:
                 textures[image] = vtk_texture(model.texture.images[image].pixels, 2 * max(width, height))
+                if not legacy:
+                    textures[image].UseSRGBColorSpaceOn()          # PBR: decoded to linear light
+            texture = textures[image]
             mapper.ScalarVisibilityOff()
-            actor.SetTexture(textures[image])
             prop.SetColor(1.0, 1.0, 1.0)              # the image's colours, lit
         elif rgb is None:
             mapper.ScalarVisibilityOff()
-            prop.SetColor(*colour)
+            prop.SetColor(*(colour if legacy else colour ** 2.2))   # PBR takes it as linear, vertex colours not
         else:
             colours = numpy_to_vtk(np.ascontiguousarray(rgb, dtype=np.uint8), deep=True)
             colours.SetName("Colors")
@@ -294,23 +301,63 @@ def scene_renderer(model: Model, layout: PartLayout, view: str, width: int,
             mapper.ScalarVisibilityOn()
             mapper.SetScalarModeToUsePointData()
             prop.SetColor(*_PYVISTA_DEFAULT_COLOUR)
-        prop.SetAmbient(ambient)
-        prop.SetDiffuse(diffuse)
-        prop.SetSpecular(specular)
-        prop.SetSpecularPower(power)
-        prop.SetPointSize(5.0)
-        prop.SetInterpolationToPhong()                  # uses our point normals
+        if legacy:
+            if texture is not None:
+                actor.SetTexture(texture)
+            prop.SetAmbient(ambient)
+            prop.SetDiffuse(diffuse)
+            prop.SetSpecular(specular)
+            prop.SetSpecularPower(power)
+            prop.SetPointSize(5.0)
+            prop.SetInterpolationToPhong()              # uses our point normals
+        else:
+            assert occlusion is not None
+            values = numpy_to_vtk(np.ascontiguousarray(occlusion[start:stop], dtype=np.float32), deep=True)
+            values.SetName(OCCLUSION_ARRAY)
+            mesh.GetPointData().AddArray(values)
+            dress_actor(actor, look, part, texture)
         renderer.AddActor(actor)
         meshes.append((point_array, vtk_to_numpy(point_array), normal_array, vtk_to_numpy(normal_array)))
-    for light_position, intensity in _LIGHTS:
+    # a physically based look lights with its own uniforms; VTK writes its lighting code (which the
+    # look's shader replaces) only where the renderer has a light
+    for light_position, intensity in _LIGHTS if legacy else [((0.0, 0.0, 1.0), 1.0)]:
         light = vtkLight()
         light.SetLightTypeToCameraLight()
         light.SetPosition(*light_position)
         light.SetFocalPoint(0.0, 0.0, 0.0)
         light.SetIntensity(intensity)
         renderer.AddLight(light)
+    if antialias and look.antialias == "fxaa":
+        renderer.UseFXAAOn()                    # a window of one's own (FrameRenderer smooths its frames itself)
     aim_camera(renderer, model, view, width, height)
     return renderer, meshes
+
+
+def _part_mesh(layout: PartLayout, k: int, points: np.ndarray, normals: np.ndarray) -> tuple[Any, Any, Any]:
+    """Mesh ``k`` of ``layout`` as VTK polygons with the given points and normals (and its (u, v) if it has
+    them); returns it with its points and normals arrays."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    mesh = vtkPolyData()
+    point_array = numpy_to_vtk(points, deep=True)
+    vtk_points = vtkPoints()
+    vtk_points.SetData(point_array)
+    mesh.SetPoints(vtk_points)
+    polys = vtkCellArray()
+    polys.ImportLegacyFormat(numpy_to_vtkIdTypeArray(np.ascontiguousarray(layout.cells[k], dtype=np.int64),
+                                                     deep=True))
+    mesh.SetPolys(polys)
+    normal_array = numpy_to_vtk(normals, deep=True)
+    normal_array.SetName("Normals")
+    mesh.GetPointData().SetNormals(normal_array)
+    uv = layout.uv[k]
+    if uv is not None:
+        coordinates = numpy_to_vtk(np.ascontiguousarray(uv, dtype=np.float32), deep=True)
+        coordinates.SetName("TextureCoordinates")
+        mesh.GetPointData().SetTCoords(coordinates)
+    return mesh, point_array, normal_array
 
 
 def aim_camera(renderer: Any, model: Model, view: str, width: int, height: int) -> None:
