@@ -44,6 +44,9 @@ def add_verbs(verbs: Any) -> None:
                    help="camera: front, side (from the subject's left) or three-quarter")
     p.add_argument("--size", type=size, default=(600, 800), metavar="WxH",
                    help="picture size in pixels (default 600x800)")
+    p.add_argument("--look", default=None, metavar="NAME",
+                   help="lighting and shading: portrait (default), flat, legacy, or a JSON file of a look's "
+                        "settings (docs/looks.md)")
     p.add_argument("-o", "--output", required=True, metavar="OUT.png", help="picture to write")
     p.set_defaults(run=run_render)
 
@@ -83,9 +86,11 @@ def run_render(args: argparse.Namespace) -> int:
     out = require_suffix(args.output, (".png",), "render")
     model = load_model_argument(args.model)
     values = parameter_values(model, args.settings)
+    from engine.outputs.looks import look_option
     from engine.outputs.render import render_model
 
-    render_model(model, values, view=args.view, size=args.size, path=out)
+    look = look_option(args.look) if args.look is not None else None
+    render_model(model, values, view=args.view, size=args.size, path=out, look=look)
     return 0
 
 

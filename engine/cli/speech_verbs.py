@@ -61,6 +61,9 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("--fps", type=frame_rate, default=30.0, metavar="N", help="frames per second (default 30)")
     p.add_argument("--size", type=size, default=(640, 480), metavar="WxH", help="video size (default 640x480)")
     p.add_argument("--view", choices=VIEW_NAMES, default="front", help="camera (default front)")
+    p.add_argument("--look", default=None, metavar="NAME",
+                   help="lighting and shading: portrait (default), flat, legacy, or a JSON file of a look's "
+                        "settings (docs/looks.md)")
     p.add_argument("-o", "--output", default=None, metavar="OUT.(mp4|wav|xml)",
                    help="video with audio (.mp4), the audio (.wav), or the low-level commands (.xml)")
     p.add_argument("--tracks", default=None, metavar="CSV", help="every parameter at every frame")
@@ -73,11 +76,13 @@ def add_verbs(verbs: Any) -> None:
 def run_say(args: argparse.Namespace) -> int:
     """Speak the text; write every file asked for, all together (:mod:`engine.outputs.speech_files`)."""
     from engine.commands import load_library
+    from engine.outputs.looks import look_option
     from engine.outputs.speech_files import write_speech_files
     from engine.outputs.video_writer import progress_printer
     from engine.speech.articulation import load_articulation
     from engine.speech.say import speak
 
+    look = look_option(args.look) if args.look is not None else None      # a bad look before any work
     if not any(getattr(args, option) for option in ("output", *TABLE_KINDS)):
         raise UserError("nothing to write: give -o OUT.(mp4|wav|xml), --tracks, --phones or --landmarks")
     targets: dict[str, Path] = {}
@@ -112,7 +117,8 @@ def run_say(args: argparse.Namespace) -> int:
     progress = None
     if "mp4" in targets and not args.quiet:
         progress = progress_printer("rendering", unit="frames" if len(targets) == 1 else "steps")
-    write_speech_files(speech, model, targets, fps=args.fps, size=args.size, view=args.view, progress=progress)
+    write_speech_files(speech, model, targets, fps=args.fps, size=args.size, view=args.view, progress=progress,
+                       look=look)
     return 0
 
 

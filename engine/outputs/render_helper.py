@@ -121,7 +121,8 @@ def _draw_frames(request: VideoRequest, antialias: bool, offset: int, step: int,
 
         die_with_parent()
         deformer = request.model.deformer()
-        with FrameRenderer(request.model, size=request.size, view=request.view, antialias=antialias) as renderer, \
+        with FrameRenderer(request.model, size=request.size, view=request.view, antialias=antialias,
+                           look=request.look) as renderer, \
                 os.fdopen(pipe, "wb", buffering=0) as out:
             for n in range(offset, request.frames, step):
                 image = renderer.render(deformer.deform(request.values[n]))

@@ -43,6 +43,7 @@ from engine.speech.synthesis import phones_csv, write_wav
 from engine.timeline.tracks import tracks_csv_text
 
 if TYPE_CHECKING:
+    from engine.outputs.looks import Look
     from engine.speech.say import Speech
 
 #: Every kind of file, in the order they are written, with what each holds.
@@ -68,15 +69,16 @@ class ExportCancelled(Exception):
 
 def write_speech_files(speech: Speech, model: Model, targets: Mapping[str, str | Path], fps: float = 30.0,
                        size: tuple[int, int] = (640, 480), view: str = "front", progress: Progress | None = None,
-                       cancelled: Callable[[], bool] | None = None, antialias: bool = False) -> list[Path]:
+                       cancelled: Callable[[], bool] | None = None, antialias: bool | None = None,
+                       look: str | Look | None = None) -> list[Path]:
     """Write the files ``targets`` names (kind → path) for ``speech`` on ``model``, all or nothing.
 
     Kinds (:data:`SPEECH_FILE_KINDS`): ``mp4``, ``wav``, ``xml``, ``phones``,
     ``tracks``, ``landmarks``. ``fps`` (frames per second) applies to the
     video, the tracks and the landmarks, which all have frame ``n`` at
     ``n·1000/fps`` ms, until the speech ends (:meth:`Speech.frame_times`);
-    ``size`` (width, height in pixels, even), ``view`` and ``antialias`` are
-    the video's (:func:`engine.outputs.video_writer.write_video`). The WAV is
+    ``size`` (width, height in pixels, even), ``view``, ``antialias`` and ``look``
+    are the video's (:func:`engine.outputs.video_writer.write_video`). The WAV is
     the speech alone; the video's audio is padded with silence to its length.
 
     ``progress(done, total)`` is called before anything is written and as
@@ -104,7 +106,7 @@ def write_speech_files(speech: Speech, model: Model, targets: Mapping[str, str |
     if "mp4" in paths:
         video = check_video(paths["mp4"], model, times, values, speech.timeline.parameters, fps,
                             audio=speech.utterance.samples, sample_rate=speech.utterance.sample_rate,
-                            size=size, view=view)
+                            size=size, view=view, look=look)
     steps = _Steps(len(times) * (video is not None) + len(paths) - (video is not None), progress, cancelled)
     steps.start()
     with atomic_files(paths.values()) as temporary:

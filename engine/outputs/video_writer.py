@@ -25,11 +25,14 @@ is built once, only the vertex positions and normals change) — with a second
 process drawing every other frame on a machine with two or more cores
 (:mod:`engine.outputs.render_helper`) — while ffmpeg
 encodes in its own process; a writer thread keeps the pipe to ffmpeg full so
-drawing and encoding overlap. ``antialias=False`` (the default here) skips
-multisampling, which on a machine without a GPU (Mesa llvmpipe) costs about
-three times as much as the rest of the drawing; pass ``antialias=True`` for
-frames that look exactly like :func:`engine.outputs.render.render_model`'s pictures.
-``benchmarks/bench_video.py`` measures both.
+drawing and encoding overlap. The ``look`` (:mod:`engine.outputs.looks`, default
+``portrait``) decides the anti-aliasing unless ``antialias`` is given: a look
+smoothed by FXAA (``portrait``, ``flat``) has it, which costs a few milliseconds a
+frame, so the frames look exactly like :func:`engine.outputs.render.render_model`'s
+pictures; the ``legacy`` look's 8× multisampling costs about three times the rest
+of the drawing without a GPU (Mesa llvmpipe), so its videos are drawn without it,
+as they always were, unless ``antialias=True``. ``benchmarks/bench_video.py``
+measures them.
 """
 
 from __future__ import annotations
@@ -42,7 +45,7 @@ import tempfile
 import time
 import wave
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
 from typing import IO, Any
@@ -54,6 +57,7 @@ from engine.errors import UserError
 from engine.formats.atomic import atomic_files
 from engine.model.model import Model
 from engine.outputs.frame_pipe import FrameWriter
+from engine.outputs.looks import Look, look_from
 from engine.outputs.render_helper import RenderHelper, helper_wanted
 from engine.outputs.video_tools import FFmpegMissing, VideoError, find_tool, stderr_tail
 from engine.processes import with_parent_death_signal
@@ -114,6 +118,12 @@ class VideoRequest:
     audio: np.ndarray | None
     """Mono float32 samples covering exactly the video (cut or padded), or None."""
     sample_rate: int | None
+    look: Look = field(default_factory=look_from)
+    """How the head is lit and shaded (:mod:`engine.outputs.looks`)."""
+
+    def antialias(self, asked: bool | None) -> bool:
+        """Whether the frames are smoothed: as ``asked``, or (``None``) where the look's method is FXAA."""
+        return self.look.antialias == "fxaa" if asked is None else bool(asked)
 
     @property
     def frames(self) -> int:
@@ -127,7 +137,8 @@ class VideoRequest:
 def write_video(path: str | Path, model: Model, times_ms: ArrayLike, values: ArrayLike,
                 parameter_names: Sequence[str], fps: float, audio: ArrayLike | None = None,
                 sample_rate: int | None = None, size: tuple[int, int] = (640, 480), view: str = "front",
-                progress: Progress | None = None, antialias: bool = False) -> VideoStats:
+                progress: Progress | None = None, antialias: bool | None = None,
+                look: str | Look | None = None) -> VideoStats:
     """Render one frame per row of ``values`` and write them, with ``audio``, as an MP4.
 
     Parameters
@@ -154,14 +165,15 @@ def write_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
     progress : callable ``(frames done, frames total)``, optional
         Called once before the first frame and after each one; see
         :func:`progress_printer`.
-    antialias : multisampled drawing (slower without a GPU; see the module notes).
+    antialias : smoothed edges, the look's way; ``None``: where it is cheap (see the module notes).
+    look : a look's name, a :class:`~engine.outputs.looks.Look` or its settings (default ``portrait``).
 
     Returns
     -------
     :class:`VideoStats` (frame count and the time spent in each stage).
     """
     started = time.perf_counter()
-    request = check_video(path, model, times_ms, values, parameter_names, fps, audio, sample_rate, size, view)
+    request = check_video(path, model, times_ms, values, parameter_names, fps, audio, sample_rate, size, view, look)
     with atomic_files([request.path]) as temporary:
         stats = encode_video(request, temporary[request.path], progress, antialias)
     stats.total = time.perf_counter() - started
@@ -171,7 +183,7 @@ def write_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
 def check_video(path: str | Path, model: Model, times_ms: ArrayLike, values: ArrayLike,
                 parameter_names: Sequence[str], fps: float, audio: ArrayLike | None = None,
                 sample_rate: int | None = None, size: tuple[int, int] = (640, 480),
-                view: str = "front") -> VideoRequest:
+                view: str = "front", look: str | Look | None = None) -> VideoRequest:
     """Everything :func:`write_video` checks, before any work: a :class:`VideoRequest`, or a :class:`UserError`.
 
     The arguments are :func:`write_video`'s. A writer that writes the video
@@ -198,11 +210,11 @@ def check_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
         samples = _fit_audio(samples, sample_rate, float(np.asarray(times_ms, dtype=float)[0]),
                              len(frame_values), fps)
     return VideoRequest(path, model, frame_values, fps, (width, height), view, samples,
-                        sample_rate if samples is not None else None)
+                        sample_rate if samples is not None else None, look_from(look))
 
 
 def encode_video(request: VideoRequest, destination: str | Path, progress: Progress | None = None,
-                 antialias: bool = False) -> VideoStats:
+                 antialias: bool | None = None) -> VideoStats:
     """Render and encode ``request`` into ``destination`` as it is: no temporary file, no rename.
 
     For writers that make the file atomic themselves (as :func:`write_video`
@@ -217,6 +229,7 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
     from engine.outputs.render import FrameRenderer
 
     path, count, fps = request.path, request.frames, request.fps
+    antialias = request.antialias(antialias)
     width, height = request.size
     stats = VideoStats(path=path, frames=count, fps=float(fps))
     deformer = request.model.deformer()
@@ -240,7 +253,7 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
             if helper_wanted(count):              # forked before our renderer and ffmpeg exist
                 helper = RenderHelper(request, antialias)
             with FrameRenderer(request.model, size=(width, height), view=request.view,
-                               antialias=antialias) as renderer:
+                               antialias=antialias, look=request.look) as renderer:
                 cpu_before = _children_cpu()
                 process = subprocess.Popen(with_parent_death_signal(command), stdin=subprocess.PIPE,
                                            stdout=subprocess.DEVNULL, stderr=log,

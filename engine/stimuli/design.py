@@ -12,6 +12,7 @@ A design is a TOML file (read with the standard library's ``tomllib``)::
     kinds = ["mp4"]                       # mp4, wav, png, silent-mp4
     size = "320x240"
     fps = 30
+    look = "portrait"                     # portrait, flat, legacy, or a table (docs/looks.md)
 
 Factors with fixed meanings: ``text`` (with inline commands), ``voice``,
 ``model`` (a model file, relative to the design), ``expression`` and
@@ -48,6 +49,7 @@ from typing import Any
 from engine.commands.limits import MAX_TIME_MS
 from engine.errors import UserError
 from engine.formats.text_files import read_bounded_text
+from engine.outputs.looks import Look, look_from
 from engine.stimuli.design_toml import DesignError, Locator, read_design_toml
 
 FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise",
@@ -59,7 +61,7 @@ MAX_STIMULI = 100_000
 MAX_OFFSET_MS = 10_000.0
 VIEWS = ("front", "side", "three-quarter")
 _TOP_KEYS = {"seed", "factors", "output", "combine", "rows", "blocks", "name"}
-_OUTPUT_KEYS = {"kinds", "size", "fps", "view", "still_ms", "validate"}
+_OUTPUT_KEYS = {"kinds", "size", "fps", "view", "still_ms", "validate", "look"}
 RANGES: dict[str, tuple[float, float, str]] = {
     **dict.fromkeys(("intensity", "morph", "identity_morph", "viseme_morph"),
                     (0.0, 100.0, "must be a number from 0 to 100 (%)")),
@@ -87,6 +89,9 @@ class Output:
     validate: bool = False
     """Judge every stimulus's still and video with the observers of ``validate`` (docs/validation.md) as it
     is made: the verdicts go into ``check.csv``, ``validation.csv`` and ``validation-report.html``."""
+    look: Look = field(default_factory=look_from)
+    """How the head is lit and shaded (:mod:`engine.outputs.looks`): ``look = "NAME"`` or an ``[output.look]``
+    table of settings; recorded whole in ``provenance.json``."""
 
 
 @dataclass(frozen=True)
@@ -376,8 +381,16 @@ def _output(table: Any, where: Locator) -> Output:
         raise where.error("validate", "validate must be true or false")
     if validate and not {"png", "mp4", "silent-mp4"} & set(kinds):
         raise where.error("validate", "validate needs a picture to judge: kinds must hold png, mp4 or silent-mp4")
+    try:
+        look = look_from(table.get("look"))
+    except UserError as exc:
+        message = exc.message.removeprefix("look: ")
+        setting = re.match(r"[\w.]+", message)                 # the setting named first: its line
+        line = where.line_of(setting.group().split(".")[-1]) if setting and isinstance(table.get("look"), dict) \
+            else None
+        raise where.error("look", message, line) from None
     return Output(tuple(dict.fromkeys(kinds)), (int(match.group(1)), int(match.group(2))), float(fps), view,
-                  None if still is None else float(still), validate)
+                  None if still is None else float(still), validate, look)
 
 
 def level_text(level: Any) -> str | Any:

@@ -106,7 +106,7 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     paths = {kind: outdir / name for kind, name in names.items()}
     requests = {kind: check_video(paths[kind], model, frame_times, values, timeline.parameters, fps,
                                   audio=audio if kind == "mp4" else None, sample_rate=rate if kind == "mp4" else None,
-                                  size=design.output.size, view=design.output.view)
+                                  size=design.output.size, view=design.output.view, look=design.output.look)
                 for kind in ("mp4", "silent-mp4") if kind in paths}
     words = [w.start_ms + layout.audio_start_ms for w in utterance.words]
     onset = next((p.start_ms for p in utterance.phones if p.label not in PAUSES), 0.0) + layout.audio_start_ms
@@ -277,7 +277,7 @@ def _thumbnail(model: Model, timeline: Timeline, at_ms: float, design: Design, p
 
     width, height = design.output.size
     size = (THUMBNAIL_WIDTH, max(2, round(THUMBNAIL_WIDTH * height / width / 2) * 2))
-    with FrameRenderer(model, size=size, view=design.output.view) as renderer:
+    with FrameRenderer(model, size=size, view=design.output.view, look=design.output.look) as renderer:
         image = renderer.render(model.deform(timeline.values_at(at_ms)))
     with path.open("wb") as stream:
         np.save(stream, np.ascontiguousarray(image, dtype=np.uint8), allow_pickle=False)
@@ -342,7 +342,7 @@ def _still(model: Model, timeline: Timeline, at_ms: float, design: Design, desti
     from engine.outputs.render import FrameRenderer
 
     values = timeline.values_at(at_ms)
-    with FrameRenderer(model, size=design.output.size, view=design.output.view) as renderer:
+    with FrameRenderer(model, size=design.output.size, view=design.output.view, look=design.output.look) as renderer:
         image = renderer.render(model.deform(values))
     write_png(destination, image)
 

@@ -55,7 +55,7 @@ def write_set_files(design: Design, outdir: Path, records: list[dict[str, Any]])
     kinds = list(design.output.kinds)
     verdicts = set_verdicts(records)
     texts = {
-        MANIFEST: _csv(_manifest_rows(records, factors, kinds)),
+        MANIFEST: _csv(_manifest_rows(records, factors, kinds, design.output.look.name)),
         CONDITIONS: _csv(_condition_rows(records, factors, kinds)),
         CHECKS: _csv(_check_rows(records, verdicts if design.output.validate else None)),
         PROVENANCE: json.dumps(provenance(design, records), indent=2, ensure_ascii=False) + "\n",
@@ -102,7 +102,8 @@ def contact_sheet(outdir: Path, records: list[dict[str, Any]]) -> np.ndarray | N
     return sheet
 
 
-def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: list[str]) -> list[dict[str, Any]]:
+def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: list[str],
+                   look: str = "") -> list[dict[str, Any]]:
     rows = []
     for record in records:
         row: dict[str, Any] = {"id": record["id"]}
@@ -120,6 +121,7 @@ def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: lis
             "words": ";".join(record["words"]),
             "expression_apex_ms": "" if record["expression_apex_ms"] is None else _ms(record["expression_apex_ms"]),
             "still_ms": "" if record["still_ms"] is None else _ms(record["still_ms"]),
+            "look": look,                                       # its settings: provenance.json
         })
         rows.append(row)
     return rows
@@ -175,6 +177,7 @@ def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
         "default_model_sha256": _default_model_hash(),
         "festival": {"version": _festival_version(), "voices": sorted({r["voice"] for r in records})},
         "python": sys.version.split()[0], "platform": platform.platform(), "libraries": libraries,
+        "look": design.output.look.settings(), "look_methods": look_methods(),
     }
     if design.output.validate:
         from dataclasses import asdict
@@ -184,6 +187,16 @@ def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
         made["validation"] = {"observers": [asdict(m) for m in model_facts()],
                               "emotion_model_sha256": EMOTION_MODEL_SHA256}
     return made
+
+
+def look_methods() -> dict[str, Any]:
+    """How the look's parts are computed, with the settings of each (beside the look's own, so a set can be
+    drawn the same way again): the shader's text, the anti-aliasing, the baked occlusion."""
+    from engine.outputs import antialias, occlusion
+    from engine.outputs.look_shader import SHADING
+
+    return {"shader_sha256": hashlib.sha256(SHADING.encode("utf-8")).hexdigest(), "fxaa": antialias.settings(),
+            "occlusion": occlusion.settings()}
 
 
 def _csv(rows: list[dict[str, Any]]) -> str:
