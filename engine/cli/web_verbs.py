@@ -46,6 +46,8 @@ def add_verbs(verbs: Any) -> None:
                    help="frames per second of the animation table for --say/--file (default 60)")
     p.add_argument("--size", type=size, default=(600, 800), metavar="WxH",
                    help="the picture's size in pixels, as render --size (default 600x800)")
+    p.add_argument("--look", default=None, metavar="NAME",
+                   help="lighting and shading, as render --look (default portrait; with --stimuli: the set's own)")
     p.add_argument("-o", "--output", required=True, metavar="SITE/", help="the folder to write (new, empty or an "
                                                                           "earlier site)")
     p.set_defaults(run=run_web_export)
@@ -53,9 +55,11 @@ def add_verbs(verbs: Any) -> None:
 
 def run_web_export(args: argparse.Namespace) -> int:
     """Write the site and print what it holds and its size."""
+    from engine.outputs.looks import look_option
     from engine.web.site import check_folder, write_speech_site, write_tracks_site
 
     out = Path(args.output)
+    look = look_option(args.look) if args.look is not None else None
     check_folder(out)                # before any synthesis: a folder of other files is refused at once
     if args.stimuli is not None:
         from engine.web.stimuli_site import write_stimuli_site
@@ -72,7 +76,7 @@ def run_web_export(args: argparse.Namespace) -> int:
 
             heads = DesignHeads(load_design(args.design), args.stimuli)
         model = load_model_argument(args.model) if heads is None else None
-        sizes = write_stimuli_site(model, args.stimuli, out, size=args.size, heads=heads)
+        sizes = write_stimuli_site(model, args.stimuli, out, size=args.size, heads=heads, look=look)
         count = sum(1 for name in sizes if name.endswith(".json") and name.startswith("stimuli/"))
         glbs = sorted(name for name in sizes if name.endswith(".glb"))
         print(f"wrote {out}/: {count} stimuli, {len(glbs)} head{'s' if len(glbs) > 1 else ''} "
@@ -86,7 +90,7 @@ def run_web_export(args: argparse.Namespace) -> int:
         if args.voice is not None:
             raise UserError("--voice applies to --say and --file; tracks come with their own audio")
         model = load_model_argument(args.model)
-        sizes = write_tracks_site(model, args.tracks, args.audio, out, phones=args.phones, size=args.size)
+        sizes = write_tracks_site(model, args.tracks, args.audio, out, phones=args.phones, size=args.size, look=look)
     else:
         for option in ("audio", "phones"):
             if getattr(args, option) is not None:
@@ -101,7 +105,7 @@ def run_web_export(args: argparse.Namespace) -> int:
         speech = speak(text, model, festival_synthesizer(None), voice=args.voice, library=library, name=name)
         for warning in speech.warnings:
             print(f"warning: {warning}", file=sys.stderr)
-        sizes = write_speech_site(speech, model, out, fps=args.fps, size=args.size)
+        sizes = write_speech_site(speech, model, out, fps=args.fps, size=args.size, look=look)
     total = sum(sizes.values())
     print(f"wrote {out}/: index.html, player.js, three.js, head.glb ({sizes['head.glb'] / 1e3:.0f} kB), "
           f"animation.json ({sizes['animation.json'] / 1e3:.0f} kB), speech.wav ({sizes['speech.wav'] / 1e3:.0f} kB);"

@@ -32,8 +32,11 @@ from engine.errors import UserError
 from engine.formats.atomic import atomic_files, finish_interrupted_writes
 from engine.outputs.camera import VIEW_ANGLE, VIEWS, camera_pose, framed_points
 from engine.outputs.gltf_skeleton import skeleton_parameters
+from engine.outputs.look_shader import SHADING, UNIFORMS
+from engine.outputs.looks import Look, look_from
 from engine.speech.synthesis import Segment
 from engine.web.animation import animation_document
+from engine.web.web_look import look_document
 from engine.web.web_model import morph_parameters, web_glb
 
 if TYPE_CHECKING:
@@ -49,9 +52,8 @@ MARKER = "artificial-person-web-site"
 THREE_VERSION = "0.170.0"
 #: The files a site holds besides the vendored three.js folder.
 SITE_FILES = ("index.html", "player.js", "head.glb", "animation.json", "speech.wav")
-#: The page's background (bottom, top) and the camera lights, as engine.outputs.render draws them.
-BACKGROUND = ("#cfd1d4", "#eef0f2")
-CAMERA_LIGHTS = [((-1.0, 0.9, 1.2), 0.78), ((1.3, 0.1, 1.0), 0.42), ((0.4, 1.2, -1.4), 0.45)]
+#: Where player.js takes the look's shader (engine.outputs.look_shader), put in as the site is written.
+SHADER_MARK = '/*{{LOOK_SHADER}}*/""'
 
 
 def site_camera(model: Model, size: tuple[int, int] = DEFAULT_SIZE, view: str = "front") -> dict[str, Any]:
@@ -94,8 +96,8 @@ def project(camera: dict[str, Any], points_mm: np.ndarray) -> np.ndarray:
 
 
 def write_speech_site(speech: Speech, model: Model, out: str | Path, fps: float = DEFAULT_FPS,
-                      size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
-    """The site of one utterance (``say``'s pipeline): its timeline sampled at ``fps``, its audio."""
+                      size: tuple[int, int] = DEFAULT_SIZE, look: str | Look | None = None) -> dict[str, int]:
+    """The site of one utterance (``say``'s pipeline): its timeline sampled at ``fps``, its audio, in ``look``."""
     from engine.speech.synthesis import wav_bytes
 
     times = speech.frame_times(fps)
@@ -104,36 +106,37 @@ def write_speech_site(speech: Speech, model: Model, out: str | Path, fps: float 
     utterance = speech.utterance
     wav = wav_bytes(utterance.samples, utterance.sample_rate)
     return write_site(model, names, values, 1000.0 / fps, wav, out, phones=utterance.phones, words=utterance.words,
-                      duration_ms=speech.end_ms, size=size)
+                      duration_ms=speech.end_ms, size=size, look=look)
 
 
 def write_site(model: Model, names: Sequence[str], values: np.ndarray, frame_ms: float, wav: bytes,
                out: str | Path, phones: Sequence[Segment] = (), words: Sequence[Segment] = (),
-               duration_ms: float | None = None, size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
+               duration_ms: float | None = None, size: tuple[int, int] = DEFAULT_SIZE,
+               look: str | Look | None = None) -> dict[str, int]:
     """Write the site into the folder ``out`` (made if missing; a folder that is not empty must be an
-    earlier site, whose files are replaced). ``values``: frames × ``names``, frame ``n`` at ``n × frame_ms``.
+    earlier site, whose files are replaced). ``values``: frames × ``names``, frame ``n`` at ``n × frame_ms``;
+    ``look`` how the head is lit and shaded (:mod:`engine.outputs.looks`, default ``portrait``).
     Returns each file's size in bytes (three.js as one entry, ``three/``)."""
     out = Path(out)
     check_folder(out)
-    animation = site_animation(model, names, values, frame_ms, phones, words, duration_ms, size)
+    look = look_from(look)
+    animation = site_animation(model, names, values, frame_ms, phones, words, duration_ms, size, look)
     animation.update(model="head.glb", audio="speech.wav")
-    glb = web_glb(model, morph_parameters(model, shared_targets([animation])))
+    glb = web_glb(model, morph_parameters(model, shared_targets([animation])), look)
     files = {"animation.json": json_bytes(animation), "speech.wav": wav}
     return write_folder(out, glb, files, size, "animation.json")
 
 
 def site_animation(model: Model, names: Sequence[str], values: np.ndarray, frame_ms: float,
                    phones: Sequence[Segment] = (), words: Sequence[Segment] = (), duration_ms: float | None = None,
-                   size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, Any]:
+                   size: tuple[int, int] = DEFAULT_SIZE, look: str | Look | None = None) -> dict[str, Any]:
     """One animation JSON (without the ``model`` and ``audio`` it names): the frame table with the
-    camera, lights and shading of ``render``."""
+    camera, and the lights and shading of ``render`` in ``look`` (:mod:`engine.web.web_look`)."""
     tree = model.parameters
     defaults = [tree[name].default for name in names]
     animation = animation_document(names, values, defaults, frame_ms, skeleton_parameters(model), phones, words,
                                    duration_ms)
-    animation.update(camera=site_camera(model, size), background={"bottom": BACKGROUND[0], "top": BACKGROUND[1]},
-                     lights=[{"camera_position": list(p), "intensity": i} for p, i in CAMERA_LIGHTS],
-                     parts=_part_shading(model), generator=MARKER)
+    animation.update(camera=site_camera(model, size), **look_document(model, look), generator=MARKER)
     return animation
 
 
@@ -172,8 +175,8 @@ def write_folder(out: Path, glb: bytes, files: dict[str, bytes], size: tuple[int
     out.mkdir(parents=True, exist_ok=True)
     page = (_player_file("index.html").replace("{{WIDTH}}", str(size[0])).replace("{{HEIGHT}}", str(size[1]))
             .replace("{{ANIMATION}}", first_animation))
-    everything = {"index.html": page.encode("utf-8"), "player.js": _player_file("player.js").encode("utf-8"),
-                  "head.glb": glb, **files}
+    player = _player_file("player.js").replace(SHADER_MARK, json.dumps(UNIFORMS + SHADING))
+    everything = {"index.html": page.encode("utf-8"), "player.js": player.encode("utf-8"), "head.glb": glb, **files}
     three = _vendored_three()
     contents = {**everything, **three}
     targets = {name: _site_path(out, name) for name in contents}
@@ -216,7 +219,8 @@ def _site_path(out: Path, name: str) -> Path:
 
 
 def write_tracks_site(model: Model, tracks: str | Path, audio: str | Path, out: str | Path,
-                      phones: str | Path | None = None, size: tuple[int, int] = DEFAULT_SIZE) -> dict[str, int]:
+                      phones: str | Path | None = None, size: tuple[int, int] = DEFAULT_SIZE,
+                      look: str | Look | None = None) -> dict[str, int]:
     """The site of a tracks CSV and its audio (a WAV, copied unchanged), with the words of a phones CSV if given.
 
     The tracks are resampled at their own frame rate from 0 ms (held before their first row and after
@@ -233,7 +237,7 @@ def write_tracks_site(model: Model, tracks: str | Path, audio: str | Path, out: 
     count = max(1, int(np.ceil(end_ms / frame_ms - 1e-9)) + 1)
     times = np.arange(count) * frame_ms
     return write_site(model, table.parameters, table.sample(times), frame_ms, Path(audio).read_bytes(), out,
-                      phones=segments, words=words_of(segments), duration_ms=end_ms, size=size)
+                      phones=segments, words=words_of(segments), duration_ms=end_ms, size=size, look=look)
 
 
 def words_of(phones: Sequence[Segment]) -> list[Segment]:
@@ -252,18 +256,6 @@ def words_of(phones: Sequence[Segment]) -> list[Segment]:
             words.append(Segment(phone.word, phone.start_ms, phone.end_ms))
         previous = phone.word
     return words
-
-
-def _part_shading(model: Model) -> dict[str, dict[str, float]]:
-    """Each part's shading as the engine's renderer gives it (ambient, diffuse, specular, power)."""
-    from engine.outputs.part_layout import PartLayout
-    from engine.outputs.part_materials import part_material
-
-    shading = {}
-    for part in PartLayout(model).parts:
-        _, ambient, diffuse, specular, power = part_material(part, model.part_colors)
-        shading[part] = {"ambient": ambient, "diffuse": diffuse, "specular": specular, "power": power}
-    return shading
 
 
 def _player_file(name: str) -> str:

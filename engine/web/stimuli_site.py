@@ -42,10 +42,12 @@ from engine.web.site import (
     words_of,
     write_folder,
 )
+from engine.web.web_look import recorded_look
 from engine.web.web_model import morph_parameters, web_glb
 
 if TYPE_CHECKING:
     from engine.model import Model
+    from engine.outputs.looks import Look
 
 __all__ = ["HEAD_FACTORS", "STIMULI_FORMAT", "HeadsOf", "ListedStimulus", "read_set_listing", "write_stimuli_site"]
 
@@ -86,12 +88,14 @@ def read_set_listing(set_folder: str | Path) -> list[ListedStimulus]:
 
 
 def write_stimuli_site(model: Model | None, set_folder: str | Path, out: str | Path,
-                       size: tuple[int, int] = DEFAULT_SIZE, heads: HeadsOf | None = None) -> dict[str, int]:
+                       size: tuple[int, int] = DEFAULT_SIZE, heads: HeadsOf | None = None,
+                       look: str | Look | None = None) -> dict[str, int]:
     """Write the site of the stimulus set in ``set_folder`` (its ``manifest.csv``) into ``out``.
 
     Every stimulus wears ``model``, unless ``heads`` (stimulus id → (key, model); one key, one head) gives
     each its own (``model`` may then be None): every head is in the site, the first as ``head.glb``, the
-    next ``head-2.glb`` … A set whose manifest has head factors needs ``heads``."""
+    next ``head-2.glb`` … A set whose manifest has head factors needs ``heads``. The head is lit and shaded
+    in ``look``, by default the one the set was made with (its ``provenance.json``)."""
     if heads is None and model is None:
         raise ValueError("a model for every stimulus, or heads for each")
     set_folder, out = Path(set_folder), Path(out)
@@ -99,6 +103,8 @@ def write_stimuli_site(model: Model | None, set_folder: str | Path, out: str | P
     if heads is None:
         _refuse_heads_of_their_own(listing, set_folder / "manifest.csv")
     check_folder(out)
+    if look is None:
+        look = recorded_look(set_folder)
     groups: dict[str, tuple[Model, list[dict[str, Any]]]] = {}
     files, listed = {}, []
     for stimulus in listing:
@@ -107,14 +113,15 @@ def write_stimuli_site(model: Model | None, set_folder: str | Path, out: str | P
         group = groups.setdefault(key, (head, []))
         number = list(groups).index(key) + 1
         glb_name = "head.glb" if number == 1 else f"head-{number}.glb"
-        animation = _stimulus_animation(group[0], stimulus, size)
+        animation = _stimulus_animation(group[0], stimulus, size, look)
         animation.update(model=f"../{glb_name}", audio=f"{stimulus.id}.wav", stimulus=stimulus.id)
         group[1].append(animation)
         files[f"stimuli/{stimulus.id}.wav"] = stimulus.audio.read_bytes()
         listed.append({"id": stimulus.id, "animation": f"stimuli/{stimulus.id}.json",
                        "audio": f"stimuli/{stimulus.id}.wav", "model": glb_name,
                        "duration_ms": animation["duration_ms"], "manifest": stimulus.row})
-    glbs = [web_glb(head, morph_parameters(head, shared_targets(animations))) for head, animations in groups.values()]
+    glbs = [web_glb(head, morph_parameters(head, shared_targets(animations)), look)
+            for head, animations in groups.values()]
     for number, glb in enumerate(glbs[1:], start=2):
         files[f"head-{number}.glb"] = glb
     for _, animations in groups.values():
@@ -172,7 +179,8 @@ def _checked_rows(reader: csv.DictReader[str], manifest: Path) -> list[tuple[int
     return rows
 
 
-def _stimulus_animation(model: Model, stimulus: ListedStimulus, size: tuple[int, int]) -> dict[str, Any]:
+def _stimulus_animation(model: Model, stimulus: ListedStimulus, size: tuple[int, int],
+                        look: str | Look | None) -> dict[str, Any]:
     table = read_tracks_csv(stimulus.tracks, model)
     samples, rate = read_wav(stimulus.audio)
     phones = read_phones_csv(stimulus.phones) if stimulus.phones is not None else []
@@ -180,7 +188,7 @@ def _stimulus_animation(model: Model, stimulus: ListedStimulus, size: tuple[int,
     end_ms = max(table.end, 1000.0 * len(samples) / rate, phones[-1].end_ms if phones else 0.0)
     frame_ms = 1000.0 / table.fps
     times = np.arange(max(1, int(np.ceil(end_ms / frame_ms - 1e-9)) + 1)) * frame_ms
-    return site_animation(model, table.parameters, table.sample(times), frame_ms, phones, words, end_ms, size)
+    return site_animation(model, table.parameters, table.sample(times), frame_ms, phones, words, end_ms, size, look)
 
 
 def _inside(set_folder: Path, name: str, manifest: Path, line: int) -> Path:

@@ -14,7 +14,10 @@ head's 52 parameters would be some 30 MB. A web page needs far less:
   normals' changes as normalised 16-bit integers too (clipped to ±1);
 * the rest mesh's normals are normalised bytes (``KHR_mesh_quantization``), its vertex colours
   normalised 16-bit integers and its skin weights normalised bytes (four summing to 255); the
-  positions stay float32.
+  positions stay float32;
+* in a physically based look, every point's baked occlusion (:mod:`engine.outputs.occlusion`) as
+  the application-specific attribute ``_OCCLUSION`` (float32, the very numbers the engine's
+  renderer draws with; three.js names it ``_occlusion``).
 
 >>> from engine import load_model
 >>> head = load_model()                                                     # doctest: +SKIP
@@ -32,14 +35,16 @@ import numpy as np
 
 from engine.outputs.gltf_export import glb_bytes, gltf_document, parameter_targets
 from engine.outputs.gltf_skeleton import skeleton_parameters
+from engine.outputs.looks import Look, look_from
 
 if TYPE_CHECKING:
     from engine.model import Model
 
-__all__ = ["QUANTISATION", "dequantised_target", "morph_parameters", "web_glb", "web_gltf_document"]
+__all__ = ["OCCLUSION", "QUANTISATION", "dequantised_target", "morph_parameters", "web_glb", "web_gltf_document"]
 
 QUANTISATION = "KHR_mesh_quantization"
-_BYTE, _UBYTE, _SHORT, _USHORT, _UINT = 5120, 5121, 5122, 5123, 5125
+OCCLUSION = "_OCCLUSION"
+_BYTE, _UBYTE, _SHORT, _USHORT, _UINT, _FLOAT = 5120, 5121, 5122, 5123, 5125, 5126
 _ARRAY_BUFFER = 34962
 _STEPS = 32767.0
 _TYPE_SIZES = {"SCALAR": 1, "VEC2": 2, "VEC3": 3, "VEC4": 4, "MAT4": 16}
@@ -52,21 +57,32 @@ def morph_parameters(model: Model, moving: Mapping[str, float]) -> dict[str, flo
     return {name: value for name, value in moving.items() if name not in joints}
 
 
-def web_gltf_document(model: Model, targets_at: Mapping[str, float]) -> tuple[dict[str, Any], bytes]:
-    """The compact glTF document and its buffer: ``model`` with a skeleton, and one morph target per
-    entry of ``targets_at`` (parameter → its value at weight 1; leaves only)."""
+def web_gltf_document(model: Model, targets_at: Mapping[str, float],
+                      look: str | Look | None = None) -> tuple[dict[str, Any], bytes]:
+    """The compact glTF document and its buffer: ``model`` with a skeleton, one morph target per
+    entry of ``targets_at`` (parameter → its value at weight 1; leaves only), and the baked occlusion
+    of ``look`` (default ``portrait``; none for the ``legacy`` look)."""
     targets = parameter_targets(model, list(targets_at), dict(targets_at)) if targets_at else []
     document, data = gltf_document(model, targets, target_normals=True, skeleton=True)
-    return _compacted(document, data)
+    look = look_from(look)
+    occlusion = None
+    if look.shading != "legacy":
+        from engine.outputs.occlusion import model_occlusion
+
+        occlusion = model_occlusion(model, look.occlusion_radius_mm)
+    return _compacted(document, data, occlusion)
 
 
-def web_glb(model: Model, targets_at: Mapping[str, float]) -> bytes:
+def web_glb(model: Model, targets_at: Mapping[str, float], look: str | Look | None = None) -> bytes:
     """The binary glTF (``.glb``) of :func:`web_gltf_document`."""
-    return glb_bytes(*web_gltf_document(model, targets_at))
+    return glb_bytes(*web_gltf_document(model, targets_at, look))
 
 
-def _compacted(document: dict[str, Any], data: bytes) -> tuple[dict[str, Any], bytes]:
-    """Every morph target accessor re-encoded sparse and quantised; the other arrays copied as they are."""
+def _compacted(document: dict[str, Any], data: bytes,
+               occlusion: np.ndarray | None = None) -> tuple[dict[str, Any], bytes]:
+    """Every morph target accessor re-encoded sparse and quantised; the other arrays copied as they are;
+    ``occlusion`` (one value per point of every part's mesh, in :class:`PartLayout` order, which is the
+    primitives' order) added to each primitive."""
     in_targets = {index for mesh in document["meshes"] for primitive in mesh["primitives"]
                   for entry in primitive.get("targets", []) for index in entry.values()}
     by_attribute = {index: name for mesh in document["meshes"] for primitive in mesh["primitives"]
@@ -90,6 +106,16 @@ def _compacted(document: dict[str, Any], data: bytes) -> tuple[dict[str, Any], b
     for image in document.get("images", []):
         original = document["bufferViews"][image["bufferView"]]
         image["bufferView"] = packer.add(_view_bytes(data, original), None)
+    if occlusion is not None:
+        start = 0
+        for primitive in document["meshes"][0]["primitives"]:
+            count = accessors[primitive["attributes"]["POSITION"]]["count"]
+            values = np.asarray(occlusion[start:start + count], dtype="<f4")
+            start += count
+            primitive["attributes"][OCCLUSION] = len(accessors)
+            accessors.append({"bufferView": packer.add(values.tobytes(), _ARRAY_BUFFER), "componentType": _FLOAT,
+                              "count": count, "type": "SCALAR",
+                              "min": [float(values.min())], "max": [float(values.max())]})
     out = dict(document)
     out["accessors"] = accessors
     out["bufferViews"] = packer.views

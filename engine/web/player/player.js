@@ -19,6 +19,16 @@ function linearToSrgb(c) {
   return c <= 0.0031308 ? 12.92 * c : 1.055 * Math.pow(c, 1 / 2.4) - 0.055;
 }
 
+// The shading of a physically based look: the engine's own GLSL (engine/outputs/look_shader.py), put in
+// here when the site is written, so the browser computes every pixel with the renderer's formulas.
+const LOOK_SHADER = /*{{LOOK_SHADER}}*/"";
+
+// A glTF colour (linear light, from sRGB by the exact curve) as VTK's physically based shading takes the
+// same colour: the stored sRGB value to the power 2.2.
+function vtkLinear(c) {
+  return Math.pow(Math.min(Math.max(linearToSrgb(c), 0), 1), 2.2);
+}
+
 export class ArtificialPerson extends EventTarget {
   constructor(canvas) {
     super();
@@ -208,6 +218,9 @@ export class ArtificialPerson extends EventTarget {
     this.camera.up.fromArray(c.up);
     this.camera.lookAt(new THREE.Vector3().fromArray(c.target));
     this.scene.add(this.camera);
+    const background = animation.background;
+    if (background) this.canvas.style.background = `linear-gradient(to top, ${background.bottom}, ${background.top})`;
+    if (animation.look) return;     // a physically based look: its lights are the shader's uniforms
     // The engine's key, fill and rim lights ride with the camera, aimed at what it looks at.
     const aim = new THREE.Object3D();
     aim.position.set(0, 0, -new THREE.Vector3().fromArray(c.position).distanceTo(new THREE.Vector3().fromArray(c.target)));
@@ -243,6 +256,7 @@ export class ArtificialPerson extends EventTarget {
   }
 
   _material(mesh, parts) {
+    if (this.animation.look) return this._lookMaterial(mesh, this.animation.look);
     const original = mesh.material;
     const part = parts[(original.name || "").split(".")[0]] || { ambient: 0.18, diffuse: 0.85, specular: 0.12, power: 12 };
     const colour = original.color.clone();
@@ -270,6 +284,46 @@ export class ArtificialPerson extends EventTarget {
         "#include <lights_fragment_begin>",
         "#include <lights_fragment_begin>\n irradiance *= ambientShare;");
     };
+    return material;
+  }
+
+  /** A material drawn by the look's shader: three.js poses, skins and textures the mesh, the engine's GLSL
+   * lights it (the same uniforms, the same baked occlusion, the colours made linear as VTK makes them). */
+  _lookMaterial(mesh, look) {
+    const original = mesh.material;
+    const part = (original.name || "").split(".")[0];
+    const values = { ...look.uniforms, ...(look.materials[part] || look.materials[Object.keys(look.materials)[0]]) };
+    const colour = original.color.clone();
+    colour.setRGB(vtkLinear(colour.r), vtkLinear(colour.g), vtkLinear(colour.b));
+    const colours = mesh.geometry.getAttribute("color");
+    if (colours) {
+      for (let i = 0; i < colours.count; i++) {
+        colours.setXYZ(i, vtkLinear(colours.getX(i)), vtkLinear(colours.getY(i)), vtkLinear(colours.getZ(i)));
+      }
+      colours.needsUpdate = true;
+    }
+    if (original.map) original.map.colorSpace = THREE.SRGBColorSpace;   // decoded to linear, as VTK does
+    const material = new THREE.MeshStandardMaterial({
+      color: colour, map: original.map || null, vertexColors: Boolean(colours), side: THREE.DoubleSide,
+    });
+    const lights = look.settings.lights.length;
+    material.onBeforeCompile = (shader) => {
+      for (const [name, value] of Object.entries(values)) {
+        shader.uniforms[name] = { value: Array.isArray(value) ? new THREE.Vector3().fromArray(value) : value };
+      }
+      shader.vertexShader = shader.vertexShader
+        .replace("void main() {", "attribute float _occlusion;\nvarying float vLookOcclusion;\nvoid main() {")
+        .replace("#include <begin_vertex>", "#include <begin_vertex>\n\tvLookOcclusion = _occlusion;");
+      shader.fragmentShader = shader.fragmentShader
+        .replace("void main() {", `varying float vLookOcclusion;\n#define LOOK_LIGHTS ${lights}\n${LOOK_SHADER}\nvoid main() {`)
+        .replace("#include <lights_physical_fragment>", "")
+        .replace("#include <lights_fragment_begin>", "")
+        .replace("#include <lights_fragment_maps>", "")
+        .replace("#include <lights_fragment_end>", "")
+        .replace("#include <opaque_fragment>",
+          "gl_FragColor = vec4(lookShade(diffuseColor.rgb, normal, normalize(vViewPosition), vLookOcclusion), diffuseColor.a);");
+    };
+    material.customProgramCacheKey = () => `look:${lights}`;
     return material;
   }
 
