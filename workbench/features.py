@@ -28,6 +28,7 @@ INSTALLERS: list[str] = [
     "script_panel:install",
     "mocap:install",
     "capture_import:install",       # File → Import capture stream… (docs/capture-streams.md)
+    "look_menu:install",            # View → Look (docs/looks.md)
 ]
 
 

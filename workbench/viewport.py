@@ -18,6 +18,11 @@ weight on the blue → red ramp of :func:`engine.painting.heat_colors`. Tools
 may show colours of their own with :meth:`Viewport.show_colors` and change a
 few vertices fast with :meth:`Viewport.update_colors` (a brush dab).
 
+The view is lit and shaded in a look (:mod:`engine.outputs.looks`, View → Look): by default the one
+``render`` draws with, so the head on screen is the head of the pictures and videos (its lights, its
+materials and shader, its baked occlusion, FXAA, its background; :func:`~workbench.viewport_parts.dress_view`);
+``set_look(None)`` gives the workbench's own shading (pyvista's light kit, Gouraud).
+
 A textured model (``model.texture``) is drawn as one mesh per part and image
 (:func:`~workbench.viewport_parts.part_pieces`: a point for each distinct
 vertex and (u, v), so seams stay sharp; the points of one vertex share its
@@ -34,6 +39,7 @@ from PySide6.QtWidgets import QVBoxLayout, QWidget
 from pyvistaqt import QtInteractor
 
 import engine
+from engine.outputs.looks import Look, look_from
 from engine.outputs.render import vtk_texture
 from engine.painting import heat_colors
 
@@ -41,7 +47,7 @@ from .colors import base_vertex_colors
 from .document import ModelDocument
 from .view_state import ViewState
 from .viewport_keys import keep_keys_from_vtk
-from .viewport_parts import VERTEX_COLORS, PartView, part_pieces
+from .viewport_parts import VERTEX_COLORS, PartView, dress_scene, part_pieces, show_texture
 from .viewport_picking import SurfacePick, cell_weights, new_cell_picker, pick_surface
 from .viewport_points import PointOverlays
 
@@ -71,6 +77,7 @@ class Viewport(QWidget):
         # per mesh: its points sorted by model vertex (order, sorted vertex indices), for finding a vertex's points
         self._local_of: dict[str, tuple[np.ndarray, np.ndarray]] | None = None
         self._multi_samples: int | None = None     # saved while set_fast_rendering(True)
+        self._look: Look | None = look_from(None)   # None: the workbench's own shading
         # auto_update=False: we render after each change ourselves; pyvistaqt's
         # default would also re-render five times a second for nothing.
         self.plotter = QtInteractor(self, auto_update=False)
@@ -335,6 +342,17 @@ class Viewport(QWidget):
         self.plotter.renderer.ResetCameraClippingRange()
         self._schedule_render()
 
+    @property
+    def look(self) -> Look | None:
+        """The look the view is drawn in (``None``: the workbench's own shading)."""
+        return self._look
+
+    def set_look(self, look: str | Look | None) -> None:
+        """Draw the model in ``look`` (a name, a :class:`~engine.outputs.looks.Look`, or ``None``)."""
+        self._look = None if look is None else look_from(look)
+        self._build(self._document.model)
+        self._schedule_render()
+
     def close_plotter(self) -> None:
         """Release the VTK render window and every actor (call before the widget goes away)."""
         self._parts.clear()
@@ -379,6 +397,8 @@ class Viewport(QWidget):
                 view.seam_groups = np.unique(indices, return_inverse=True)[1].reshape(-1)
             view.update_normals()
             self._parts[piece.key] = view
+        dress_scene(self.plotter, list(self._parts.values()), model, self._look, (BACKGROUND_BOTTOM, BACKGROUND_TOP),
+                    keep_samples=self._multi_samples is not None)
         self._show_textures(colors is self._base_colors)
 
     # -- listeners -------------------------------------------------------
@@ -419,17 +439,15 @@ class Viewport(QWidget):
 
     def _show_textures(self, on: bool) -> None:
         """Textured meshes show their image (``on``: the ordinary colours are shown) or their vertex colours."""
+        physically_based = self._look is not None and self._look.shading != "legacy"
         for view in self._parts.values():
-            if view.texture is None:
-                continue
-            mapper = view.actor.GetMapper()
-            mapper.SetScalarVisibility(not on)
-            view.actor.SetTexture(view.texture if on else None)
-            view.actor.prop.color = "white"
+            if view.texture is not None:
+                show_texture(view, on, physically_based)
 
     def textures_shown(self) -> list[str]:
         """The keys of the meshes drawing an image now."""
-        return [key for key, view in self._parts.items() if view.actor.GetTexture() is not None]
+        return [key for key, view in self._parts.items()
+                if view.actor.GetTexture() is not None or view.actor.GetProperty().GetTexture("albedoTex")]
 
     def _on_wireframe_changed(self, on: bool) -> None:
         for view in self._parts.values():

@@ -157,3 +157,101 @@ def part_pieces(model: engine.Model) -> list[Piece]:
         key = part if layout.uv[k] is None else f"{part}@{model.texture.images[image].name}"
         pieces.append(Piece(key, part, layout.used(k), layout.cells[k], layout.uv[k], image))
     return pieces
+
+
+def dress_scene(plotter, views: list[PartView], model: engine.Model, look, own_background: tuple[str, str],
+                keep_samples: bool = False) -> None:
+    """Light and shade the viewport's meshes ``views`` (just made) in ``look``, with its background and
+    anti-aliasing; ``look`` ``None``: the workbench's own shading and ``own_background``.
+    ``keep_samples``: leave the window's multisampling alone (a brush stroke has it off for now)."""
+    renderer, window = plotter.renderer, plotter.render_window
+    if look is None:
+        plotter.set_background(own_background[0], top=own_background[1])
+        if renderer.GetUseFXAA() or renderer.GetLights().GetNumberOfItems() != 5:
+            renderer.UseFXAAOff()
+            plotter.enable_lightkit()
+            if window is not None and not keep_samples:
+                window.SetMultiSamples(pv.global_theme.multi_samples)
+        return
+    from engine.outputs.occlusion import part_vertex_occlusion
+
+    plotter.set_background(look.background[0], top=look.background[1])
+    camera_lights(renderer, look)
+    renderer.SetUseFXAA(look.antialias == "fxaa")          # on the screen: VTK's own FXAA pass
+    if window is not None and look.antialias == "fxaa" and not keep_samples:
+        window.SetMultiSamples(0)
+    occlusion = part_vertex_occlusion(model, look.occlusion_radius_mm) if look.shading != "legacy" else {}
+    for view in views:
+        dress_view(view, look, occlusion.get(view.part, np.ones(model.n_vertices)))
+
+
+def dress_view(view: PartView, look, occlusion: np.ndarray) -> None:
+    """Shade one mesh as ``look`` (an :class:`engine.outputs.looks.Look`) shades it in ``render``.
+
+    A physically based look gets the engine's shader and, as the point array it reads, the baked
+    occlusion of the mesh's vertices (``occlusion``: the part's value per model vertex); ``legacy`` gets
+    the renderer's Phong materials of the part (its colours stay the viewport's).
+    """
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+
+    from engine.outputs.look_actors import OCCLUSION_ARRAY, dress_actor
+    from engine.outputs.part_materials import part_material
+
+    if look.shading == "legacy":
+        _, ambient, diffuse, specular, power = part_material(view.part)
+        prop = view.actor.GetProperty()
+        prop.SetInterpolationToPhong()
+        prop.SetAmbient(ambient)
+        prop.SetDiffuse(diffuse)
+        prop.SetSpecular(specular)
+        prop.SetSpecularPower(power)
+        return
+    values = numpy_to_vtk(np.ascontiguousarray(occlusion[view.vertex_indices], dtype=np.float32), deep=True)
+    values.SetName(OCCLUSION_ARRAY)
+    view.mesh.GetPointData().AddArray(values)
+    old = view.actor.GetMapper()
+    if not hasattr(old, "MapDataArrayToVertexAttribute"):
+        # pyvista's vtkDataSetMapper: the shader's attribute needs a polydata mapper
+        from vtkmodules.vtkRenderingCore import vtkPolyDataMapper
+
+        mapper = vtkPolyDataMapper()
+        mapper.ShallowCopy(old)                   # colours: the same array, mode and visibility
+        mapper.SetInputData(view.mesh)
+        view.actor.SetMapper(mapper)
+    if view.texture is not None:
+        view.texture.UseSRGBColorSpaceOn()         # decoded to linear light, as the renderer's PBR does
+    dress_actor(view.actor, look, view.part)
+
+
+def show_texture(view: PartView, on: bool, physically_based: bool) -> None:
+    """Draw a textured mesh with its image (``on``) or with its vertex colours; in a physically based look
+    the image is the PBR base colour, otherwise the actor's texture."""
+    view.actor.GetMapper().SetScalarVisibility(not on)
+    prop = view.actor.GetProperty()
+    if physically_based:
+        view.actor.SetTexture(None)
+        if on:
+            prop.SetBaseColorTexture(view.texture)
+        else:
+            prop.RemoveTexture("albedoTex")
+    else:
+        view.actor.SetTexture(view.texture if on else None)
+    prop.SetColor(1.0, 1.0, 1.0)
+
+
+def camera_lights(renderer, look) -> None:
+    """The renderer's lights for ``look``: the legacy look's three camera lights (a physically based look
+    brings its own in its shader and needs one VTK light only for VTK to write lighting code)."""
+    from vtkmodules.vtkRenderingCore import vtkLight
+
+    from engine.outputs.looks import Light
+
+    renderer.RemoveAllLights()
+    lights = look.lights if look.shading == "legacy" else [Light((0.0, 0.0, 1.0))]
+    for light in lights:
+        vtk_light = vtkLight()
+        vtk_light.SetLightTypeToCameraLight()
+        vtk_light.SetPosition(*light.direction)
+        vtk_light.SetFocalPoint(0.0, 0.0, 0.0)
+        vtk_light.SetIntensity(light.intensity)
+        renderer.AddLight(vtk_light)
