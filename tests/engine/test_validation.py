@@ -157,7 +157,7 @@ def test_a_speaking_video_shows_the_lips_the_engine_meant(tmp_path):
     assert verdict.lips.r >= 0.9, verdict.lips
     assert verdict.lips.closures_intended >= 4
     assert verdict.lips.closures_seen == verdict.lips.closures_intended
-    times, aperture, gaps = verdict.aperture_trace
+    times, _aperture, gaps = verdict.aperture_trace
     assert len(times) == verdict.frames and gaps is not None
 
 
