@@ -4,7 +4,8 @@
 Run from the project root::
 
     .venv/bin/python benchmarks/bench_video.py [--seconds 10] [--fps 30] [--size 640x480]
-                                               [--antialias off|on|both] [--json out.json]
+                                               [--antialias off|on|both] [--looks legacy,portrait]
+                                               [--json out.json]
 
 The default head (``engine.load_model()``) moves for ``--seconds`` at
 ``--fps``: the jaw opening and closing three times a second, the head turning,
@@ -21,6 +22,12 @@ does. Stages, each timed on its own and then all together:
   settings of :mod:`engine.outputs.video_writer`), wall clock and ffmpeg's CPU time;
 * **write_video** — the real thing, end to end: drawing and encoding
   overlap (ffmpeg runs in its own process), so its time is less than the sum.
+
+Every look of ``--looks`` (docs/looks.md) is measured with every anti-aliasing
+setting, one after the other in one run, and a last table puts them side by
+side, each against the first (``legacy`` without anti-aliasing: the videos as
+they were made before looks). Anti-aliasing "on" is the look's own method:
+8× multisampling for ``legacy``, FXAA on the read-back frame for the others.
 
 Real-time factor = wall-clock time / video length (below 1: faster than real
 time). The machine is shared: the load average and how much CPU two busy
@@ -82,7 +89,8 @@ def children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scratch: Path) -> dict:
+def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scratch: Path,
+        look: str = "legacy") -> dict:
     model = engine.load_model()
     times, names, values = motion(model, seconds, fps)
     frames = len(times)
@@ -92,7 +100,7 @@ def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scra
     audio = tone(seconds)
 
     t = time.perf_counter()
-    renderer = FrameRenderer(model, size=size, antialias=antialias)
+    renderer = FrameRenderer(model, size=size, antialias=antialias, look=look)
     renderer.render(model.vertices)                       # first frame: shaders compiled
     setup = time.perf_counter() - t
 
@@ -128,7 +136,7 @@ def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scra
     out = scratch / "write_video.mp4"
     cpu, children = time.process_time(), children_cpu()
     stats = video_writer.write_video(out, model, times, values, names, fps, audio=audio, sample_rate=16000,
-                              size=size, antialias=antialias)
+                              size=size, antialias=antialias, look=look)
     own_cpu = time.process_time() - cpu
     info = video_probe.probe(out)
     whole = {
@@ -141,7 +149,7 @@ def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scra
         "video_duration_s": info.video_duration, "audio_duration_s": info.audio_duration,
     }
     return {
-        "antialias": antialias, "frames": frames, "seconds": seconds, "fps": fps, "size": list(size),
+        "look": look, "antialias": antialias, "frames": frames, "seconds": seconds, "fps": fps, "size": list(size),
         "setup_s": setup,
         "deform_ms_per_frame": 1000 * deform / frames,
         "render_ms_per_frame": 1000 * render / frames, "render_cpu_ms_per_frame": 1000 * render_cpu / frames,
@@ -164,8 +172,8 @@ def available_cores(seconds: float = 1.0) -> float:
 
 
 def report(r: dict) -> None:
-    print(f"\n== {r['seconds']:g} s at {r['fps']:g} fps, {r['size'][0]}x{r['size'][1]}, "
-          f"antialias {'on (8x MSAA)' if r['antialias'] else 'off'}: {r['frames']} frames "
+    print(f"\n== {r['look']}, {r['seconds']:g} s at {r['fps']:g} fps, {r['size'][0]}x{r['size'][1]}, "
+          f"antialias {_method(r) if r['antialias'] else 'off'}: {r['frames']} frames "
           f"(load average {r['load_average'][0]:.2f}; {r['available_cores']:.2f} of {os.cpu_count()} cores "
           f"free for two busy processes)")
     print(f"  setup (renderer, first frame)   {r['setup_s']:7.2f} s")
@@ -185,21 +193,45 @@ def report(r: dict) -> None:
     print(f"  durations: video {w['video_duration_s']:.3f} s, audio {w['audio_duration_s']:.3f} s")
 
 
+def _method(r: dict) -> str:
+    from engine.outputs.looks import look_from
+
+    return {"msaa": "on (8x MSAA)", "fxaa": "on (FXAA)", "none": "on (none)"}[look_from(r["look"]).antialias]
+
+
+def side_by_side(results: list[dict]) -> None:
+    """One line per run: CPU time per frame drawn and per video second, each against the first run's."""
+    first = results[0]
+    print(f"\n== side by side, {first['size'][0]}x{first['size'][1]} (against {first['look']}, antialias "
+          f"{'on' if first['antialias'] else 'off'})")
+    print(f"  {'look':10s} {'antialias':14s} {'render CPU ms/frame':>20s} {'x':>6s} {'CPU-s/video-s':>14s} {'x':>6s}")
+    for r in results:
+        cpu = r["render_cpu_ms_per_frame"]
+        whole = r["write_video"]["cpu_per_video_second"]
+        print(f"  {r['look']:10s} {_method(r) if r['antialias'] else 'off':14s} {cpu:20.1f} "
+              f"{cpu / first['render_cpu_ms_per_frame']:6.2f} {whole:14.2f} "
+              f"{whole / first['write_video']['cpu_per_video_second']:6.2f}")
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seconds", type=float, default=10.0)
     parser.add_argument("--fps", type=float, default=30.0)
     parser.add_argument("--size", default="640x480", help="WxH (default 640x480)")
     parser.add_argument("--antialias", choices=("off", "on", "both"), default="both")
+    parser.add_argument("--looks", default="legacy,portrait", help="looks to measure, comma-separated "
+                                                                   "(default legacy,portrait)")
     parser.add_argument("--json", default=None, metavar="OUT", help="also write the figures as JSON")
     args = parser.parse_args(argv)
     size = tuple(int(s) for s in args.size.lower().split("x"))
     modes = {"off": [False], "on": [True], "both": [False, True]}[args.antialias]
     results = []
     with tempfile.TemporaryDirectory(prefix="bench-video-") as scratch:
-        for antialias in modes:
-            results.append(run(args.seconds, args.fps, size, antialias, Path(scratch)))
-            report(results[-1])
+        for look in args.looks.split(","):
+            for antialias in modes:
+                results.append(run(args.seconds, args.fps, size, antialias, Path(scratch), look))
+                report(results[-1])
+    side_by_side(results)
     if args.json:
         Path(args.json).write_text(json.dumps(results, indent=2) + "\n")
     return 0
