@@ -54,4 +54,5 @@ def test_void_calls_keep_the_reference_count_of_none() -> None:
         f"{CALLS:,} calls of void Qt methods ended the interpreter (status {done.returncode}); "
         f"the binding loses references (pin PySide6 to a release without the bug):\n{done.stderr[-2000:]}")
     before, after = (int(n) for n in done.stdout.split())
-    assert after >= before, f"None lost {before - after} references in {CALLS:,} void calls"
+    # the bug loses one reference per call (100,000); the interpreter's own bookkeeping moves a few either way
+    assert after >= before - 100, f"None lost {before - after} references in {CALLS:,} void calls"
