@@ -22,12 +22,34 @@ SEGFAULTING_VTK = ("# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_G
                    "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 900000\nCELL_TYPES 1\n10\n")
 
 
-def test_a_file_that_crashes_vtk_is_an_error_naming_it(tmp_path):
+def crashing_interpreter(folder: Path) -> str:
+    """A stand-in for the child's Python that dies of SIGSEGV at once, as VTK's reader does on
+    :data:`SEGFAULTING_VTK` nearly always (a read past the end crashes only where that memory is unmapped)."""
+    script = folder / "python-that-segfaults"
+    script.write_text("#!/bin/sh\nkill -SEGV $$\n")
+    script.chmod(0o755)
+    return str(script)
+
+
+def test_a_reader_that_crashes_is_an_error_naming_the_file(tmp_path, monkeypatch):
     path = tmp_path / "broken.vtk"
     path.write_text(SEGFAULTING_VTK)
+    monkeypatch.setattr(sys, "executable", crashing_interpreter(tmp_path))
     with pytest.raises(MeshImportError, match=r"VTK's reader crashed on this file \(SIGSEGV\)") as info:
         import_mesh(path)
     assert str(info.value).startswith(str(path))
+
+
+def test_a_file_that_crashes_vtk_is_an_error_naming_it(tmp_path):
+    path = tmp_path / "broken.vtk"
+    path.write_text(SEGFAULTING_VTK)
+    with pytest.raises(MeshImportError) as info:
+        import_mesh(path)
+    # VTK crashes on it nearly always; where the memory it reads past the end happens to be mapped,
+    # the face check that follows refuses the file instead (seen on CI's machine)
+    message = str(info.value)
+    assert message.startswith((f"{path}: VTK's reader crashed on this file (SIGSEGV)",
+                               f"{path}: a face names a vertex outside")), message
 
 
 def test_the_cli_says_one_line_where_vtk_crashes(tmp_path):
