@@ -30,6 +30,7 @@ import numpy as np
 import numpy.typing as npt
 
 from engine.errors import UserError
+from engine.formats.file_beside import FileOutside, file_beside
 
 GLB_MAGIC, GLB_JSON, GLB_BIN = 0x46546C67, 0x4E4F534A, 0x004E4942
 COMPONENTS = {5120: np.int8, 5121: np.uint8, 5122: np.int16, 5123: np.uint16, 5125: np.uint32, 5126: np.float32}
@@ -148,12 +149,11 @@ def document_file(path: Path, uri: str) -> Path:
     if "\\" in name or "\0" in name:
         raise GltfFileError(f"'{shown}' holds a {'backslash' if chr(92) in name else 'NUL'}, which a file URI "
                             "does not (write '/' between folders)")
-    folder = Path(os.path.realpath(path.parent))
-    target = Path(os.path.realpath(folder / name))
-    if not target.is_relative_to(folder):
+    try:
+        return file_beside(path, name)
+    except FileOutside:
         raise GltfFileError(f"'{shown}' leaves the document's folder (only files in {path.parent}, or in folders "
-                            "inside it, are read)")
-    return target
+                            "inside it, are read)") from None
 
 
 def load_buffer(path: Path, i: int, spec: dict, embedded: dict[int, bytes], fail: Callable[[str], NoReturn]) -> bytes:

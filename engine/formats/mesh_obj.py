@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from engine.errors import MeshImportError
+from engine.formats.file_beside import FileOutside, file_beside
 from engine.formats.mesh_data import MeshMaterial, MeshTexture, RawMesh
 
 _DEFAULT_PART = "surface"
@@ -106,7 +107,17 @@ class _ObjReader:
             name = " ".join(tokens[1:])
             self.current_material = _slot(name, self.materials, self.material_index)
         elif key == "mtllib":
-            self.libraries.append(" ".join(tokens[1:]))
+            self.library(" ".join(tokens[1:]), line)
+
+    def library(self, name: str, line: int) -> None:
+        """An ``mtllib`` file, if it lies beside the OBJ (or in a folder inside its folder)."""
+        try:
+            file_beside(self.path, name.replace("\\", "/"))
+        except FileOutside as exc:
+            self.notes.append(f"line {line}: material library {exc}: not read, its materials have no images "
+                              "(copy it beside the OBJ)")
+            return
+        self.libraries.append(name)
 
     def face(self, corners: list[str], line: int) -> None:
         if len(corners) < 3:
@@ -154,7 +165,7 @@ class _ObjReader:
         notes = self.notes + [f"material library '{name}' not found beside the file: its materials have no "
                               "images" for name in self.libraries if not (self.path.parent / name).is_file()]
         if self.materials:
-            images = _material_images(self.path, self.libraries)
+            images = _material_images(self.path, self.libraries, notes)
             for material in self.materials:
                 material.image = images.get(material.name)
         if (len(corner_uv) and not np.all(np.isnan(corner_uv))) or self.materials:
@@ -170,7 +181,7 @@ def _slot(name: str, materials: list[MeshMaterial], index: dict[str, int]) -> in
     return index[name]
 
 
-def _material_images(obj_path: Path, libraries: list[str]) -> dict[str, str]:
+def _material_images(obj_path: Path, libraries: list[str], notes: list[str]) -> dict[str, str]:
     """Material name → colour image path (``map_Kd``) from the MTL files that exist; a missing or
     unreadable MTL file leaves its materials without images (the mesh itself is still fine)."""
     images: dict[str, str] = {}
@@ -184,7 +195,7 @@ def _material_images(obj_path: Path, libraries: list[str]) -> dict[str, str]:
         except OSError:
             continue
         current = None
-        for raw in text.splitlines():
+        for at, raw in enumerate(text.splitlines(), start=1):
             tokens = raw.split("#", 1)[0].split()
             if not tokens:
                 continue
@@ -192,8 +203,13 @@ def _material_images(obj_path: Path, libraries: list[str]) -> dict[str, str]:
                 current = " ".join(tokens[1:])
             elif tokens[0].lower() == "map_kd" and current is not None and current not in images:
                 name = _map_file_name(tokens[1:])
-                if name:
-                    images[current] = str(mtl.parent / name.replace("\\", "/"))
+                if not name:
+                    continue
+                try:
+                    images[current] = str(file_beside(mtl, name.replace("\\", "/")))
+                except FileOutside as exc:
+                    notes.append(f"{mtl.name} line {at}: image {exc}: material '{current}' has none "
+                                 "(copy the image beside the OBJ)")
     return images
 
 

@@ -30,6 +30,7 @@ from typing import NoReturn
 import numpy as np
 
 from engine.errors import MeshImportError
+from engine.formats.file_beside import FileOutside, file_beside
 from engine.formats.mesh_data import MeshMaterial, MeshTexture, RawMesh
 from engine.model.cells import cell_starts
 
@@ -387,7 +388,7 @@ def _assemble(path: Path, values: _Values, elements: list[_Element], comments: l
     elif corner_uv is not None and vertex_uv is not None:
         missing = np.isnan(corner_uv[:, 0])
         corner_uv[missing] = vertex_uv[flat[missing]]
-    texture = None if corner_uv is None else _texture(path, corner_uv, len(sizes), comments)
+    texture = None if corner_uv is None else _texture(path, corner_uv, len(sizes), comments, notes)
     return RawMesh(xyz, faces, ["surface"], np.zeros(len(sizes), dtype=np.int64), texture, notes)
 
 
@@ -433,10 +434,14 @@ def _strip_triangles(flat: np.ndarray, sizes: np.ndarray) -> np.ndarray:
     return np.concatenate(out).astype(np.int64) if out else np.zeros((0, 3), dtype=np.int64)
 
 
-def _texture(path: Path, corner_uv: np.ndarray, n_faces: int, comments: list[str]) -> MeshTexture:
+def _texture(path: Path, corner_uv: np.ndarray, n_faces: int, comments: list[str],
+             notes: list[str]) -> MeshTexture:
     image = next((c.split(None, 1)[1].strip() for c in comments
                   if c.lower().startswith("texturefile") and len(c.split(None, 1)) > 1), None)
-    if not image:
-        return MeshTexture(corner_uv, [], np.full(n_faces, -1, dtype=np.int64))
-    return MeshTexture(corner_uv, [MeshMaterial("texture", str(path.parent / image))],
-                       np.zeros(n_faces, dtype=np.int64))
+    if image:
+        try:
+            image_file = file_beside(path, image.replace("\\", "/"))
+            return MeshTexture(corner_uv, [MeshMaterial("texture", str(image_file))], np.zeros(n_faces, dtype=np.int64))
+        except FileOutside as exc:
+            notes.append(f"texture file {exc}: not read (copy the image beside the PLY)")
+    return MeshTexture(corner_uv, [], np.full(n_faces, -1, dtype=np.int64))
