@@ -225,18 +225,19 @@ def write_tracks_site(model: Model, tracks: str | Path, audio: str | Path, out: 
 
     The tracks are resampled at their own frame rate from 0 ms (held before their first row and after
     their last) until the later of their end and the audio's."""
-    from engine.speech.synthesis import read_phones_csv, read_wav
+    from engine.speech.synthesis import read_phones_csv, read_wav_bytes, wav_layout
     from engine.timeline.tracks import read_tracks_csv
 
     table = read_tracks_csv(tracks, model)
-    samples, rate = read_wav(audio)
+    wav = read_wav_bytes(audio)             # read once, bounded; checked as every WAV is, then copied unchanged
+    layout = wav_layout(wav, audio)
     segments = read_phones_csv(phones) if phones is not None else []
-    audio_ms = 1000.0 * len(samples) / rate
+    audio_ms = 1000.0 * layout.frames / layout.rate
     end_ms = max(table.end, audio_ms, segments[-1].end_ms if segments else 0.0)
     frame_ms = 1000.0 / table.fps
     count = max(1, int(np.ceil(end_ms / frame_ms - 1e-9)) + 1)
     times = np.arange(count) * frame_ms
-    return write_site(model, table.parameters, table.sample(times), frame_ms, Path(audio).read_bytes(), out,
+    return write_site(model, table.parameters, table.sample(times), frame_ms, wav, out,
                       phones=segments, words=words_of(segments), duration_ms=end_ms, size=size, look=look)
 
 
