@@ -50,6 +50,10 @@ def main(argv: list[str] | None = None) -> int:
         return exc.code if isinstance(exc.code, int) else 0
     except KeyboardInterrupt:
         return 130
+    except MemoryError:  # a count or size in the input asking for far more than any real file needs
+        say_error("out of memory: the input asks for more memory than this machine has (a count, size or "
+                  "duration in it may be wrong)")
+        return 2
     except BrokenPipeError:  # e.g. `artificial-person info | head`
         sys.stderr.close()
         return 0

@@ -404,3 +404,25 @@ def test_default_head_renders_with_the_face_in_it(default_head, tmp_path):
     assert result.returncode == 0, result.stderr
     assert result.stderr == ""
     _assert_face_in_picture(read_png(out))
+
+
+#: A command run with the memory it may still take capped at 8 MB more than it had once imported: loading the
+#: default head then fails with a real MemoryError, as a damaged count in an input makes it fail.
+_OUT_OF_MEMORY = """
+import resource, sys
+import engine.cli
+engine.cli.build_parser()
+with open("/proc/self/statm") as statm:
+    used = int(statm.read().split()[0]) * resource.getpagesize()
+resource.setrlimit(resource.RLIMIT_AS, (used + 8 * 2**20, resource.RLIM_INFINITY))
+sys.exit(engine.cli.main(["pose", "-o", sys.argv[1]]))
+"""
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="reads /proc/self/statm and caps RLIMIT_AS")
+def test_running_out_of_memory_is_one_error_line_not_a_traceback(tmp_path):
+    result = subprocess.run([sys.executable, "-c", _OUT_OF_MEMORY, str(tmp_path / "pose.npz")],
+                            capture_output=True, text=True, timeout=120, check=False)
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.startswith("error: out of memory:") and result.stderr.count("\n") == 1, result.stderr
+    assert not (tmp_path / "pose.npz").exists()
