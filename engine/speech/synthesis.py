@@ -144,20 +144,21 @@ WAV_RATES = (1_000, 768_000)
 MAX_WAV_CHANNELS = 256
 MAX_WAV_CHUNKS = 10_000
 """Chunks before the samples (a WAV has a handful: ``fmt``, ``LIST``, ``fact``, ``bext``)."""
-_PCM, _EXTENSIBLE = 1, 0xFFFE
+_PCM, _FLOAT, _EXTENSIBLE = 1, 3, 0xFFFE
 _BLOCK_FRAMES = 1 << 18
 
 
 @dataclass(frozen=True)
 class WavLayout:
-    """How a PCM WAV file's samples lie in its bytes: ``frames`` of ``channels`` integers of ``width`` bytes
-    from byte ``start`` on, at ``rate`` frames a second."""
+    """How a PCM WAV file's samples lie in its bytes: ``frames`` of ``channels`` samples of ``width`` bytes
+    from byte ``start`` on, at ``rate`` frames a second; integers, or IEEE floats where ``floating``."""
 
     channels: int
     width: int
     rate: int
     start: int
     frames: int
+    floating: bool = False
 
     @property
     def duration_ms(self) -> float:
@@ -165,10 +166,11 @@ class WavLayout:
 
 
 def wav_layout(data: bytes, source: str | Path = "<wav>") -> WavLayout:
-    """The layout of an integer-PCM WAV file's bytes (RIFF ``WAVE``; format 1 or extensible PCM; 8, 16, 24
-    or 32 bits; :data:`WAV_RATES`; at most :data:`MAX_WAV_CHANNELS` channels), or a :class:`SynthesisError`
-    naming ``source``. Every chunk's size is checked against the bytes that follow it before anything is
-    read; a data chunk longer than the file (a recording cut short) holds the whole frames that are there.
+    """The layout of a PCM WAV file's bytes (RIFF ``WAVE``; integer PCM, format 1 or extensible, of 8, 16,
+    24 or 32 bits, or IEEE float, format 3 or extensible, of 32 or 64 bits; :data:`WAV_RATES`; at most
+    :data:`MAX_WAV_CHANNELS` channels), or a :class:`SynthesisError` naming ``source``. Every chunk's size is
+    checked against the bytes that follow it before anything is read; a data chunk longer than the file (a
+    recording cut short) holds the whole frames that are there.
     """
     def refuse(what: str) -> SynthesisError:
         return SynthesisError(f"not a PCM WAV file: {what}", file=source)
@@ -186,7 +188,7 @@ def wav_layout(data: bytes, source: str | Path = "<wav>") -> WavLayout:
             if layout is None:
                 raise refuse("its samples (the data chunk) come before their format (the 'fmt ' chunk)")
             frames = min(size, left) // (layout.channels * layout.width)
-            return WavLayout(layout.channels, layout.width, layout.rate, body, frames)
+            return WavLayout(layout.channels, layout.width, layout.rate, body, frames, layout.floating)
         if size > left:
             raise refuse(f"its '{shown}' chunk claims {size} bytes, but only {left} follow")
         if name == b"fmt ":
@@ -205,23 +207,28 @@ def _wav_format(chunk: bytes, refuse: Callable[[str], SynthesisError]) -> WavLay
     bits = int.from_bytes(chunk[14:16], "little")
     if tag == _EXTENSIBLE and len(chunk) >= 26:
         tag = int.from_bytes(chunk[24:26], "little")             # the sub-format GUID's first two bytes
-    if tag != _PCM:
-        raise refuse(f"its samples are of format {tag}, not integer PCM (format 1)")
+    if tag not in (_PCM, _FLOAT):
+        raise refuse(f"its samples are of format {tag}, not integer PCM (format 1) or IEEE float (format 3)")
     if not 1 <= channels <= MAX_WAV_CHANNELS:
         raise refuse(f"{channels} channels (a WAV has 1 to {MAX_WAV_CHANNELS})")
     if not WAV_RATES[0] <= rate <= WAV_RATES[1]:
         raise refuse(f"a sample rate of {rate} Hz (a WAV's is {WAV_RATES[0]} to {WAV_RATES[1]} Hz)")
     width = (bits + 7) // 8
+    if tag == _FLOAT:
+        if bits not in (32, 64):
+            raise refuse(f"{bits} bits a float sample (IEEE float PCM has 32 or 64)")
+        return WavLayout(channels, width, rate, 0, 0, floating=True)
     if not 1 <= width <= 4:
         raise refuse(f"{bits} bits a sample (integer PCM has 8, 16, 24 or 32)")
     return WavLayout(channels, width, rate, 0, 0)
 
 
 def decode_wav(data: bytes, source: str | Path = "<wav>") -> tuple[np.ndarray, int]:
-    """Samples (float32 mono in [-1, 1]) and sample rate of an integer-PCM WAV file's bytes (:func:`wav_layout`).
+    """Samples (float32 mono in [-1, 1]) and sample rate of a PCM WAV file's bytes (:func:`wav_layout`).
 
     Several channels are averaged into one. The samples are converted a block at a time into the one array
-    returned, so the memory used beyond ``data`` is 4 bytes a frame.
+    returned, so the memory used beyond ``data`` is 4 bytes a frame. Float samples beyond ±1 (a mix with
+    headroom) are clipped there, as a player does; a NaN or an infinity is an error naming its time.
     """
     layout = wav_layout(data, source)
     out = np.empty(layout.frames, dtype=np.float32)
@@ -231,10 +238,25 @@ def decode_wav(data: bytes, source: str | Path = "<wav>") -> tuple[np.ndarray, i
     for first in range(0, layout.frames, _BLOCK_FRAMES):
         count = min(_BLOCK_FRAMES, layout.frames - first)
         begin = layout.start + first * frame
+        if layout.floating:
+            block = np.frombuffer(view[begin:begin + count * frame], dtype=f"<f{layout.width}")
+            _check_finite(block, first, layout, source)
+            floats = block.reshape(count, layout.channels)
+            values = floats[:, 0] if layout.channels == 1 else floats.mean(axis=1)
+            out[first:first + count] = np.clip(values, -1.0, 1.0)
+            continue
         ints = _pcm_integers(view[begin:begin + count * frame], layout.width).reshape(count, layout.channels)
         values = ints[:, 0] if layout.channels == 1 else ints.mean(axis=1)
         out[first:first + count] = values * scale
     return out, layout.rate
+
+
+def _check_finite(block: np.ndarray, first_frame: int, layout: WavLayout, source: str | Path) -> None:
+    bad = np.flatnonzero(~np.isfinite(block))
+    if len(bad):
+        frame = first_frame + int(bad[0]) // layout.channels
+        raise SynthesisError(f"not a PCM WAV file: the sample at {1000.0 * frame / layout.rate:.3f} ms is "
+                             f"{block[bad[0]]}, not a number a sound can have", file=source)
 
 
 def _pcm_integers(raw: memoryview, width: int) -> np.ndarray:

@@ -142,7 +142,13 @@ def test_nothing_in_the_engine_reads_a_wav_but_the_one_reader():
     (riff(chunk(b"fmt ", fmt(rate=0xFFFFFFFF)), chunk(b"data", PCM_SAMPLES)), "a sample rate of 4294967295 Hz"),
     (riff(chunk(b"fmt ", fmt(bits=0)), chunk(b"data", PCM_SAMPLES)), "0 bits a sample"),
     (riff(chunk(b"fmt ", fmt(bits=64)), chunk(b"data", PCM_SAMPLES)), "64 bits a sample"),
-    (riff(chunk(b"fmt ", fmt(tag=3, bits=32)), chunk(b"data", PCM_SAMPLES)), "of format 3, not integer PCM"),
+    (riff(chunk(b"fmt ", fmt(tag=6, bits=8)), chunk(b"data", PCM_SAMPLES)),
+     "of format 6, not integer PCM (format 1) or IEEE float (format 3)"),
+    (riff(chunk(b"fmt ", fmt(tag=3, bits=16)), chunk(b"data", PCM_SAMPLES)), "16 bits a float sample"),
+    (riff(chunk(b"fmt ", fmt(tag=3, bits=32)), chunk(b"data", np.array([0, 0.5, np.nan], "<f4").tobytes())),
+     "the sample at 0.125 ms is nan"),
+    (riff(chunk(b"fmt ", fmt(tag=3, bits=64)), chunk(b"data", np.array([np.inf], "<f8").tobytes())),
+     "the sample at 0.000 ms is inf"),
     (riff(chunk(b"fmt ", fmt(tag=0xFFFE)), chunk(b"data", PCM_SAMPLES)), "of format 65534"),
     (riff(*[chunk(b"junk", b"")] * 10_001, chunk(b"fmt ", fmt()), chunk(b"data", b"")), "more than 10000 chunks"),
 ])
@@ -165,6 +171,42 @@ def test_odd_chunks_are_padded_and_extensible_pcm_is_read(tmp_path):
     data = riff(chunk(b"LIST", b"abc"), chunk(b"fmt ", fmt(tag=0xFFFE, extra=guid)), chunk(b"data", PCM_SAMPLES))
     samples, rate = read_wav(wav_file(tmp_path, data))
     assert rate == 16000 and np.array_equal(samples, np.frombuffer(PCM_SAMPLES, "<i2") / np.float32(32768))
+
+
+FLOAT_SAMPLES = np.sin(np.arange(1600) / 5) * 0.4
+
+
+@pytest.mark.parametrize("bits, extensible", [(32, False), (64, False), (32, True)])
+def test_ieee_float_wavs_are_read(tmp_path, bits, extensible):
+    """32-bit float is what Audacity, Praat and most DAWs write by default; 64-bit what numpy/scipy write."""
+    extra = (struct.pack("<HH", 22, bits) + struct.pack("<I", 4) + struct.pack("<H", 3) + bytes(14)
+             if extensible else b"")
+    body = FLOAT_SAMPLES.astype(f"<f{bits // 8}").tobytes()
+    data = riff(chunk(b"fmt ", fmt(tag=0xFFFE if extensible else 3, bits=bits, extra=extra)), chunk(b"data", body))
+    path = wav_file(tmp_path, data)
+    samples, rate = read_wav(path)
+    assert rate == 16000 and samples.dtype == np.float32
+    np.testing.assert_allclose(samples, FLOAT_SAMPLES, atol=1e-7)
+    layout = read_wav_layout(path)
+    assert layout.floating and layout.width == bits // 8 and layout.frames == 1600
+
+
+def test_float_samples_beyond_one_are_clipped_and_stereo_is_averaged(tmp_path):
+    stereo = np.array([[1.5, 0.5], [-3.0, -1.0], [0.25, 0.75]], "<f4")
+    data = riff(chunk(b"fmt ", fmt(tag=3, bits=32, channels=2)), chunk(b"data", stereo.tobytes()))
+    samples, _ = read_wav(wav_file(tmp_path, data))
+    np.testing.assert_allclose(samples, [1.0, -1.0, 0.5])
+
+
+def test_say_speaks_over_a_float_recording(tmp_path):
+    """The whole path a lab takes with an Audacity export: say --audio TAKE.wav --labels … -o OUT.xml."""
+    rate = 16000
+    take = (np.sin(np.arange(rate * 2) / 7) * 0.3).astype("<f4")
+    audio = wav_file(tmp_path, riff(chunk(b"fmt ", fmt(rate=rate, tag=3, bits=32)), chunk(b"data", take.tobytes())))
+    labels = tmp_path / "take.csv"
+    labels.write_text("start_ms,end_ms,phone,word\n0,500,p,pappa\n500,1000,a,\n1000,2000,pau,\n")
+    result = run("say", "--audio", audio, "--labels", labels, "-o", tmp_path / "out.xml")
+    assert result.returncode == 0, result.stderr
 
 
 @pytest.mark.parametrize("width", [1, 2, 3, 4])
