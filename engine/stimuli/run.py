@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import time
 from collections.abc import Callable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
@@ -78,6 +79,7 @@ def make_set(design: Design, outdir: str | Path, workers: int | None = None, sch
     if ((outdir / MANIFEST).exists() or (outdir / RECORDS).is_dir()) and not resume:
         raise UserError("this folder already holds a stimulus set: give --resume to finish or check it, "
                         "or choose another folder", file=outdir)
+    created = not outdir.exists()
     outdir.mkdir(parents=True, exist_ok=True)
     if resume:                                   # a killed run's temporaries: finished or removed
         finish_interrupted_writes(outdir)
@@ -90,13 +92,27 @@ def make_set(design: Design, outdir: str | Path, workers: int | None = None, sch
     report(len(done), total, f"{len(done)} already made" if done else "starting")
     if todo:
         runner = _run_on_dask if scheduler else _run_locally
-        for record in runner(design, todo, outdir, workers, scheduler):
-            done[record["id"]] = record
-            report(len(done), total, f"stimulus {record['id']}")
+        try:
+            for record in runner(design, todo, outdir, workers, scheduler):
+                done[record["id"]] = record
+                report(len(done), total, f"stimulus {record['id']}")
+        except UserError as exc:
+            _leave_tidy(exc, outdir, created, len(done), total)
+            raise
     records = [done[s.id] for s in design.stimuli]
     write_set_files(design, outdir, records)
     failed = [r["id"] for r in records if not r.get("check", {}).get("ok", True)]
     return SetResult(records, len(todo), total - len(todo), failed)
+
+
+def _leave_tidy(exc: UserError, outdir: Path, created: bool, made: int, total: int) -> None:
+    """After a stimulus failed: a folder this run made and filled with nothing finished is removed (no empty
+    set left behind); where stimuli were finished, the error says they are kept and how to go on."""
+    if created and made == 0:
+        shutil.rmtree(outdir, ignore_errors=True)
+    elif made:
+        exc.message += (f" ({made} of {total} stimuli were finished and are kept in {outdir}: fix this and run "
+                        "again with --resume to make the rest)")
 
 
 def default_workers() -> int:

@@ -334,3 +334,48 @@ def test_the_video_check_sees_frames_shifted_off_the_face(tmp_path, head):
     late = np.vstack([np.repeat(values[:1], 2, axis=0), values[:-2]])        # the face two frames later
     assert _check_video(video, vertex_motion(head, late), 25.0, 0.0) == {"measured_video_lag_frames": -2,
                                                                          "video_ok": False}
+
+
+_FAILS_AT = """
+[factors]
+text = [{texts}]
+audio_text = ["Tiili."]
+align_phone = ["i"]
+
+[output]
+kinds = ["wav"]
+"""
+
+
+@needs_festival
+def test_a_stimulus_that_fails_first_leaves_no_empty_set_folder(tmp_path):
+    """'Pappa.' has no i to align at: found only when the stimulus is made, before anything is finished."""
+    (tmp_path / "d.toml").write_text(_FAILS_AT.format(texts='"Pappa."'))
+    line = assert_user_error(run("stimuli", tmp_path / "d.toml", "-o", tmp_path / "set", "--workers", "1"))
+    assert "stimulus 0001: 'Pappa.' has no 'i'" in line
+    assert not (tmp_path / "set").exists()
+
+
+@needs_festival
+def test_a_stimulus_that_fails_later_keeps_the_finished_ones_and_says_how_to_go_on(tmp_path):
+    (tmp_path / "d.toml").write_text(_FAILS_AT.format(texts='"Tiili.", "Pappa."'))
+    out = tmp_path / "set"
+    made = run("stimuli", tmp_path / "d.toml", "-o", out, "--workers", "1")
+    assert made.returncode == 2 and "Traceback" not in made.stderr, made.stderr
+    line = made.stderr.splitlines()[-1]            # after the progress line of the stimulus that was made
+    assert line.startswith("error: ") and "stimulus 0002" in line
+    assert f"1 of 2 stimuli were finished and are kept in {out}" in line
+    assert "--resume" in line and (out / "0001.wav").is_file()
+    (tmp_path / "d.toml").write_text(_FAILS_AT.format(texts='"Tiili.", "Tipi."'))
+    resumed = run("stimuli", tmp_path / "d.toml", "-o", out, "--workers", "1", "--resume")
+    assert resumed.returncode == 0, resumed.stderr
+    assert [r["text"] for r in rows(out / "manifest.csv")] == ["Tiili.", "Tipi."]
+
+
+@needs_festival
+def test_a_failing_stimulus_leaves_a_folder_the_user_made_in_place(tmp_path):
+    out = tmp_path / "mine"
+    out.mkdir()
+    (tmp_path / "d.toml").write_text(_FAILS_AT.format(texts='"Pappa."'))
+    assert_user_error(run("stimuli", tmp_path / "d.toml", "-o", out, "--workers", "1"))
+    assert out.is_dir()
