@@ -2,7 +2,8 @@
 
 Values are the **base** values (the model's defaults, changed by ``set``) plus what every running
 performance (an utterance, a command) adds at that moment, clamped to each parameter's range —
-the same rule as :class:`engine.timeline.timeline.Timeline`, with ``set`` moving the base.
+the one rule of :mod:`engine.timeline.rule`, which :class:`engine.timeline.timeline.Timeline` samples too,
+with ``set`` moving the base.
 Everything is placed on the frame clock: :meth:`LiveHead.advance` is called with each frame's
 time and returns the events that take effect in that frame, stamped with it.
 
@@ -29,10 +30,10 @@ from typing import Any
 import numpy as np
 
 from engine.commands.command_files import Activation
-from engine.commands.interpolation import interpolate
 from engine.live.protocol import RequestId
 from engine.model.model import Model
 from engine.speech.say import Speech
+from engine.timeline.rule import AnimationRule
 
 Event = dict[str, Any]
 
@@ -71,13 +72,12 @@ class LiveHead:
 
     def __init__(self, model: Model):
         self.model = model
-        self.names: list[str] = model.parameters.names
-        self._column = {name: i for i, name in enumerate(self.names)}
-        tree = model.parameters
-        self.ranges = {name: (float(tree[name].minimum), float(tree[name].maximum)) for name in self.names}
-        self._base = np.array([float(tree[name].default) for name in self.names])
-        self._minimum = np.array([self.ranges[name][0] for name in self.names])
-        self._maximum = np.array([self.ranges[name][1] for name in self.names])
+        self.rule = AnimationRule(model)
+        self.names: list[str] = self.rule.names
+        self._column = self.rule.column
+        self.ranges = {name: (float(lo), float(hi))
+                       for name, lo, hi in zip(self.names, self.rule.minimum, self.rule.maximum, strict=True)}
+        self._base = self.rule.default.copy()
         self._current = self._base.copy()
         self.performances: list[Performance] = []
         self.pending_sets: list[PendingSet] = []
@@ -175,17 +175,14 @@ class LiveHead:
             for name, value in pending.values.items():
                 self._base[self._column[name]] = value
             out.append((pending.owner, {"event": "applied", "id": pending.request_id, "t": self.t}))
-        total = self._base.copy()
+        total = self.rule.base_rows(1, self._base)
         running: list[Performance] = []
         for performance in self.performances:
             local = t - performance.start_t
             if local < 0:
                 running.append(performance)
                 continue
-            for activation, column in zip(performance.activations, performance.columns, strict=True):
-                if activation.start <= local <= activation.end:
-                    total[column] += float(interpolate(activation.interpolation, activation.times,
-                                                       activation.values, np.array([local]))[0])
+            self.rule.add(total, performance.activations, performance.columns, np.array([local]))
             while (performance.next_event < len(performance.events)
                    and performance.events[performance.next_event][0] <= local):
                 offset, fields = performance.events[performance.next_event]
@@ -199,7 +196,7 @@ class LiveHead:
             else:
                 running.append(performance)
         self.performances = running
-        self._current = np.clip(total, self._minimum, self._maximum)
+        self._current = self.rule.clamp(total)[0]
         return out
 
     def _add(self, performance: Performance) -> Performance:
@@ -207,7 +204,7 @@ class LiveHead:
         return performance
 
     def _columns(self, activations: list[Activation]) -> list[int]:
-        return [self._column[a.parameter] for a in activations]
+        return self.rule.columns(activations)
 
 
 def command_events(activations: list[Activation]) -> list[tuple[float, Event]]:

@@ -7,7 +7,8 @@ face outside what its model allows. An activation contributes nothing
 before its first key and after its last (``docs/commands.md``).
 
 Sampling is vectorised: each activation is evaluated only over the frames
-inside its own span.
+inside its own span. The rule itself lives in :mod:`engine.timeline.rule`,
+which the live head uses too.
 
 >>> from engine import load_model
 >>> from engine.commands import load_library, translate, parse_commands_text
@@ -30,12 +31,12 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from engine.commands.command_files import Activation
-from engine.commands.interpolation import interpolate
 from engine.commands.limits import LimitProblem, frame_count
 from engine.commands.translator import check_activation
 from engine.errors import UserError
 from engine.formats.atomic import atomic_write_text
 from engine.model.model import Model
+from engine.timeline.rule import AnimationRule
 from engine.timeline.tracks import tracks_csv_text
 
 
@@ -48,12 +49,8 @@ class Timeline:
         self.model = model
         self.activations = list(activations)
         self.parameters: list[str] = model.parameters.names
-        index = {name: i for i, name in enumerate(self.parameters)}
-        self._column = [index[a.parameter] for a in self.activations]
-        tree = model.parameters
-        self._default = np.array([tree[n].default for n in self.parameters], dtype=float)
-        self._minimum = np.array([tree[n].minimum for n in self.parameters], dtype=float)
-        self._maximum = np.array([tree[n].maximum for n in self.parameters], dtype=float)
+        self.rule = AnimationRule(model)
+        self._column = self.rule.columns(self.activations)
 
     @property
     def start(self) -> float:
@@ -68,19 +65,9 @@ class Timeline:
     def sample(self, times: ArrayLike) -> np.ndarray:
         """Values (len(times) × parameters, in ``self.parameters`` order) at the given times (ms)."""
         times = np.atleast_1d(np.asarray(times, dtype=float))
-        order = np.argsort(times, kind="stable")
-        sorted_times = times[order]
-        total = np.zeros((times.size, len(self.parameters)))
-        total += self._default
-        for activation, column in zip(self.activations, self._column, strict=True):
-            lo = np.searchsorted(sorted_times, activation.start, side="left")
-            hi = np.searchsorted(sorted_times, activation.end, side="right")
-            if hi <= lo:
-                continue
-            rows = order[lo:hi]
-            total[rows, column] += interpolate(activation.interpolation, activation.times, activation.values,
-                                               times[rows])
-        return np.clip(total, self._minimum, self._maximum)
+        total = self.rule.base_rows(times.size)
+        self.rule.add(total, self.activations, self._column, times)
+        return self.rule.clamp(total)
 
     def values_at(self, time: float) -> dict[str, float]:
         """Every parameter's value at one time, as a dict ready for ``Model.deform``."""
