@@ -1,8 +1,8 @@
 """A population model of the identity space: plausible people drawn at random, the same person from the same seed.
 
 :func:`draw_identity` draws one adult from population model
-:data:`POPULATION` (version 1; docs/identity.md, "Random people", says the
-same in words):
+:data:`POPULATION` (version 1; docs/population.md says the same in words,
+with the spread measured):
 
 * **sex** — a woman or a man with probability ½ each (or the one asked
   for); a woman's ``sex`` is ``|N(0, 0.1)|`` (at most 0.3), a man's 1 minus
@@ -17,14 +17,19 @@ same in words):
   0.2 … 0.8 and 0.15 … 0.85;
 * **face modifiers** — jointly Gaussian around the default (0): each
   modifier's spread ``σ`` moves its target's furthest vertex by
-  :data:`SPREAD_MM` at 1 σ (at most ``σ`` = 0.45), and two modifiers are
+  :data:`SPREAD_MM` at 1 σ (at most ``σ`` = :data:`MAX_SIGMA`, 0.4; a detail modifier — a bump,
+  a fold, one part of the nose's width, :data:`DETAIL_WORDS` — half that), and two modifiers are
   correlated by :data:`COHERENCE` × the cosine between their targets'
   displacement fields (modifiers that move the same skin the same way vary
   together: a wide nose is wide at the bridge, the wings and the tip); each
-  is cut at ±2.5 σ; a modifier made per side gets a small asymmetry,
-  ``N(0, (0.2 σ)²)`` per side; the single-target head and chin shapes
-  (``head-oval`` …) are ``|N(0, σ)|``; modifiers that place or turn the whole
-  head, and the neck's, are not drawn (they are pose, not face);
+  is cut at ±2.5 σ; the shapes around the mouth that the rig's lip fits
+  follow (:data:`LIP_WORDS`) at a quarter of that spread; the single-target
+  head and chin shapes (``head-oval`` …) are ``|N(0, σ)|``;
+* **not drawn** — the modifiers that place or turn the whole head, and the
+  neck's (pose, not face); the lips' own shape (:data:`LIP_SHAPE`: their
+  heights, widths, volumes, bow and philtrum); and everything one-sided:
+  faces are drawn symmetric (no per-side offsets, no sideways shift of the
+  nose or mouth, no one-eye fold), as the rig's checks expect;
 * **bounded** — the face modifiers together move no vertex more than
   :data:`MAX_FACE_MM` from where the macro parameters put it: a draw that
   would is scaled down to that.
@@ -33,7 +38,8 @@ Values given (``fixed``) are kept exactly; the face modifiers not given are
 drawn from their distribution *given* the fixed ones (the Gaussian's
 conditional), so fixing a wide nose also widens its wings. Every value is
 rounded (4 decimals; age 0.1 year), so the same seed gives the same
-identity, and the same model file byte for byte, on any machine. The random
+identity, and the same ``<identity>`` in the model file byte for byte, on any
+machine (the rig fitted to it can differ in the tenth digit). The random
 numbers come from :class:`random.Random`'s ``random()`` alone, whose
 sequence for a seed Python guarantees across versions, through one stream
 per part of the draw (fixing the sex does not change the face drawn).
@@ -61,7 +67,6 @@ from engine.identity.errors import IdentityError
 from engine.identity.parameters import (
     MACRO,
     RACES,
-    SIDES,
     Identity,
     face_modifiers,
     identity_parameter,
@@ -85,15 +90,23 @@ DETAIL_WORDS = ("width1", "width2", "width3", "compression", "greek", "hump", "c
                 "laugh-lines", "philtrum", "cleft", "eyefold", "bag", "flaring", "volume", "-ext-", "point-width",
                 "septumangle", "nubian", "temple", "push1", "push2", "height1", "height2", "height3",
                 "corner1", "corner2", "nostrils-angle", "jaw-drop", "head-age", "head-fat", "middle")
+#: Around the mouth, the shapes the rig's lip fits (closure, protrusion; docs/identity.md) hold on only
+#: near the default head's: drawn at LIPS × the spread. The lips' own shape (LIP_SHAPE) is not drawn.
+LIP_WORDS = ("mouth-angles-", "mouth-scale-vert-", "mouth-scale-depth-", "mouth-trans-backward-", "chin-prognathism-",
+             "chin-jaw-drop-")
+LIPS = 0.25
 CUT = 2.5                # a face modifier is cut at ±CUT σ
 COHERENCE = 0.8          # the correlation of two modifiers: this × the cosine of their displacement fields
-ASYMMETRY = 0.2          # each side's own offset, × σ
 MAX_FACE_MM = 15.0       # the face modifiers together move no vertex further than this
 #: Modifiers not drawn: they place or turn the whole head, or shape the neck (pose and body, not face).
+#: The lips' own shape: their heights, widths, volumes and bow (on random faces the rig's lip fits let the lips
+#: cross near the corners with these, even at a quarter of the spread; see docs/identity.md).
+LIP_SHAPE = ("mouth-lowerlip-", "mouth-upperlip-", "mouth-cupidsbow", "mouth-philtrum-")
+#: Faces are drawn symmetric (the rig's checks hold a face's two halves to be mirror images): the
+#: modifiers that move the nose or mouth sideways, or shape one eye only, are not drawn either.
 NOT_DRAWN_PREFIXES = ("head-angle-", "head-trans-", "head-back-", "measure-neck-", "neck-",
-                      "eye-eyefold-concave-convex")       # (its one target is the right eye's only)
-#: Modifiers that move a central feature sideways: drawn as an asymmetry (ASYMMETRY × the spread).
-OFF_CENTRE = ("nose-trans-in-out", "mouth-trans-in-out")
+                      "nose-trans-in-out", "mouth-trans-in-out", "eye-eyefold-concave-convex",
+                      *LIP_SHAPE)
 SEXES = ("female", "male")
 
 
@@ -360,7 +373,6 @@ class FaceModel:
     sigma: np.ndarray
     correlation: np.ndarray
     one_sided: np.ndarray          # True for single-target modifiers (0 … 1): drawn as |N(0, σ)|
-    sided: tuple[bool, ...]        # True for modifiers made per side (left/right asymmetry drawn)
 
 
 def _not_drawn() -> set[str]:
@@ -370,12 +382,13 @@ def _not_drawn() -> set[str]:
 @cache
 def face_model() -> FaceModel:
     """The joint distribution of the drawn face modifiers, from the shipped targets."""
-    spread_mm, coherence = SPREAD_MM, COHERENCE
     from engine.identity.targets import shipped_targets
+
+    spread_mm, coherence = SPREAD_MM, COHERENCE
 
     targets = shipped_targets()
     n = len(targets.hm08_vertex)
-    names, sigma, fields, one_sided, sided = [], [], [], [], []
+    names, sigma, fields, one_sided = [], [], [], []
     for m in face_modifiers():
         if m.name in _not_drawn():
             continue
@@ -388,17 +401,15 @@ def face_model() -> FaceModel:
         size = max(float(np.linalg.norm(targets.targets[f"{m.group}/{k}"][1], axis=1).max())
                    for pair in m.sides.values() for k in pair if k)
         names.append(m.name)
-        detail = any(word in m.name for word in DETAIL_WORDS)
-        factor = ASYMMETRY if m.name in OFF_CENTRE else DETAIL if detail else 1.0
+        factor = LIPS if m.name.startswith(LIP_WORDS) else DETAIL if any(w in m.name for w in DETAIL_WORDS) else 1.0
         sigma.append(min(MAX_SIGMA, spread_mm / size) * factor)
         fields.append(full.ravel() / max(float(np.linalg.norm(full)), 1e-12))
         one_sided.append(m.minimum >= 0.0)
-        sided.append(set(m.sides) == set(SIDES))
     F = np.array(fields)
     cosine = np.round(F @ F.T, 2)                          # rounded: the same on every machine
     np.fill_diagonal(cosine, 1.0)
     correlation = coherence * cosine + (1.0 - coherence) * np.eye(len(names))
-    return FaceModel(tuple(names), np.array(sigma), correlation, np.array(one_sided), tuple(sided))
+    return FaceModel(tuple(names), np.array(sigma), correlation, np.array(one_sided))
 
 
 def _face(stream: _Stream, macro: Mapping[str, float], fixed: Mapping[str, float]) -> dict[str, float]:
@@ -406,7 +417,6 @@ def _face(stream: _Stream, macro: Mapping[str, float], fixed: Mapping[str, float
     model = face_model()
     k = len(model.names)
     z = np.array([stream.normal() for _ in range(k)])
-    asym = np.array([[stream.normal() for _ in SIDES] for _ in range(k)])
     cov = model.correlation * np.outer(model.sigma, model.sigma)
     given = np.array([n in fixed for n in model.names])
     L = np.linalg.cholesky(model.correlation)
@@ -421,11 +431,6 @@ def _face(stream: _Stream, macro: Mapping[str, float], fixed: Mapping[str, float
     x = np.clip(x, -CUT * model.sigma, CUT * model.sigma)
     x = np.where(model.one_sided & ~given, np.abs(x), x)
     values = {n: float(v) for n, v, g in zip(model.names, x, given, strict=True) if not g}
-    for j, name in enumerate(model.names):
-        if model.sided[j]:
-            for s, side in enumerate(SIDES):
-                if f"{name}.{side}" not in fixed:
-                    values[f"{name}.{side}"] = float(ASYMMETRY * model.sigma[j] * asym[j, s])
     for name, value in values.items():
         p = identity_parameter(name)
         values[name] = _clip(value, p.minimum, p.maximum)
