@@ -30,6 +30,7 @@ import numpy as np
 
 from engine.model import Model
 from engine.photofit.camera import WeakPerspective, initial_vector, view_rotation
+from engine.photofit.face_points import point_index, point_vertices
 
 #: How much of the photograph's width or height (whichever binds) the head fills at first.
 FILL = 0.8
@@ -42,9 +43,10 @@ Pixels = dict[str, tuple[float, float]]
 
 def visible_landmarks(model: Model, view: str) -> list[str]:
     """The landmark ids a ``view`` photograph shows: all from the front; the left and the middle from the side."""
-    ids = sorted(model.landmarks, key=_id_order)
+    where = point_vertices(model)
+    ids = sorted(where, key=_id_order)
     if view == "side":
-        ids = [k for k in ids if model.vertices[model.landmarks[k], 0] > -SIDE_MIDLINE_SLACK]
+        ids = [k for k in ids if model.vertices[where[k], 0] > -SIDE_MIDLINE_SLACK and not k.startswith("ibug.")]
     return ids
 
 
@@ -69,10 +71,11 @@ def place_from(model: Model, view: str, placed: Mapping[str, tuple[float, float]
 
     Needs two placed points or more (fewer: :class:`ValueError`); the placed ones are kept as they are.
     """
-    ids = [k for k in placed if k in model.landmarks]
+    known = point_vertices(model)
+    ids = [k for k in placed if k in known]
     if len(ids) < 2:
         raise ValueError("place at least two landmarks first")
-    points = model.vertices[[model.landmarks[k] for k in ids]]
+    points = model.vertices[point_index(model, ids)]
     pixels = np.array([placed[k] for k in ids], dtype=float)
     camera = WeakPerspective.from_vector(view, initial_vector(view, points, pixels))
     out = _project(model, camera, visible_landmarks(model, view))
@@ -81,12 +84,15 @@ def place_from(model: Model, view: str, placed: Mapping[str, tuple[float, float]
 
 
 def _project(model: Model, camera: WeakPerspective, ids: list[str]) -> Pixels:
-    pixels = camera.project(model.vertices[[model.landmarks[k] for k in ids]])
+    pixels = camera.project(model.vertices[point_index(model, ids)])
     return {k: (float(x), float(y)) for k, (x, y) in zip(ids, pixels, strict=True)}
 
 
 def _id_order(key: str) -> tuple[int, ...]:
+    """MPEG-4 ids in their groups' order, then the iBUG points in theirs."""
+    if key.startswith("ibug."):
+        return (1 << 30, int(key.split(".")[1]))
     try:
         return tuple(int(p) for p in key.split("."))
     except ValueError:
-        return (1 << 30,)
+        return (1 << 31,)

@@ -13,6 +13,7 @@ import pytest
 from engine.formats.model_files import load_model
 from engine.outputs.render import render_model
 from engine.photofit import fit_photos
+from engine.photofit.face_points import point_vertices
 from engine.photofit.fit import FIT_STEPS
 from engine.photofit.initial_points import initial_points, place_from, visible_landmarks
 from engine.photofit.points import REQUIRED_FRONT
@@ -33,7 +34,8 @@ def front_photo(head):
 
 def true_pixels(head, view):
     pixels = project(head, view, *SIZE)
-    return {k: pixels[head.landmarks[k]] for k in visible_landmarks(head, view)}
+    where = point_vertices(head)
+    return {k: pixels[where[k]] for k in visible_landmarks(head, view)}
 
 
 @pytest.mark.parametrize("view", ["front", "side"])

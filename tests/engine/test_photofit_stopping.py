@@ -19,6 +19,7 @@ import pytest
 from engine.formats.model_files import load_model
 from engine.outputs.render import render_model
 from engine.photofit import FitStopped, fit_photos
+from engine.photofit.face_points import point_vertices
 from engine.photofit.fit import FIT_STEPS
 from engine.photofit.initial_points import visible_landmarks
 from engine.photofit.raster import rasterize
@@ -36,7 +37,8 @@ def head():
 def photo_and_points(head):
     photos = {"front": render_model(head, view="front", size=SIZE)}
     pixels = project(head, "front", *SIZE)
-    points = {"front": {k: tuple(pixels[head.landmarks[k]]) for k in visible_landmarks(head, "front")}}
+    where = point_vertices(head)
+    points = {"front": {k: tuple(pixels[where[k]]) for k in visible_landmarks(head, "front")}}
     return photos, points
 
 
