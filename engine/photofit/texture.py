@@ -28,6 +28,7 @@ from engine.photofit.backdrop import subject_weight
 from engine.photofit.camera import WeakPerspective
 from engine.photofit.raster import rasterize, sample_bilinear
 from engine.photofit.stopping import ShouldStop, stop_if_asked
+from engine.photofit.texture_cleanup import even_shadows
 
 ATLAS_SIZE = 1024
 ZBUFFER_SIDE = 600                  # px: the longer side of the visibility buffer
@@ -78,8 +79,16 @@ def vertex_normals(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
 
 def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarray],
                  cameras: Mapping[str, WeakPerspective], size: int = ATLAS_SIZE,
-                 should_stop: ShouldStop = None) -> tuple[ModelTexture, np.ndarray]:
-    """The model's texture with the photographs in its atlas, and the (size, size) weight the photos had."""
+                 should_stop: ShouldStop = None, hidden: Mapping[str, np.ndarray] | None = None,
+                 own_colours: np.ndarray | None = None,
+                 shadows: np.ndarray | None = None) -> tuple[ModelTexture, np.ndarray]:
+    """The model's texture with the photographs in its atlas, and the (size, size) weight the photos had.
+
+    ``vertices`` are where the photographs show the head (its pose in them). ``hidden`` (view → (H, W) bool)
+    marks pixels not read (the open mouth's teeth); texels of polygons wholly on ``own_colours`` (N,) vertices
+    keep the model's vertex colours (the mouth's inside); ``shadows`` (N,) weights 0 … 1 where the
+    photographs' shadows are evened out (:mod:`engine.photofit.texture_cleanup`).
+    """
     assert model.texture is not None, "the head must have texture coordinates"
     tri_v, tri_c, tri_f = skin_triangles(model)
     uv = model.texture.corner_uv[tri_c]                                    # (T, 3, 2)
@@ -99,6 +108,10 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     buffers = {view: DepthBuffer.of(vertices, occluders, cameras[view], photo.shape[:2], should_stop)
                for view, photo in photos.items()}
     subject = {view: subject_weight(photo, buffers[view].well_inside()) for view, photo in photos.items()}
+    for view, mask in (hidden or {}).items():
+        if view in subject and mask.any():
+            before = subject[view]
+            subject[view] = np.where(mask, 0.0, 1.0 if before is None else before)
     for view, photo in photos.items():
         camera = cameras[view]
         weight = np.clip((normal @ camera.toward_camera() - GRAZING) / (1 - GRAZING), 0, None) ** 2
@@ -111,9 +124,16 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     mean = (colour[seen].sum(0) / total[seen].sum()) if seen.any() else np.array([200.0, 160.0, 140.0])
     fill = skin_fill(model, vertices, photos, cameras, normals, occluders, mean, should_stop, subject, buffers)
     texels = (colour + FILL_WEIGHT * np.einsum("nk,nkd->nd", b, fill[tri_v[t]])) / (total + FILL_WEIGHT)[:, None]
+    if own_colours is not None and model.vertex_colors is not None:
+        own = np.all(own_colours[tri_v[t]], axis=1)
+        texels[own] = np.einsum("nk,nkd->nd", b[own], model.vertex_colors[tri_v[t[own]]].astype(float))
     atlas = np.empty((size, size, 3))
     atlas[:] = mean
     atlas[covered] = texels
+    if shadows is not None and shadows.any():
+        region = np.zeros((size, size))
+        region[covered] = np.einsum("nk,nk->n", b, shadows[tri_v[t]])
+        even_shadows(atlas, region, covered, texels_per_mm(atlas_xy, vertices[tri_v]))
     pad_islands(atlas, covered, should_stop=should_stop)
     weights = np.zeros((size, size))
     weights[covered] = total
@@ -121,6 +141,14 @@ def bake_texture(model: Model, vertices: np.ndarray, photos: Mapping[str, np.nda
     face_image[np.unique(tri_f)] = 0
     image = TextureImage(IMAGE_NAME, np.clip(np.round(atlas), 0, 255).astype(np.uint8))
     return ModelTexture(model.texture.corner_uv.copy(), [image], face_image), weights
+
+
+def texels_per_mm(atlas_xy: np.ndarray, triangles: np.ndarray) -> float:
+    """The atlas's median scale over (T, 3, 2) texel and (T, 3, 3) mm triangles (their first edges)."""
+    texels = np.linalg.norm(atlas_xy[:, 1] - atlas_xy[:, 0], axis=1)
+    mm = np.linalg.norm(triangles[:, 1] - triangles[:, 0], axis=1)
+    good = mm > 1e-6
+    return float(np.median(texels[good] / mm[good])) if good.any() else 1.0
 
 
 def skin_fill(model: Model, vertices: np.ndarray, photos: Mapping[str, np.ndarray],
