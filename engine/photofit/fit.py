@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+import contextlib
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -15,13 +16,17 @@ from engine.identity.articulation_refit import refit_articulation
 from engine.identity.carry_over import Similarity, carry_rig_over, similarity
 from engine.identity.rest_fit import keep_fields_off_the_eyes, keep_lids_off_the_eyes, refit_eyelid_angles
 from engine.model import Model
+from engine.photofit.auto_landmarks import find_face_points, write_points
 from engine.photofit.errors import PhotoFitError
+from engine.photofit.expression_fit import posed
 from engine.photofit.eyes import recolour_irises
+from engine.photofit.face_points import known_ids, point_vertices
 from engine.photofit.photos import read_photo
 from engine.photofit.points import PhotoPoints, read_points
 from engine.photofit.shape import ShapeFit, fit_shape
 from engine.photofit.stopping import ShouldStop, stop_if_asked
 from engine.photofit.texture import bake_texture
+from engine.photofit.texture_cleanup import mouth_bag, mouth_opening, shadow_vertices
 
 
 @dataclass
@@ -29,6 +34,7 @@ class PhotoFit:
     head: Model
     shape: ShapeFit
     seconds: dict[str, float] = field(default_factory=dict)     # landmarks, shape, texture
+    found_points: Path | None = None                             # where the points found by themselves went
 
 
 #: The steps :func:`fit_photos` reports to its ``progress`` callback, in order.
@@ -44,6 +50,12 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     (how the workbench's Stop ends a fit part-way through a step): once it answers ``True`` the fit
     raises :class:`~engine.photofit.stopping.FitStopped`.
     """
+    with one_blas_thread():
+        return _fit_photos(photos, points, base, progress, should_stop)
+
+
+def _fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Model | None,
+                progress: Callable[[str], object] | None, should_stop: ShouldStop) -> PhotoFit:
     def report(step: str) -> None:
         stop_if_asked(should_stop)
         if progress is not None:
@@ -81,8 +93,15 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     seconds["shape"] = time.perf_counter() - started
     started = time.perf_counter()
     report("texture")
-    fitted.texture, _ = bake_texture(fitted, fitted.vertices, {v: p for v, p in photos.items() if v in shape.cameras},
-                                     shape.cameras, should_stop=should_stop)
+    # the photographs show the head in their expression: read them through the head posed so
+    seen = posed(fitted, shape.expression)
+    hidden = {}
+    if "front" in photos and "front" in points:
+        hidden["front"] = mouth_opening(photos["front"].shape, points["front"], shape.cameras["front"].scale)
+    fitted.texture, _ = bake_texture(fitted, seen, {v: p for v, p in photos.items() if v in shape.cameras},
+                                     shape.cameras, should_stop=should_stop, hidden=hidden,
+                                     own_colours=mouth_bag(base),
+                                     shadows=shadow_vertices(fitted, fitted.vertices, point_vertices(fitted)))
     report("eyes")
     if "front" in photos:
         fitted.vertex_colors = None if fitted.vertex_colors is None else fitted.vertex_colors.copy()
@@ -92,14 +111,39 @@ def fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mode
     return PhotoFit(fitted, shape, seconds)
 
 
-def fit_photo_files(front: str | Path, side: str | Path | None, landmarks: str | Path) -> PhotoFit:
-    """:func:`fit_photos` of files: the photographs (JPEG/PNG) and POINTS.json; errors name the file."""
+@contextlib.contextmanager
+def one_blas_thread() -> Iterator[None]:
+    """BLAS on one thread for the fit: its matrices are small (a few hundred rows), and on a busy machine
+    OpenBLAS's threads made each factorisation ten times slower."""
+    try:
+        from threadpoolctl import threadpool_limits  # type: ignore[import-untyped]
+    except ImportError:
+        yield
+        return
+    with threadpool_limits(1, user_api="blas"):
+        yield
+
+
+def fit_photo_files(front: str | Path, side: str | Path | None, landmarks: str | Path | None,
+                    found_to: str | Path | None = None) -> PhotoFit:
+    """:func:`fit_photos` of files: the photographs (JPEG/PNG) and POINTS.json; errors name the file.
+
+    Without ``landmarks`` the front photograph's points are found by dlib's detector and predictor
+    (:mod:`engine.photofit.auto_landmarks`; the side photograph's from its silhouette,
+    :mod:`engine.photofit.profile_points`) and, with ``found_to``, written there as POINTS.json
+    (``result.found_points`` is that file).
+    """
     started = time.perf_counter()
     base = load_model()
-    points = read_points(landmarks, known=set(base.landmarks))
     photos = {"front": read_photo(front)}
     if side is not None:
         photos["side"] = read_photo(side)
+    if landmarks is None:
+        points = find_points(base, photos, {"front": front, "side": side})
+        where = landmarks = Path(found_to) if found_to is not None else None
+    else:
+        points = read_points(landmarks, known=known_ids(base))
+        where = None
     if side is not None and not points.get("side"):
         raise PhotoFitError("a --side photograph needs landmarks of its own: the landmark file has no 'side' "
                             "points", file=landmarks)
@@ -111,7 +155,23 @@ def fit_photo_files(front: str | Path, side: str | Path | None, landmarks: str |
             if not (0 <= x <= width and 0 <= y <= height):
                 raise PhotoFitError(f"'{view}' landmark {key} at ({x:g}, {y:g}) is outside the {width}×{height} "
                                     "photograph", file=landmarks)
+    if where is not None:
+        write_points(where, points)
     read = time.perf_counter() - started
     result = fit_photos(photos, points, base)
     result.seconds["landmarks"] = read
+    result.found_points = where
     return result
+
+
+def find_points(base: Model, photos: Mapping[str, np.ndarray],
+                paths: Mapping[str, str | Path | None]) -> PhotoPoints:
+    """Every photograph's points found by themselves: the front's by dlib, the side's from its silhouette."""
+    known = known_ids(base)
+    front = find_face_points(photos["front"], known, paths.get("front")).pixels
+    points: PhotoPoints = {"front": dict(front)}
+    if "side" in photos:
+        from engine.photofit.profile_points import profile_points
+
+        points["side"] = profile_points(base, photos["side"], paths.get("side"))
+    return points
