@@ -21,6 +21,7 @@ from engine.cli.common import (
     seed,
     size,
 )
+from engine.cli.encoding_options import add_encoding_options, encoding_option
 from engine.errors import UserError
 
 OUTPUT_SUFFIXES = (".mp4", ".wav", ".xml")
@@ -64,6 +65,7 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("--look", default=None, metavar="NAME",
                    help="lighting and shading: portrait (default), flat, legacy, or a JSON file of a look's "
                         "settings (docs/looks.md)")
+    add_encoding_options(p)
     p.add_argument("-o", "--output", default=None, metavar="OUT.(mp4|wav|xml)",
                    help="video with audio (.mp4), the audio (.wav), or the low-level commands (.xml)")
     p.add_argument("--tracks", default=None, metavar="CSV", help="every parameter at every frame")
@@ -83,6 +85,7 @@ def run_say(args: argparse.Namespace) -> int:
     from engine.speech.say import speak
 
     look = look_option(args.look) if args.look is not None else None      # a bad look before any work
+    encoding = encoding_option(args)
     if not any(getattr(args, option) for option in ("output", *TABLE_KINDS)):
         raise UserError("nothing to write: give -o OUT.(mp4|wav|xml), --tracks, --phones or --landmarks")
     targets: dict[str, Path] = {}
@@ -118,7 +121,7 @@ def run_say(args: argparse.Namespace) -> int:
     if "mp4" in targets and not args.quiet:
         progress = progress_printer("rendering", unit="frames" if len(targets) == 1 else "steps")
     write_speech_files(speech, model, targets, fps=args.fps, size=args.size, view=args.view, progress=progress,
-                       look=look)
+                       look=look, encoding=encoding)
     return 0
 
 

@@ -70,15 +70,15 @@ class ExportCancelled(Exception):
 def write_speech_files(speech: Speech, model: Model, targets: Mapping[str, str | Path], fps: float = 30.0,
                        size: tuple[int, int] = (640, 480), view: str = "front", progress: Progress | None = None,
                        cancelled: Callable[[], bool] | None = None, antialias: bool | None = None,
-                       look: str | Look | None = None) -> list[Path]:
+                       look: str | Look | None = None, encoding: object = None) -> list[Path]:
     """Write the files ``targets`` names (kind → path) for ``speech`` on ``model``, all or nothing.
 
     Kinds (:data:`SPEECH_FILE_KINDS`): ``mp4``, ``wav``, ``xml``, ``phones``,
     ``tracks``, ``landmarks``. ``fps`` (frames per second) applies to the
     video, the tracks and the landmarks, which all have frame ``n`` at
     ``n·1000/fps`` ms, until the speech ends (:meth:`Speech.frame_times`);
-    ``size`` (width, height in pixels, even), ``view``, ``antialias`` and ``look``
-    are the video's (:func:`engine.outputs.video_writer.write_video`). The WAV is
+    ``size`` (width, height in pixels, even), ``view``, ``antialias``, ``look`` and
+    ``encoding`` are the video's (:func:`engine.outputs.video_writer.write_video`). The WAV is
     the speech alone; the video's audio is padded with silence to its length.
 
     ``progress(done, total)`` is called before anything is written and as
@@ -106,7 +106,7 @@ def write_speech_files(speech: Speech, model: Model, targets: Mapping[str, str |
     if "mp4" in paths:
         video = check_video(paths["mp4"], model, times, values, speech.timeline.parameters, fps,
                             audio=speech.utterance.samples, sample_rate=speech.utterance.sample_rate,
-                            size=size, view=view, look=look)
+                            size=size, view=view, look=look, encoding=encoding)
     steps = _Steps(len(times) * (video is not None) + len(paths) - (video is not None), progress, cancelled)
     steps.start()
     with atomic_files(paths.values()) as temporary:

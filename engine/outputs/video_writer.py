@@ -59,6 +59,7 @@ from engine.model.model import Model
 from engine.outputs.frame_pipe import FrameWriter
 from engine.outputs.looks import Look, look_from
 from engine.outputs.render_helper import RenderHelper, helper_wanted
+from engine.outputs.video_encoding import Encoding, encoding_from
 from engine.outputs.video_tools import FFmpegMissing, VideoError, find_tool, stderr_tail
 from engine.processes import with_parent_death_signal
 
@@ -68,9 +69,9 @@ __all__ = ["FFmpegMissing", "VideoError", "VideoRequest", "VideoStats", "check_v
 Progress = Callable[[int, int], None]
 """``progress(done, total)``: called as work is done."""
 
-#: H.264 settings: a fast preset (the frames are simple, the machine small), 4:2:0 for every player.
-VIDEO_ARGS = ["-c:v", "libx264", "-preset", "veryfast", "-crf", "20", "-pix_fmt", "yuv420p",
-              "-colorspace", "smpte170m"]      # swscale converts RGB → YUV with BT.601: say so
+#: The default H.264 settings: a fast preset (the frames are simple, the machine small), 4:2:0 for every
+#: player; a video's own ``encoding`` (:mod:`engine.outputs.video_encoding`) may choose others.
+VIDEO_ARGS = Encoding().ffmpeg_args()
 AUDIO_ARGS = ["-c:a", "aac", "-b:a", "96k"]
 #: Sample rates the AAC encoder takes; other rates are resampled to the next one up.
 AAC_RATES = (7350, 8000, 11025, 12000, 16000, 22050, 24000, 32000, 44100, 48000, 64000, 88200, 96000)
@@ -120,6 +121,8 @@ class VideoRequest:
     sample_rate: int | None
     look: Look = field(default_factory=look_from)
     """How the head is lit and shaded (:mod:`engine.outputs.looks`)."""
+    encoding: Encoding = field(default_factory=Encoding)
+    """How the frames are compressed (:mod:`engine.outputs.video_encoding`)."""
 
     def antialias(self, asked: bool | None) -> bool:
         """Whether the frames are smoothed: as ``asked``, or (``None``) where the look's method is FXAA."""
@@ -138,7 +141,7 @@ def write_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
                 parameter_names: Sequence[str], fps: float, audio: ArrayLike | None = None,
                 sample_rate: int | None = None, size: tuple[int, int] = (640, 480), view: str = "front",
                 progress: Progress | None = None, antialias: bool | None = None,
-                look: str | Look | None = None) -> VideoStats:
+                look: str | Look | None = None, encoding: object = None) -> VideoStats:
     """Render one frame per row of ``values`` and write them, with ``audio``, as an MP4.
 
     Parameters
@@ -167,13 +170,16 @@ def write_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
         :func:`progress_printer`.
     antialias : smoothed edges, the look's way; ``None``: where it is cheap (see the module notes).
     look : a look's name, a :class:`~engine.outputs.looks.Look` or its settings (default ``portrait``).
+    encoding : ``"lossless"``, an x264 preset's name, ``{"preset": …, "crf": …}`` or an
+        :class:`~engine.outputs.video_encoding.Encoding` (default ``veryfast``, CRF 20).
 
     Returns
     -------
     :class:`VideoStats` (frame count and the time spent in each stage).
     """
     started = time.perf_counter()
-    request = check_video(path, model, times_ms, values, parameter_names, fps, audio, sample_rate, size, view, look)
+    request = check_video(path, model, times_ms, values, parameter_names, fps, audio, sample_rate, size, view, look,
+                          encoding)
     with atomic_files([request.path]) as temporary:
         stats = encode_video(request, temporary[request.path], progress, antialias)
     stats.total = time.perf_counter() - started
@@ -183,7 +189,7 @@ def write_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
 def check_video(path: str | Path, model: Model, times_ms: ArrayLike, values: ArrayLike,
                 parameter_names: Sequence[str], fps: float, audio: ArrayLike | None = None,
                 sample_rate: int | None = None, size: tuple[int, int] = (640, 480),
-                view: str = "front", look: str | Look | None = None) -> VideoRequest:
+                view: str = "front", look: str | Look | None = None, encoding: object = None) -> VideoRequest:
     """Everything :func:`write_video` checks, before any work: a :class:`VideoRequest`, or a :class:`UserError`.
 
     The arguments are :func:`write_video`'s. A writer that writes the video
@@ -191,6 +197,7 @@ def check_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
     :func:`encode_video` into a temporary file of its own.
     """
     path = Path(path)
+    chosen_encoding = encoding_from(encoding)
     frame_values, fps = _check_frames(model, times_ms, values, parameter_names, fps)
     width, height = _check_video_size(size)
     from engine.outputs.render import VIEWS
@@ -210,7 +217,7 @@ def check_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
         samples = _fit_audio(samples, sample_rate, float(np.asarray(times_ms, dtype=float)[0]),
                              len(frame_values), fps)
     return VideoRequest(path, model, frame_values, fps, (width, height), view, samples,
-                        sample_rate if samples is not None else None, look_from(look))
+                        sample_rate if samples is not None else None, look_from(look), chosen_encoding)
 
 
 def encode_video(request: VideoRequest, destination: str | Path, progress: Progress | None = None,
@@ -249,7 +256,7 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                 command += ["-i", str(wav), "-map", "0:v:0", "-map", "1:a:0", *AUDIO_ARGS]
                 if rate not in AAC_RATES:
                     command += ["-ar", str(next((r for r in AAC_RATES if r >= rate), AAC_RATES[-1]))]
-            command += [*VIDEO_ARGS, "-movflags", "+faststart", "-f", "mp4", str(destination)]
+            command += [*request.encoding.ffmpeg_args(), "-movflags", "+faststart", "-f", "mp4", str(destination)]
             if helper_wanted(count):              # forked before our renderer and ffmpeg exist
                 helper = RenderHelper(request, antialias)
             with FrameRenderer(request.model, size=(width, height), view=request.view,

@@ -50,6 +50,7 @@ from engine.commands.limits import MAX_TIME_MS
 from engine.errors import UserError
 from engine.formats.text_files import read_bounded_text
 from engine.outputs.looks import Look, look_from
+from engine.outputs.video_encoding import Encoding, encoding_from
 from engine.stimuli.design_toml import DesignError, Locator, read_design_toml
 
 FIXED_FACTORS = ("text", "voice", "model", "expression", "intensity", "av_offset_ms", "snr_db", "noise",
@@ -61,7 +62,7 @@ MAX_STIMULI = 100_000
 MAX_OFFSET_MS = 10_000.0
 VIEWS = ("front", "side", "three-quarter")
 _TOP_KEYS = {"seed", "factors", "output", "combine", "rows", "blocks", "name"}
-_OUTPUT_KEYS = {"kinds", "size", "fps", "view", "still_ms", "validate", "look"}
+_OUTPUT_KEYS = {"kinds", "size", "fps", "view", "still_ms", "validate", "look", "encoding"}
 RANGES: dict[str, tuple[float, float, str]] = {
     **dict.fromkeys(("intensity", "morph", "identity_morph", "viseme_morph"),
                     (0.0, 100.0, "must be a number from 0 to 100 (%)")),
@@ -92,6 +93,9 @@ class Output:
     look: Look = field(default_factory=look_from)
     """How the head is lit and shaded (:mod:`engine.outputs.looks`): ``look = "NAME"`` or an ``[output.look]``
     table of settings; recorded whole in ``provenance.json``."""
+    encoding: Encoding = field(default_factory=Encoding)
+    """How the videos are compressed (:mod:`engine.outputs.video_encoding`): ``encoding = "lossless"`` or an
+    ``[output.encoding]`` table of ``preset`` and ``crf``; in ``provenance.json`` and each manifest row."""
 
 
 @dataclass(frozen=True)
@@ -389,8 +393,15 @@ def _output(table: Any, where: Locator) -> Output:
         line = where.line_of(setting.group().split(".")[-1]) if setting and isinstance(table.get("look"), dict) \
             else None
         raise where.error("look", message, line) from None
+    try:
+        encoding = encoding_from(table.get("encoding"))
+    except UserError as exc:
+        message = exc.message.removeprefix("encoding: ")
+        setting = re.match(r"\w+", message)
+        line = where.line_of(setting.group()) if setting and isinstance(table.get("encoding"), dict) else None
+        raise where.error("encoding", message, line) from None
     return Output(tuple(dict.fromkeys(kinds)), (int(match.group(1)), int(match.group(2))), float(fps), view,
-                  None if still is None else float(still), validate, look)
+                  None if still is None else float(still), validate, look, encoding)
 
 
 def level_text(level: Any) -> str | Any:

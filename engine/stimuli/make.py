@@ -106,7 +106,8 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     paths = {kind: outdir / name for kind, name in names.items()}
     requests = {kind: check_video(paths[kind], model, frame_times, values, timeline.parameters, fps,
                                   audio=audio if kind == "mp4" else None, sample_rate=rate if kind == "mp4" else None,
-                                  size=design.output.size, view=design.output.view, look=design.output.look)
+                                  size=design.output.size, view=design.output.view, look=design.output.look,
+                                  encoding=design.output.encoding)
                 for kind in ("mp4", "silent-mp4") if kind in paths}
     words = [w.start_ms + layout.audio_start_ms for w in utterance.words]
     onset = next((p.start_ms for p in utterance.phones if p.label not in PAUSES), 0.0) + layout.audio_start_ms

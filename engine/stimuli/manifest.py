@@ -47,6 +47,7 @@ CONTACT_SHEET = "contact-sheet.png"
 SHEET_COLUMNS = 8
 SHEET_LIMIT = 400
 MAIN_KINDS = ("mp4", "silent-mp4", "wav", "png", "tracks", "phones")
+VIDEO_KINDS = frozenset({"mp4", "silent-mp4"})
 
 
 def write_set_files(design: Design, outdir: Path, records: list[dict[str, Any]]) -> None:
@@ -55,7 +56,8 @@ def write_set_files(design: Design, outdir: Path, records: list[dict[str, Any]])
     kinds = list(design.output.kinds)
     verdicts = set_verdicts(records)
     texts = {
-        MANIFEST: _csv(_manifest_rows(records, factors, kinds, design.output.look.name)),
+        MANIFEST: _csv(_manifest_rows(records, factors, kinds, design.output.look.name,
+                                      design.output.encoding.name if VIDEO_KINDS & set(kinds) else "")),
         CONDITIONS: _csv(_condition_rows(records, factors, kinds)),
         CHECKS: _csv(_check_rows(records, verdicts if design.output.validate else None)),
         PROVENANCE: json.dumps(provenance(design, records), indent=2, ensure_ascii=False) + "\n",
@@ -103,7 +105,7 @@ def contact_sheet(outdir: Path, records: list[dict[str, Any]]) -> np.ndarray | N
 
 
 def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: list[str],
-                   look: str = "") -> list[dict[str, Any]]:
+                   look: str = "", encoding: str = "") -> list[dict[str, Any]]:
     rows = []
     for record in records:
         row: dict[str, Any] = {"id": record["id"]}
@@ -122,6 +124,7 @@ def _manifest_rows(records: list[dict[str, Any]], factors: list[str], kinds: lis
             "expression_apex_ms": "" if record["expression_apex_ms"] is None else _ms(record["expression_apex_ms"]),
             "still_ms": "" if record["still_ms"] is None else _ms(record["still_ms"]),
             "look": look,                                       # its settings: provenance.json
+            "encoding": encoding,                               # the videos' (empty with none): provenance.json
         })
         rows.append(row)
     return rows
@@ -178,6 +181,7 @@ def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
         "festival": {"version": _festival_version(), "voices": sorted({r["voice"] for r in records})},
         "python": sys.version.split()[0], "platform": platform.platform(), "libraries": libraries,
         "look": design.output.look.settings(), "look_methods": look_methods(),
+        "encoding": design.output.encoding.settings(),
     }
     if design.output.validate:
         from dataclasses import asdict

@@ -209,11 +209,10 @@ def test_ffmpeg_missing_names_the_debian_package(head, tmp_path, monkeypatch):
 def test_ffmpeg_failing_reports_its_last_words_and_leaves_nothing(head, tmp_path, monkeypatch):
     out = tmp_path / "out.mp4"
     out.write_bytes(b"keep me")
-    arguments = list(video_writer.VIDEO_ARGS)
-    arguments[arguments.index("-preset") + 1] = "nonsense"
-    monkeypatch.setattr(video_writer, "VIDEO_ARGS", arguments)
-    with pytest.raises(video_writer.VideoError) as caught:
-        write_small(head, out)
+    from engine.outputs.video_encoding import Encoding
+
+    with pytest.raises(video_writer.VideoError) as caught:      # a preset encoding_from would have refused
+        write_small(head, out, encoding=Encoding(preset="nonsense"))
     message = str(caught.value)
     assert "ffmpeg failed" in message and "invalid preset 'nonsense'" in message
     assert out.read_bytes() == b"keep me"
