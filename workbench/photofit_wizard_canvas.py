@@ -29,6 +29,7 @@ from PySide6.QtWidgets import (
 )
 
 MARKER_RADIUS = 5.0                   # screen px
+CONTOUR_RADIUS = 3.5                  # screen px: the jaw line's, brows' and nose's iBUG points (ibug.N)
 REQUIRED_COLOUR = QColor("#ff3b30")
 OPTIONAL_COLOUR = QColor("#19d3f0")
 LEFT_OUT_COLOUR = QColor("#9a9a9a")
@@ -51,7 +52,8 @@ class Marker(QGraphicsEllipseItem):
     """One landmark: a dot with its id, dragged by the mouse; right-click leaves an optional one out."""
 
     def __init__(self, canvas: PhotoCanvas, key: str, required: bool):
-        r = MARKER_RADIUS
+        self.radius = CONTOUR_RADIUS if key.startswith("ibug.") else MARKER_RADIUS
+        r = self.radius
         super().__init__(-r, -r, 2 * r, 2 * r)
         self.canvas, self.key, self.required = canvas, key, required
         self.used = True
@@ -62,11 +64,15 @@ class Marker(QGraphicsEllipseItem):
         font = QFont()
         font.setPointSizeF(7.5)
         font.setBold(True)
-        self.shadow = QGraphicsSimpleTextItem(key, self)       # a dark copy under the label: legible on any photo
+        text = key.removeprefix("ibug.")                       # a contour point shows its number only
+        if text != key:
+            font.setPointSizeF(6.0)
+            font.setBold(False)
+        self.shadow = QGraphicsSimpleTextItem(text, self)       # a dark copy under the label: legible on any photo
         self.shadow.setFont(font)
         self.shadow.setBrush(QBrush(QColor(0, 0, 0, 210)))
         self.shadow.setPos(r + 2, -r - 11)
-        self.label = QGraphicsSimpleTextItem(key, self)
+        self.label = QGraphicsSimpleTextItem(text, self)
         self.label.setFont(font)
         self.label.setPos(r + 1, -r - 12)
         self.set_editable(True)
@@ -76,7 +82,7 @@ class Marker(QGraphicsEllipseItem):
         """Editable: dragged and toggled, with its id; otherwise a small plain dot (under a fit's crosses)."""
         self.setFlag(QGraphicsItem.GraphicsItemFlag.ItemIsMovable, editable)
         self.setAcceptedMouseButtons(Qt.MouseButton.AllButtons if editable else Qt.MouseButton.NoButton)
-        r = MARKER_RADIUS if editable else MARKER_RADIUS * 0.6
+        r = self.radius if editable else self.radius * 0.6
         self.setRect(-r, -r, 2 * r, 2 * r)
         self.label.setVisible(editable)
         self.shadow.setVisible(editable)

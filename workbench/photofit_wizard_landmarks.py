@@ -1,10 +1,16 @@
 """The wizard's landmark page: each photograph with the head's landmarks to drag onto it.
 
-The markers start where the current head's landmarks fall with the face
-centred and scaled to the photograph (:func:`engine.photofit.initial_points.initial_points`).
-**Place the rest** fits that camera to the points moved so far and puts the
-others where the head says they are, so dragging the six required points
-(red) brings the rest close. Every drag, right-click (leave an optional
+On the front photograph the markers start where dlib's face detector and
+68-point predictor put them (:func:`engine.photofit.auto_landmarks.find_face_points`,
+when the photographs page asks for it): the MPEG-4 points and the jaw line's,
+brows', nose's points (``ibug.N``, small, with their number). A photograph
+where no single face of a usable size is found says so in a dialog, and
+the markers start at a first guess instead: where the current head's
+landmarks fall with the face centred and scaled to the photograph
+(:func:`engine.photofit.initial_points.initial_points`); so does the side
+photograph always (dlib finds no profile). **Place the rest** fits that camera
+to the points found or moved so far and puts the others where the head says
+they are, so dragging the six required points (red) brings the rest close. Every drag, right-click (leave an optional
 point out or take it back), Place the rest, Reset and Load is one step of
 the wizard's own undo stack (Ctrl+Z, Ctrl+Shift+Z). Points are saved and
 loaded as POINTS.json (``docs/photofit.md``).
@@ -16,8 +22,10 @@ import json
 from collections.abc import Mapping
 from pathlib import Path
 
+from PySide6.QtCore import Qt
 from PySide6.QtGui import QKeySequence, QUndoCommand, QUndoStack
 from PySide6.QtWidgets import (
+    QApplication,
     QFileDialog,
     QHBoxLayout,
     QLabel,
@@ -31,7 +39,9 @@ from PySide6.QtWidgets import (
 
 import engine
 from engine.photofit import PhotoFitError, read_points
-from engine.photofit.initial_points import initial_points, place_from
+from engine.photofit.auto_landmarks import find_face_points
+from engine.photofit.face_points import known_ids
+from engine.photofit.initial_points import initial_points, place_from, visible_landmarks
 from engine.photofit.points import REQUIRED_FRONT, parse_points
 
 from .photofit_wizard_canvas import PhotoCanvas, PointState
@@ -76,7 +86,10 @@ class LandmarkPage(QWizardPage):
         self.setSubTitle("Drag each point onto the photograph: red points are required, cyan ones help. "
                          "Right-click a cyan point to leave it out. Wheel zooms, double-click shows it all.")
         self.canvases = {view: PhotoCanvas() for view in VIEWS}
-        self._placed_for: dict[str, object] = {}
+        self._placed_for: dict[str, tuple[object, bool]] = {}
+        self.first: ViewState = {}                   # each view's first guesses (Reset goes back to them)
+        self.found: dict[str, set[str]] = {}         # the points dlib found on each view
+        self.problems: dict[str, str] = {}           # why none were found, as the dialog said
         row = QHBoxLayout()
         self.columns: dict[str, QWidget] = {}
         for view, canvas in self.canvases.items():
@@ -122,7 +135,6 @@ class LandmarkPage(QWizardPage):
     # -- QWizardPage ---------------------------------------------------------------------
     def initializePage(self) -> None:
         """Markers at their first guesses for each photograph chosen anew; kept for one already placed."""
-        model = self.session.landmark_head()
         replaced = False
         for view, canvas in self.canvases.items():
             photo = self.session.photos.get(view)
@@ -130,13 +142,13 @@ class LandmarkPage(QWizardPage):
             if photo is None:
                 self._placed_for.pop(view, None)
                 continue
-            if self._placed_for.get(view) is photo:
+            placed_for = self._placed_for.get(view)
+            if placed_for is not None and placed_for[0] is photo and placed_for[1] == self.session.find_points:
                 continue
             canvas.set_photo(photo)
-            height, width = photo.shape[:2]
-            guess = initial_points(model, view, width, height)
-            canvas.set_markers({k: (x, y, True) for k, (x, y) in guess.items()}, self._required(view))
-            self._placed_for[view] = photo
+            self.first[view] = self.first_guess(view, photo)
+            canvas.set_markers(self.first[view], self._required(view))
+            self._placed_for[view] = (photo, self.session.find_points)
             replaced = True
         if replaced:
             self.undo_stack.clear()       # steps on markers that are gone would undo nothing
@@ -168,7 +180,7 @@ class LandmarkPage(QWizardPage):
         """Why these points cannot be fitted (the engine's own checks), or ``None``."""
         try:
             as_json = {view: {k: [x, y] for k, (x, y) in points.items()} for view, points in self.points().items()}
-            parse_points(as_json, self.session.landmark_head().landmarks, "the points")
+            parse_points(as_json, known_ids(self.session.landmark_head()), "the points")
         except PhotoFitError as error:
             return error.message
         for view in self.views():
@@ -177,6 +189,32 @@ class LandmarkPage(QWizardPage):
                 if not (0 <= x <= width and 0 <= y <= height):
                     return f"The {view} point {key} is outside the photograph: drag it back onto it."
         return None
+
+    def first_guess(self, view: str, photo) -> dict[str, PointState]:
+        """Where the markers start: the points dlib finds on the front photograph (the others placed from them
+        and left out), else the head centred on the photograph (its jaw-line points left out)."""
+        model = self.session.landmark_head()
+        height, width = photo.shape[:2]
+        guess = initial_points(model, view, width, height)
+        self.found[view] = set()
+        self.problems.pop(view, None)
+        state = {k: (x, y, not k.startswith("ibug.")) for k, (x, y) in guess.items()}
+        if view != "front" or not self.session.find_points:
+            return state
+        QApplication.setOverrideCursor(Qt.CursorShape.WaitCursor)
+        try:
+            found = find_face_points(photo, visible_landmarks(model, view), self.session.paths.get(view),
+                                     hint="drag the points onto the face yourself").pixels
+        except PhotoFitError as error:
+            QApplication.restoreOverrideCursor()
+            self.problems[view] = str(error)
+            QMessageBox.warning(self, TITLE, f"{error}\n\nThe points start at a first guess instead.")
+            return state
+        QApplication.restoreOverrideCursor()
+        placed = place_from(model, view, found)
+        self.found[view] = set(found)
+        required = self._required(view)
+        return {k: (*found[k], True) if k in found else (*placed[k], k in required) for k in guess}
 
     def _required(self, view: str) -> tuple[str, ...]:
         return REQUIRED_FRONT if view == "front" else ()
@@ -194,14 +232,14 @@ class LandmarkPage(QWizardPage):
         self._change(new, f"{'Use' if used else 'Leave out'} {key}")
 
     def place_the_rest(self) -> None:
-        """Unmoved points of each photograph placed by the camera that fits the moved ones."""
+        """Points of each photograph neither found nor moved placed by the camera that fits those that were."""
         model = self.session.landmark_head()
         new = self.state()
         for view in self.views():
-            photo = self.session.photos[view]
-            guess = initial_points(model, view, photo.shape[1], photo.shape[0])
+            guess, found = self.first[view], self.found.get(view, set())
             points = new[view]
-            moved = {k: (x, y) for k, (x, y, _) in points.items() if abs(x - guess[k][0]) + abs(y - guess[k][1]) > 0.5}
+            moved = {k: (x, y) for k, (x, y, _) in points.items()
+                     if k in found or abs(x - guess[k][0]) + abs(y - guess[k][1]) > 0.5}
             if len(moved) < 2:
                 continue
             placed = place_from(model, view, moved)
@@ -209,13 +247,8 @@ class LandmarkPage(QWizardPage):
         self._change(new, "Place the rest")
 
     def reset(self) -> None:
-        model = self.session.landmark_head()
-        new = {}
-        for view in self.views():
-            photo = self.session.photos[view]
-            guess = initial_points(model, view, photo.shape[1], photo.shape[0])
-            new[view] = {k: (x, y, True) for k, (x, y) in guess.items()}
-        self._change(new, "Reset points")
+        """Every point back to its first guess (one undo step)."""
+        self._change({view: dict(self.first[view]) for view in self.views()}, "Reset points")
 
     # -- files -----------------------------------------------------------------------------
     def load_dialog(self) -> None:
@@ -226,7 +259,7 @@ class LandmarkPage(QWizardPage):
     def load(self, path: str | Path) -> bool:
         """Points of a POINTS.json file: the ones it names placed and used, the others left out."""
         try:
-            points = read_points(path, known=self.session.landmark_head().landmarks)
+            points = read_points(path, known=known_ids(self.session.landmark_head()))
             if "side" in points and "side" not in self.session.photos:
                 raise PhotoFitError("the file has 'side' points but no side photograph was chosen", file=path)
         except PhotoFitError as error:

@@ -11,6 +11,7 @@ from pathlib import Path
 
 from PySide6.QtCore import Qt, Signal
 from PySide6.QtWidgets import (
+    QCheckBox,
     QFileDialog,
     QGridLayout,
     QLabel,
@@ -62,7 +63,16 @@ class PhotosPage(QWizardPage):
                 clear.clicked.connect(lambda _=False, view=view: self.forget(view))
                 clear.setEnabled(False)
                 grid.addWidget(clear, 4, column)
-        grid.setRowStretch(5, 1)
+        self.find_box = QCheckBox("Find the face's points by themselves (dlib's face detector and 68 points)")
+        self.find_box.setToolTip("Off: the points start at a first guess, the head centred on the photograph. "
+                                 "The side photograph's points always start so: dlib finds no profile.")
+        self.find_box.setChecked(session.find_points)
+        self.find_box.toggled.connect(self._find_toggled)
+        grid.addWidget(self.find_box, 5, 0, 1, len(VIEWS))
+        grid.setRowStretch(6, 1)
+
+    def _find_toggled(self, on: bool) -> None:
+        self.session.find_points = on             # the landmark page places the front's points again
 
     def choose_dialog(self, view: str) -> None:
         folder = str(self.session.paths[view].parent) if view in self.session.paths else ""

@@ -30,6 +30,7 @@ class PhotoFitSession:
     paths: dict[str, Path] = field(default_factory=dict)
     points: dict[str, dict[str, tuple[float, float]]] = field(default_factory=dict)
     fit: PhotoFit | None = None
+    find_points: bool = True                   # the front photograph's points found by dlib (else a first guess)
 
     def landmark_head(self) -> engine.Model:
         """The head whose landmarks are placed: the current one if it has every landmark the default head has."""
