@@ -7,6 +7,14 @@ the closest reference pose — an ARKit face unit or a MakeHuman expression
 unit — and then tuned. :data:`ACTION_UNITS` is the recipe, as data; the
 choices and the residuals are in ``docs/default-head.md`` ("Action units").
 
+Value 1 is FACS intensity E, the AU at its maximum (Ekman, Friesen & Hager
+2002): where the artist's pose falls short of what FACS shows at E, the pose
+is scaled (:data:`E_GAIN`), and the furrows, wrinkles and bulges FACS lists
+among the AU's appearance changes are added to it as geometry
+(:data:`APPEARANCE`, ``facs_creases.py``). An AU that carries them is a
+displacement field (a rotation or a uniform translation cannot hold a
+furrow).
+
 Bilateral poses are split across the midline by a smooth mask: the artist's
 left and right poses are added (so that the two halves make the bilateral
 pose exactly) and the sum is shared out by ``smoothstep((x + w) / 2w)``
@@ -18,6 +26,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+import facs_creases as creases
 import numpy as np
 
 MIDLINE_MM = 8.0            # half-width of the left/right mask's ramp across the midline
@@ -25,6 +34,32 @@ EYE_BAND_MM = (5.0, 3.0)    # AU9's nose/brow split ramps from this far below to
 AU9_NOSE_GAIN = 1.7         # the artist's sneer below the eyes, strengthened to FACS's AU9 at E (wings up 2.2-2.4 mm)
 SKIN_AND_LASHES = ["skin", "eyelashes_left", "eyelashes_right"]
 ARKIT, UNITS = "arkit/", "expression_units/"
+
+# FACS intensity E: the artist's pose scaled where it falls short of the AU at its maximum (the landmark
+# motions at E are in docs/default-head.md, "Action units at FACS intensity E", and the tests check them)
+E_GAIN = {
+    "AU1": 1.6,     # inner brow 5.3 -> 8.5 mm up: the brows' inner ends pulled up high, oblique
+    "AU2": 1.25,    # outer brow 6.7 -> 8.4 mm up: the brow arched high at its tail
+    "AU4": 1.2,     # brows 5.7 -> 6.8 mm down and 5 -> 6 mm closer: the brow low over the eye
+    "AU5": 1.35,    # upper lid 2.9 -> 3.9 mm up: sclera above the iris
+    "AU6": 1.4,     # cheek up 8 -> 11 mm: the lower lid pushed up, the eye narrowed
+    "AU15": 1.25,   # lip corners 6.1 -> 7.6 mm down
+    "AU20": 1.4,    # lip corners 5.1 -> 7.1 mm out each: the mouth stretched wide and flat
+}
+
+# FACS's appearance changes as geometry, per parameter (its name without the side): (N, 3) mm for both sides
+APPEARANCE = {
+    "AU1": lambda skin: creases.forehead_lines(skin, medial=True),
+    "AU2": lambda skin: creases.forehead_lines(skin, medial=False),
+    "AU4": creases.glabella,
+    "AU6": lambda skin: creases.lower_lid_bag(skin) + creases.lower_lid_lift(skin),
+    "AU9_nose": lambda skin: creases.nose_root(skin) + creases.nasolabial(skin, depth=1.0, cheek=0.0,
+                                                                              upper_only=True),
+    "AU10": lambda skin: creases.nasolabial(skin, depth=1.0, cheek=0.5, upper_only=True),
+    "AU12": creases.nasolabial,
+    "AU15": creases.corner_pouch,
+    "AU17": creases.chin_boss,
+}
 
 
 @dataclass(frozen=True)
@@ -37,7 +72,8 @@ class ActionUnit:
     of the pose below / above the eye centres (AU9's nose and brow);
     ``lips``: the lower lip is kept off the upper lip before the split
     (the artist's mouth poses push it through, see docs/default-head.md);
-    ``kind``: ``rotation``, ``translation`` or ``field`` (``engine.fitting``).
+    ``kind``: ``rotation``, ``translation`` or ``field`` (``engine.fitting``);
+    ``gain``: the artist's pose scaled to FACS intensity E (:data:`E_GAIN`).
     """
 
     name: str
@@ -51,13 +87,26 @@ class ActionUnit:
     minimum: float = 0.0
     maximum: float = 1.0
     description: str = ""
+    gain: float = 1.0
+
+    @property
+    def appearance_key(self) -> str:
+        """The parameter's name without its side: its entry in :data:`APPEARANCE`."""
+        return self.name.replace("_left", "").replace("_right", "")
+
+    @property
+    def stored_kind(self) -> str:
+        """How the model keeps it: ``kind``, or a field where it carries furrows (:data:`APPEARANCE`): the
+        motion is still fitted as ``kind``, and that motion at value 1 with the furrows added is the field."""
+        return "field" if self.appearance_key in APPEARANCE else self.kind
 
 
 def _pair(au, title, kind, parent, sources, suffix="", band="", lips=False, minimum=0.0, what=""):
     """The left and right parameters of a bilateral AU made from ``sources`` (left and right poses)."""
     sources = tuple((s, 1.0) if isinstance(s, str) else s for s in sources)
     return [ActionUnit(f"{au}_{side}{suffix}", au, kind, parent, sources, side=side, band=band, lips=lips,
-                       minimum=minimum, description=f"{au} {title}, the subject's {side} side{what}")
+                       minimum=minimum, description=f"{au} {title}, the subject's {side} side{what}",
+                       gain=E_GAIN.get(au, 1.0) if not suffix else 1.0)
             for side in ("left", "right")]
 
 
@@ -123,13 +172,17 @@ class ActionUnitFit:
     masked), (N, 3) mm; ``fit``: the :class:`engine.fitting.FitResult` of
     the tuned pose; ``fitted``: what the model's parameter does at value 1
     (its weights and fields rounded as stored), (N, 3) mm; residuals are
-    ``target − fitted``.
+    ``target − fitted``. ``appearance`` and ``depth``: the parameter's
+    furrows and bulges (:data:`APPEARANCE`), written to ``reference-poses.h5``
+    (``/facs_appearance``) for wrinkle maps.
     """
 
     unit: ActionUnit
     fit: object
     target: np.ndarray
     fitted: np.ndarray
+    appearance: np.ndarray | None = None    # the furrows and bulges the parameter carries, (N, 3) mm at value 1
+    depth: np.ndarray | None = None         # … along the rest skin's normal, (N,) mm: − a furrow, + a bulge
 
     @property
     def moved(self) -> np.ndarray:
@@ -177,8 +230,25 @@ def band_mask(y, eye_level: float, band: str) -> np.ndarray:
 
 
 def source_pose(unit: ActionUnit, pose) -> np.ndarray:
-    """The sources of ``unit`` added, (N, 3) mm, before the masks."""
-    return sum(factor * pose(name) for name, factor in unit.sources)
+    """The sources of ``unit`` added and scaled to FACS intensity E (``unit.gain``), (N, 3) mm, before the masks."""
+    return unit.gain * sum(factor * pose(name) for name, factor in unit.sources)
+
+
+def appearance(unit: ActionUnit, skin: creases.Skin) -> np.ndarray:
+    """The furrows and bulges ``unit`` carries (:data:`APPEARANCE`), on its side of the face, (N, 3) mm."""
+    make = APPEARANCE.get(unit.appearance_key)
+    if make is None:
+        return np.zeros_like(skin.vertices)
+    return make(skin) * side_mask(skin.vertices[:, 0], unit.side)[:, None]
+
+
+def unit_target(unit: ActionUnit, pose, model, D=None, skin: creases.Skin | None = None) -> np.ndarray:
+    """What ``unit`` at value 1 is to do, (N, 3) mm: the (tuned) pose ``D`` — by default its sources —
+    masked to its side and band, and its appearance changes added."""
+    eye_level = float(model.landmark_positions()["3.5"][1])
+    D = source_pose(unit, pose) if D is None else D
+    skin = skin or creases.Skin.of(model)
+    return masked(unit, D, model.vertices, eye_level) + appearance(unit, skin)
 
 
 def masked(unit: ActionUnit, D, vertices, eye_level: float) -> np.ndarray:
@@ -199,6 +269,7 @@ def add_action_units(model, pose, lips_apart=None, smoothness: float = 0.01) -> 
     from engine import InfluenceRegion
     from engine.fitting import fit_parameter
 
+    skin = creases.Skin.of(model)
     eye_level = float(model.landmark_positions()["3.5"][1])
     tuned: dict[tuple, np.ndarray] = {}
     out = []
@@ -206,20 +277,28 @@ def add_action_units(model, pose, lips_apart=None, smoothness: float = 0.01) -> 
         artist = source_pose(unit, pose)
         D = artist
         if unit.lips and lips_apart is not None:
-            if unit.sources not in tuned:          # both sides share one tuning of the bilateral pose
-                tuned[unit.sources] = lips_apart(artist, list(tuned.values()))
-            D = tuned[unit.sources]
+            key = (unit.sources, unit.gain)
+            if key not in tuned:          # both sides share one tuning of the bilateral pose
+                tuned[key] = lips_apart(artist, list(tuned.values()))
+            D = tuned[key]
+        options = dict(name=unit.name, parent=unit.parent, region=SKIN_AND_LASHES, smoothness=smoothness,
+                       value_range=(unit.minimum, unit.maximum), description=unit.description)
         D = masked(unit, D, model.vertices, eye_level)
-        fit = fit_parameter(model, D, unit.kind, name=unit.name, parent=unit.parent, region=SKIN_AND_LASHES,
-                            smoothness=smoothness, value_range=(unit.minimum, unit.maximum),
-                            description=unit.description)
+        if unit.kind == "field":
+            fit = fit_parameter(model, D + appearance(unit, skin), "field", **options)
+        else:
+            fit = fit_parameter(model, D, unit.kind, **options)
+            if unit.stored_kind == "field":       # the fitted motion, smooth as before, and its furrows
+                fit = fit_parameter(model, fit.fitted + appearance(unit, skin), "field", **options)
         region = fit.region
         fit.region = InfluenceRegion(region.indices, np.round(region.weights, 6),      # as the file keeps them
                                      None if region.displacements is None else np.round(region.displacements, 4))
         fit.apply(model)
         keep_off_eyeballs(model, unit.name)
         fitted = model.deform({unit.name: 1.0}) - model.deform()
-        out.append(ActionUnitFit(unit, fit, masked(unit, artist, model.vertices, eye_level), fitted))
+        extra = appearance(unit, skin)
+        out.append(ActionUnitFit(unit, fit, unit_target(unit, pose, model, artist, skin), fitted,
+                                 extra, np.einsum("ij,ij->i", extra, skin.normals)))
     return out
 
 

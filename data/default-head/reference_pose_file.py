@@ -59,3 +59,35 @@ def write_reference_poses(path: Path, wheel: AnnyWheel, target, source: np.ndarr
             put(units, name.split("/")[1], reference_target(target, name))
     tmp.replace(path)
     return summary
+
+
+def write_facs_appearance(path: Path, appearance: dict) -> None:
+    """Write ``facs-appearance.h5``: per action unit parameter, the furrows and bulges it carries.
+
+    ``appearance``: parameter name → (displacements (N, 3) mm, depth (N,) mm), at value 1 (FACS
+    intensity E; action_units.py, facs_creases.py). The same sparse form as the reference poses
+    (``/facs_appearance/<parameter>/{indices, displacements}``) plus ``depth``, the displacement
+    along the rest skin's outward normal (negative: a furrow, positive: a bulge): where a wrinkle
+    map (a normal map blended by the AU's value) belongs. Identities share the default head's
+    vertex numbering, so the masks index their vertices too.
+    """
+    import h5py
+
+    tmp = path.with_suffix(".tmp")
+    with h5py.File(tmp, "w", track_order=True) as f:
+        f.attrs["format"] = "artificial-person-poses"
+        f.attrs["version"] = 1
+        f.attrs["units"] = "mm"
+        f.attrs["source"] = "data/default-head/facs_creases.py (derive_default_head.py)"
+        facs = f.create_group("facs_appearance", track_order=True)
+        facs.attrs["description"] = (
+            "the furrows, wrinkles and bulges each FACS action unit parameter of head.xml carries at value 1 "
+            "(intensity E), beyond its fitted motion; depth: along the rest skin's outward normal, mm "
+            "(negative: a furrow, positive: a bulge)")
+        for name, (D, depth) in appearance.items():
+            moved = np.flatnonzero(np.linalg.norm(D, axis=1) > 1e-6)
+            g = facs.create_group(name)
+            g.create_dataset("indices", data=moved.astype(np.int32))
+            g.create_dataset("displacements", data=D[moved].astype(np.float32))
+            g.create_dataset("depth", data=depth[moved].astype(np.float32))
+    tmp.replace(path)

@@ -27,6 +27,7 @@ from engine.identity.rest_fit import (
     line_fields_with_the_skin,
     refit_eyelid_angles,
 )
+from engine.identity.rest_lids import lowered_lids
 from engine.identity.targets import IdentityTargets, shipped_targets
 from engine.identity.weights import identity_displacement
 from engine.model import Model
@@ -76,7 +77,7 @@ def identity_vertex_displacement(model: Model, identity: Identity,
             rest_h = targets.rest[helper] + offset
             rigid[part] = similarity(rest_h, rest_h + D_kept[helper])
     D = keep_rest_lip_gap(model, keep_mouth_bag_inside(model, D))
-    rigid = keep_eyelid_clearance(model, D, rigid)
+    rigid = keep_eyelid_clearance(_skin_as_made(model, targets.rest[pos] + offset, ~made), D, rigid)
     for part, move in rigid.items():
         idx = model.part_vertices(part)
         D[idx] = move.point(model.vertices[idx]) - model.vertices[idx]
@@ -86,7 +87,28 @@ def identity_vertex_displacement(model: Model, identity: Identity,
         dist, near = cKDTree(model.vertices[known]).query(model.vertices[made], k=GENERATED_NEIGHBOURS)
         w = 1.0 / np.maximum(dist, 1e-6) ** 2
         D[made] = np.einsum("mk,mkd->md", w / w.sum(axis=1, keepdims=True), D[known[near]])
-    return D, rigid
+    # a relaxed rest lid: the upper lid lowered along the blink where it leaves the iris's top bare (rest_lids.py)
+    moved, _ = lowered_lids(model, model.vertices + D, rigid)
+    return moved - model.vertices, rigid
+
+
+AS_MADE_MM = 2.0          # skin within this of MakeHuman's own place is taken back there for the eyes' clearance
+
+
+def _skin_as_made(model: Model, made_rest: np.ndarray, kept: np.ndarray) -> Model:
+    """``model`` with its skin where MakeHuman made it (``made_rest`` for the ``kept`` vertices), where
+    it is within :data:`AS_MADE_MM` of it: the default head's lowered rest lids (rest_lids.py) taken
+    back, so that each eyeball is fitted to the lids the identity's targets were made on."""
+    idx = np.flatnonzero(kept)
+    is_skin = model.vertex_part[idx] == model.parts.index("skin") if "skin" in model.parts else np.ones(len(idx), bool)
+    off = np.linalg.norm(model.vertices[idx] - made_rest, axis=1)
+    back = is_skin & (off > 0) & (off < AS_MADE_MM)
+    if not back.any():
+        return model
+    out = model.copy()
+    out.vertices[idx[back]] = made_rest[back]
+    out.changed()
+    return out
 
 
 def make_identity_head(identity: Identity, base: Model | None = None,

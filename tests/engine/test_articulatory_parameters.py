@@ -306,5 +306,5 @@ def test_the_derivation_reproduces_the_shipped_head(tmp_path):
     subprocess.run([sys.executable, str(HEAD_DIR / "derive_default_head.py"), "--wheel", str(wheel),
                     "--out", str(tmp_path)], check=True, capture_output=True, timeout=600)
     _assert_same_model_text((tmp_path / "head.xml").read_text(), (HEAD_DIR / "head.xml").read_text())
-    for name in ("head.h5", "reference-poses.h5"):
+    for name in ("head.h5", "reference-poses.h5", "facs-appearance.h5"):
         _assert_same_arrays(tmp_path / name, HEAD_DIR / name)
