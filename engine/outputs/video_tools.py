@@ -14,6 +14,8 @@ Writing (:mod:`engine.outputs.video_writer`) and inspecting
 from __future__ import annotations
 
 import shutil
+import subprocess
+from pathlib import Path
 
 from engine.errors import UserError
 
@@ -42,3 +44,17 @@ def stderr_tail(stderr: bytes) -> str:
     """The last :data:`STDERR_LINES` non-empty lines of a program's complaint, on one line."""
     lines = [line.strip() for line in stderr.decode("utf-8", "replace").splitlines() if line.strip()]
     return "; ".join(lines[-STDERR_LINES:]) or "no message"
+
+
+def copy_without_audio(source: str | Path, destination: str | Path, name: str | Path | None = None) -> None:
+    """The video stream of the MP4 ``source`` into the MP4 ``destination`` as it is (copied, not encoded
+    again: the same frames, bit for bit), without its sound. ``name`` is the file errors name (default
+    ``destination``)."""
+    from engine.processes import with_parent_death_signal
+
+    command = [find_tool("ffmpeg"), "-hide_banner", "-nostdin", "-loglevel", "error", "-y", "-i", str(source),
+               "-map", "0:v:0", "-c", "copy", "-movflags", "+faststart", "-f", "mp4", str(destination)]
+    result = subprocess.run(with_parent_death_signal(command), capture_output=True, timeout=600, check=False)
+    if result.returncode != 0:
+        raise VideoError(f"ffmpeg failed copying the video: {stderr_tail(result.stderr)}",
+                         file=destination if name is None else name)

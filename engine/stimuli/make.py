@@ -31,6 +31,7 @@ from engine.commands.command_files import HighLevelCommand
 from engine.formats.atomic import atomic_files, atomic_write_text
 from engine.model.model import Model
 from engine.outputs.png_file import write_png
+from engine.outputs.video_tools import copy_without_audio
 from engine.outputs.video_writer import check_video, encode_video
 from engine.speech.say import Speech, speak
 from engine.speech.synthesis import Utterance, phones_csv, wav_bytes
@@ -104,11 +105,12 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     values = timeline.sample(frame_times - layout.video_start_ms)
     names = {kind: FILE_NAMES[kind].format(id=stimulus.id) for kind in design.output.kinds}
     paths = {kind: outdir / name for kind, name in names.items()}
-    requests = {kind: check_video(paths[kind], model, frame_times, values, timeline.parameters, fps,
-                                  audio=audio if kind == "mp4" else None, sample_rate=rate if kind == "mp4" else None,
-                                  size=design.output.size, view=design.output.view, look=design.output.look,
-                                  encoding=design.output.encoding)
-                for kind in ("mp4", "silent-mp4") if kind in paths}
+    # one video drawn: with both kinds, the silent one is the sound one's video stream copied (same frames)
+    drawn = "mp4" if "mp4" in paths else "silent-mp4" if "silent-mp4" in paths else None
+    requests = {} if drawn is None else {drawn: check_video(
+        paths[drawn], model, frame_times, values, timeline.parameters, fps,
+        audio=audio if drawn == "mp4" else None, sample_rate=rate if drawn == "mp4" else None,
+        size=design.output.size, view=design.output.view, look=design.output.look, encoding=design.output.encoding)}
     words = [w.start_ms + layout.audio_start_ms for w in utterance.words]
     onset = next((p.start_ms for p in utterance.phones if p.label not in PAUSES), 0.0) + layout.audio_start_ms
     still_ms = design.output.still_ms
@@ -116,10 +118,12 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
         still_ms = (apex_ms + layout.video_start_ms) if apex_ms is not None else layout.video_start_ms + \
             0.5 * (speech.duration_ms)
     with atomic_files(paths.values()) as temporary:
-        for kind, path in paths.items():
+        for kind, path in sorted(paths.items(), key=lambda item: item[0] == "silent-mp4"):   # after the mp4
             destination = temporary[path]
             if kind in requests:
                 encode_video(requests[kind], destination)
+            elif kind == "silent-mp4":                   # the mp4, written just before, without its sound
+                copy_without_audio(temporary[paths["mp4"]], destination, path)
             elif kind == "wav":
                 destination.write_bytes(wav_bytes(audio, rate))
             elif kind == "png":

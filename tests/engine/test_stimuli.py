@@ -379,3 +379,32 @@ def test_a_failing_stimulus_leaves_a_folder_the_user_made_in_place(tmp_path):
     (tmp_path / "d.toml").write_text(_FAILS_AT.format(texts='"Pappa."'))
     assert_user_error(run("stimuli", tmp_path / "d.toml", "-o", out, "--workers", "1"))
     assert out.is_dir()
+
+
+@needs_festival
+def test_a_silent_video_beside_the_sound_one_is_not_drawn_again(tmp_path, monkeypatch):
+    """Issue 35 §4, each result computed once: with mp4 and silent-mp4, the face is drawn once per frame (a
+    counter of the renderer's draws, not a timer) and the silent file holds the very same frames."""
+    from engine.outputs import render
+    from engine.outputs.render_helper import ENVIRONMENT
+    from engine.outputs.video_probe import probe, read_frames
+    from engine.stimuli.make import make_stimulus
+
+    monkeypatch.setenv(ENVIRONMENT, "1")                 # one process draws every frame, so all are counted here
+    draws = []
+    original = render.FrameRenderer.render
+    monkeypatch.setattr(render.FrameRenderer, "render", lambda self, positions: (draws.append(1),
+                                                                                  original(self, positions))[1])
+    counts = {}
+    for kinds in ('["mp4"]', '["silent-mp4", "mp4"]'):
+        design = parse_design(f'[factors]\ntext = ["Pappa."]\n[output]\nkinds = {kinds}\nsize = "64x48"\n',
+                              str(tmp_path / "d.toml"))
+        out = tmp_path / str(len(counts))
+        out.mkdir()
+        draws.clear()
+        make_stimulus(design, design.stimuli[0], out)
+        counts[kinds] = len(draws)
+    assert counts['["silent-mp4", "mp4"]'] == counts['["mp4"]'] > 0
+    silent, sound = tmp_path / "1" / "0001-silent.mp4", tmp_path / "1" / "0001.mp4"
+    assert probe(silent).audio_codec is None and probe(sound).audio_codec == "aac"
+    np.testing.assert_array_equal(read_frames(silent), read_frames(sound))
