@@ -13,9 +13,8 @@ fit would not know whose head to make); a face smaller than
 :data:`MIN_FACE_PX` (too few pixels to place 68 points on).
 
 dlib's detector and predictor are frontal models: they find no profile, so
-a side photograph's points are not found here (see
-:mod:`engine.photofit.profile_points` for the estimate made from its
-silhouette, and ``docs/photofit.md``).
+a side photograph's points are not found by themselves
+(:func:`engine.photofit.fit.find_points` refuses it; ``docs/photofit.md``).
 """
 
 from __future__ import annotations

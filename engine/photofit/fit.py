@@ -129,9 +129,8 @@ def fit_photo_files(front: str | Path, side: str | Path | None, landmarks: str |
     """:func:`fit_photos` of files: the photographs (JPEG/PNG) and POINTS.json; errors name the file.
 
     Without ``landmarks`` the front photograph's points are found by dlib's detector and predictor
-    (:mod:`engine.photofit.auto_landmarks`; the side photograph's from its silhouette,
-    :mod:`engine.photofit.profile_points`) and, with ``found_to``, written there as POINTS.json
-    (``result.found_points`` is that file).
+    (:mod:`engine.photofit.auto_landmarks`) and, with ``found_to``, written there as POINTS.json
+    (``result.found_points`` is that file); a side photograph then is refused (dlib finds no profile).
     """
     started = time.perf_counter()
     base = load_model()
@@ -166,12 +165,10 @@ def fit_photo_files(front: str | Path, side: str | Path | None, landmarks: str |
 
 def find_points(base: Model, photos: Mapping[str, np.ndarray],
                 paths: Mapping[str, str | Path | None]) -> PhotoPoints:
-    """Every photograph's points found by themselves: the front's by dlib, the side's from its silhouette."""
-    known = known_ids(base)
-    front = find_face_points(photos["front"], known, paths.get("front")).pixels
-    points: PhotoPoints = {"front": dict(front)}
+    """The front photograph's points found by dlib. A side photograph's are not found (dlib's models see faces
+    from the front only): refused, before the front's are looked for."""
     if "side" in photos:
-        from engine.photofit.profile_points import profile_points
-
-        points["side"] = profile_points(base, photos["side"], paths.get("side"))
-    return points
+        raise PhotoFitError("a side photograph's points are not found by themselves (dlib's models find frontal "
+                            "faces only): place them in the workbench's photo wizard, or give --landmarks "
+                            "POINTS.json with a 'side' view", file=paths.get("side"))
+    return {"front": dict(find_face_points(photos["front"], known_ids(base), paths.get("front")).pixels)}
