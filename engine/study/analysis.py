@@ -261,6 +261,8 @@ def _contrast_row(measure: str, ta: list[Trial], tb: list[Trial], analysis: Anal
     both = [p for p in va if p in vb and not (math.isnan(va[p]) or math.isnan(vb[p]))]
     differences = [vb[p] - va[p] for p in both]
     mean, _, _, low, high = mean_interval(differences)
+    if measure in ("hit_rate", "hu"):            # a difference of proportions lies within ±1
+        low, high = max(-1.0, low), min(1.0, high)
     t, p, _ = paired_t([va[q] for q in both], [vb[q] for q in both])
     return {"measure": measure, "a": " ".join(a), "b": " ".join(b), "a_value": a_value, "b_value": b_value,
             "difference": b_value - a_value, "pooled_ci_low": pooled_low, "pooled_ci_high": pooled_high,

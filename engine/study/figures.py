@@ -72,8 +72,8 @@ def _grouped(ax: Any, emotions: list[str], conditions: list[tuple[str, str]],
             ys.append(found)
             if interval is not None:
                 low, high = interval(condition, emotion)
-                lows.append(found - low if not math.isnan(low) else 0.0)
-                highs.append(high - found if not math.isnan(high) else 0.0)
+                lows.append(max(0.0, found - low) if not math.isnan(low) else 0.0)
+                highs.append(max(0.0, high - found) if not math.isnan(high) else 0.0)
         if not xs:
             continue
         ax.bar(xs, ys, width * 0.92, color=COLOURS.get(condition, "#888"), label=_label(condition))

@@ -113,6 +113,8 @@ def sessions(built, tmp_path_factory):
     finally:
         lab.terminate()
         lab.wait(timeout=30)
+        lab.stdout.close()
+        lab.stderr.close()
     out["lab"]["saved"] = (study / "data" / "tiny_1.csv").read_bytes().decode("utf-8")
     # 2. JATOS: the archive unpacked, a stand-in jatos.js beside the component page
     jatos = tmp_path_factory.mktemp("jatos")
@@ -276,13 +278,13 @@ def test_the_analysis_gives_the_numbers_the_policies_imply(sessions, built, tmp_
         _report_picture(report)
 
 
-def _report_picture(report: Path) -> None:
+def _report_picture(report: Path, name: str = "study-report.png") -> None:
     from PIL import Image
 
     with Browser() as chromium:
         page = chromium.open((report / "report.html").as_uri(), (1180, 1500))
         page.wait_for("document.readyState === 'complete' && [...document.images].every((i) => i.complete)")
-        Image.fromarray(page.screenshot((1180, 1500))).save(SHOTS / "study-report.png")
+        Image.fromarray(page.screenshot((1180, 1500))).save(SHOTS / name)
 
 
 LIVE_DESIGN = """name = "tiny-live"
@@ -321,6 +323,8 @@ def test_the_live_player_condition_plays_each_stimulus_and_times_the_answer_on_i
     finally:
         lab.terminate()
         lab.wait(timeout=30)
+        lab.stdout.close()
+        lab.stderr.close()
     assert session["problems"] == []
     assert outside(session["requested"], url.split("/index.html")[0], lambda u: u.startswith("blob:")) == []
     rows = _rows((study / "data" / "tiny-live_1.csv").read_bytes().decode("utf-8"))
@@ -334,3 +338,72 @@ def test_the_live_player_condition_plays_each_stimulus_and_times_the_answer_on_i
         assert [w["word"] for w in words] == ["Moi"]
         assert float(row["play_t"]) <= words[0]["t"] <= float(row["ended_t"]) <= float(row["response_t"])
         assert float(row["rt"]) >= float(row["duration_ms"]) - 2.0
+
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "study"
+
+
+def _confuses_static_fear(state: dict, study: dict) -> str:
+    """The paper's finding as a policy: static fear read as surprise and static surprise as fear, else the
+    intended emotion; 3 for a still's intensity and 5 for a video's; naturalness 6 for people, 3 for the head."""
+    if state.get("expected") or state["task"] == "identification":
+        answer = intended(state, study)
+        if not state.get("expected") and state["presentation"] == "static":
+            answer = {"fear": "surprise", "surprise": "fear"}.get(answer, answer)
+        return answer
+    spec = next(t for t in study["trials"] if t["stimulus"] == state["stimulus"]
+                and t["presentation"] == state["presentation"])
+    if state["task"] == "rating:intensity":
+        return "3" if spec["presentation"] == "static" else "5"
+    return "6" if spec["source"] == "human" else "3"
+
+
+def test_the_worked_example_runs_and_its_analysis_finds_what_its_participants_did(tmp_path):
+    """docs/study.md's worked example (examples/study/katsyri2003.toml, with the astronaut as a human actor):
+    built (its set made first), answered by four scripted participants, analysed: the static-fear confusion
+    of two of them is in the confusion matrix and the dynamic − static contrast."""
+    for path in EXAMPLE.iterdir():
+        shutil.copyfile(path, tmp_path / path.name)
+    from tests.engine.test_study_helpers import human_files
+
+    human_files(tmp_path)
+    design = tmp_path / "katsyri2003.toml"
+    design.write_text(design.read_text().replace('# [human]\n# table = "actors.csv"', '[human]\ntable = "actors.csv"'))
+    made = run("study", design, "-o", tmp_path / "study", "--workers", "1")
+    assert made.returncode == 0, made.stderr
+    study = tmp_path / "study"
+    document = json.loads((study / "study.json").read_text())
+    assert [c["value"] for c in document["choices"]] == ["happy", "sad", "surprise", "fear", "angry", "disgust",
+                                                          "neutral", "other"]
+    policies = {"1": intended, "2": _confuses_static_fear, "3": _confuses_static_fear, "4": intended}
+    for participant, policy in policies.items():
+        lab = subprocess.Popen([sys.executable, str(study / "run-lab.py"), "--port", "0", "--no-browser",
+                                "--participant", participant], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               text=True)
+        try:
+            url = lab.stdout.readline().split(" at ", 1)[1].split(" ", 1)[0]
+            session = _answer(url, document, policy, shots=SHOTS if participant == "2" else None)
+        finally:
+            lab.terminate()
+            lab.wait(timeout=30)
+            lab.stdout.close()
+            lab.stderr.close()
+        assert session["problems"] == [] and session["end"]["done"] == "lab"
+    report = tmp_path / "report"
+    done = run("study-analyse", study / "data", "--set", study / "set", "-o", report)
+    assert done.returncode == 0, done.stderr
+    contrasts = {(r["contrast"], r["within"], r["emotion"], r["measure"]): r
+                 for r in _rows((report / "contrasts.csv").read_text())}
+    fear = contrasts[("dynamic − static", "synthetic", "fear", "hit_rate")]
+    assert (float(fear["a_value"]), float(fear["b_value"])) == (0.5, 1.0)
+    assert float(contrasts[("dynamic − static", "synthetic", "happy", "hit_rate")]["difference"]) == 0.0
+    confusion = {(r["source"], r["presentation"], r["intended"], r["response"]): int(r["count"])
+                 for r in _rows((report / "confusion.csv").read_text())}
+    assert confusion[("synthetic", "static", "fear", "surprise")] == 2
+    assert confusion[("synthetic", "dynamic", "fear", "fear")] == 4
+    naturalness = contrasts[("synthetic − human", "static", "happy", "rating_naturalness")]
+    assert float(naturalness["a_value"]) == pytest.approx(5.0) and float(naturalness["b_value"]) == pytest.approx(3.5)
+    if SHOTS is not None:
+        _report_picture(report, "study-example-report.png")
+        for name in ("recognition.png", "confusion.png", "hu.png", "ratings.png", "validate-vs-people.png"):
+            shutil.copyfile(report / "figures" / name, SHOTS / f"study-{name}")

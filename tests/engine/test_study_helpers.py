@@ -75,21 +75,26 @@ def make_study_inputs(folder: Path) -> Path:
     """The set (``folder/set``), the human comparison (``folder/actors/``, ``actors.csv``), the consent page and
     the study design (``folder/study.toml``); returns the design."""
     made_set(folder, SET_DESIGN)
+    human_files(folder)
+    (folder / "consent.md").write_text(CONSENT)
+    (folder / "study.toml").write_text(STUDY_DESIGN)
+    return folder / "study.toml"
+
+
+def human_files(folder: Path) -> None:
+    """``folder/actors/``: the astronaut smiling, a photograph and a one-second video; ``folder/actors.csv``."""
     actors = folder / "actors"
     actors.mkdir()
     from PIL import Image
     from skimage import data
 
-    Image.fromarray(data.astronaut()).resize((160, 160)).save(actors / "astronaut-happy.png")
+    Image.fromarray(data.astronaut()).resize((240, 240)).save(actors / "astronaut-happy.png")
     subprocess.run([shutil.which("ffmpeg") or "ffmpeg", "-v", "error", "-y", "-loop", "1", "-i",
                     str(actors / "astronaut-happy.png"), "-t", "1", "-r", "25", "-pix_fmt", "yuv420p",
                     "-c:v", "libx264", str(actors / "astronaut-happy.mp4")], check=True, timeout=60)
     (folder / "actors.csv").write_text("file,emotion,presentation,actor\n"
                                        "actors/astronaut-happy.png,happy,static,astronaut\n"
                                        "actors/astronaut-happy.mp4,Happy,dynamic,astronaut\n")
-    (folder / "consent.md").write_text(CONSENT)
-    (folder / "study.toml").write_text(STUDY_DESIGN)
-    return folder / "study.toml"
 
 
 Policy = Callable[[dict[str, Any], dict[str, Any]], str]
@@ -187,6 +192,8 @@ class Participant:
         if self.shots is None:
             return
         name = None
+        if (state.get("stimulus") or "").startswith("human"):
+            return
         if state.get("page") in ("consent", "debrief"):
             name = state["page"]
         elif state.get("task") == "identification" and not state.get("expected") and state.get("presentation"):
