@@ -23,6 +23,7 @@ frames the rest pose, so every picture of a view is seen from the same place.
 About a minute on two cores.
 """
 
+import argparse
 import sys
 from pathlib import Path
 
@@ -39,7 +40,7 @@ from engine.timeline.timeline import Timeline  # noqa: E402
 
 OUT = ROOT / "docs" / "images" / "expressions"
 RENDER = (800, 1000)
-FACE = {"front": (0.24, 0.32, 0.76, 0.88), "three-quarter": (0.04, 0.31, 0.56, 0.87)}   # brows to chin, fractions
+FACE = {"front": (0.24, 0.2, 0.76, 0.88), "three-quarter": (0.04, 0.19, 0.56, 0.87)}   # forehead to chin, fractions
 
 
 def both(name, value=1.0):
@@ -77,7 +78,8 @@ LEFT = ["AU1_left", "AU2_left", "AU4_left", "AU5_left", "AU6_left", "AU7_left", 
         "AU10_left", "AU11_left", "AU12_left", "AU15_left", "AU16_left", "AU20_left", "AU24_left", "AU38_left"]
 # (label, script): each expression at its defaults, then a one-sided variant and an even blend.
 EXPRESSIONS = [(name, f'<{name} at="0"/>') for name in
-               ("Neutral", "Happy", "Sad", "Surprise", "Fear", "Anger", "Disgust", "Contempt", "HappySurprise")]
+               ("Neutral", "Happy", "HappyOpen", "Sad", "Surprise", "SurpriseWide", "Fear", "Anger", "AngerOpen",
+                "Disgust", "Contempt", "HappySurprise")]
 EXTRAS = [
     ("Happy left=1 right=0", '<Happy at="0" right="0"/>'),
     ("Happy 50 % + Surprise 50 %", '<Happy at="0" amplitude="50"/><Surprise at="0" amplitude="50"/>'),
@@ -139,14 +141,19 @@ def render_all(head, poses, renderers, size):
 
 
 def main() -> int:
-    OUT.mkdir(parents=True, exist_ok=True)
-    head = engine.load_model()
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--model", help="another model file (default: the shipped default head)")
+    parser.add_argument("--out", type=Path, default=OUT, help=f"the folder to write to (default: {OUT})")
+    args = parser.parse_args()
+    out = args.out
+    out.mkdir(parents=True, exist_ok=True)
+    head = engine.load_model(args.model) if args.model else engine.load_model()
     library = load_library()
     problems = library.check(head)
     if problems:
         raise SystemExit(f"the library does not bind to the default head: {problems[0]}")
     expressions = [(label, apex_values(script, library, head)) for label, script in EXPRESSIONS + EXTRAS]
-    small, face = (200, 260), (240, 312)
+    small, face = (200, 327), (240, 392)
     renderers = {view: FrameRenderer(head, size=RENDER, view=view) for view in FACE}
     try:
         au = render_all(head, [v for _, v in ACTION_UNITS], renderers, small)
@@ -157,12 +164,12 @@ def main() -> int:
             pair.paste(au["three-quarter"][k], (small[0], 0))
             tiles.append(labelled(pair, label))
         sheet(tiles, 4, "Action units of Table 1 at full intensity, both sides (front | three-quarter)").save(
-            OUT / "action-units.png", optimize=True)
+            out / "action-units.png", optimize=True)
         print("action-units.png")
 
         left = [crop(renderers["front"].render(head.deform({name: 1.0})), "front", small) for name in LEFT]
         sheet([labelled(t, n) for t, n in zip(left, LEFT, strict=True)], 8,
-              "The subject's left side only (front)").save(OUT / "action-units-left.png", optimize=True)
+              "The subject's left side only (front)").save(out / "action-units-left.png", optimize=True)
         print("action-units-left.png")
 
         ex = render_all(head, [v for _, v in expressions], renderers, face)
@@ -176,7 +183,7 @@ def main() -> int:
         pair.paste(ex["three-quarter"][k], (face[0], 0))
         tiles.append(labelled(pair, label))
     sheet(tiles, 4, "Expressions at the middle of their apex (front | three-quarter)").save(
-        OUT / "expressions.png", optimize=True)
+        out / "expressions.png", optimize=True)
     print("expressions.png")
     return 0
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The shipped emotions on five people, judged by ``validate``: the figures of docs/validation.md.
 
-    .venv/bin/python docs/make_validation_gallery.py [--keep FOLDER]     (from the project root)
+    .venv/bin/python docs/make_validation_gallery.py [--keep FOLDER] [--look NAME] [--out FOLDER]
+                                                                          (from the project root)
 
 Renders Neutral and the six emotions of the paper's evaluation (§4: Happy, Sad, Surprise, Fear,
 Anger, Disgust) at the middle of their apex, front view, 640 × 480, on the default head and
@@ -13,7 +14,9 @@ four identities (a man of 60, European; a woman of 22, African; a man of 35, Asi
 ``report.png``           the HTML report's first screen, as Chromium shows it;
 ``validation.csv``, ``validation-confusion.csv``, ``validation-identities.csv``  the tables.
 
-About two minutes on two cores.
+``--look`` renders in another look (docs/looks.md; default: the renderer's default), ``--out`` writes
+the pictures and tables to another folder than ``docs/images/validation/`` (to compare looks without
+touching the docs' figures). About two minutes on two cores.
 """
 
 from __future__ import annotations
@@ -59,12 +62,12 @@ def apex_values(script: str, library, head) -> dict[str, float]:
     return timeline.values_at(begin + args["apex"] / 2)
 
 
-def render_stills(folder: Path) -> None:
+def render_stills(folder: Path, look=None) -> None:
     library = load_library()
     lines = ["file,emotion,identity"]
     for person, values in PEOPLE.items():
         head = engine.load_model() if values is None else make_identity_head(Identity(values))
-        renderer = FrameRenderer(head, size=SIZE, view="front")
+        renderer = FrameRenderer(head, size=SIZE, view="front", look=look)
         try:
             for expression in EXPRESSIONS:
                 pose = apex_values(f'<{expression} at="0"/>', library, head)
@@ -107,13 +110,19 @@ def contact_sheet(folder: Path, table: Path, path: Path) -> None:
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--keep", type=Path, help="keep the stills in this folder")
+    parser.add_argument("--look", default=None, help="the look to render in (portrait, flat, legacy, or a JSON "
+                                                     "file of a look's settings)")
+    parser.add_argument("--out", type=Path, default=OUT, help="where the sheet, report and tables go")
     args = parser.parse_args()
-    OUT.mkdir(parents=True, exist_ok=True)
+    out = args.out
+    out.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as name:
         folder = args.keep or Path(name)
         folder.mkdir(parents=True, exist_ok=True)
-        render_stills(folder)
-        table, report = OUT / "validation.csv", folder / "report.html"
+        from engine.outputs.looks import look_option
+
+        render_stills(folder, look_option(args.look) if args.look else None)
+        table, report = out / "validation.csv", folder / "report.html"
         stills = sorted(str(p) for p in folder.glob("*.png"))
         done = subprocess.run([sys.executable, "-m", "engine", "validate", *stills, "--intended",
                                str(folder / "intended.csv"), "--report", str(report), "-o", str(table)],
@@ -122,12 +131,12 @@ def main() -> int:
         if done.returncode != 0:
             return done.returncode
         _relative_files(table, folder)
-        contact_sheet(folder, table, OUT / "contact-sheet.jpg")
+        contact_sheet(folder, table, out / "contact-sheet.jpg")
         chromium = shutil.which("chromium")
         if chromium:
             subprocess.run([chromium, "--headless", "--no-sandbox", "--disable-gpu", "--no-first-run",
                             "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                            f"--screenshot={OUT / 'report.png'}", "--window-size=1150,1500",
+                            f"--screenshot={out / 'report.png'}", "--window-size=1150,1500",
                             report.as_uri()], capture_output=True, timeout=120, check=False)
     return 0
 
