@@ -28,7 +28,7 @@ part: the renderer hands them to VTK, the site writes them into the animation JS
 >>> sorted(values)[:3], len(values["lookLightDirection0"])
 (['lookAmbientOcclusion', 'lookDirectOcclusion', 'lookExposure'], 3)
 >>> material_uniforms(look_from("portrait"), "eye_left")["lookRoughness"]
-0.14
+0.2
 """
 
 from __future__ import annotations

@@ -6,14 +6,14 @@ each kind of part's material, the anti-aliasing and the background. Three
 presets ship:
 
 ``portrait`` (the default)
-    a three-point portrait light — a key light above the camera's left, a
+    a three-point portrait light — a key light 45° above the camera's left, a
     fill from the right at a sixth of its strength, a rim light from behind
     — over a dim sky-and-ground ambient, physically based shading (GGX
     highlights, Fresnel, skin that lets light wrap a little past the edge of
     the shadow, redder there), baked ambient occlusion in the creases, FXAA.
 ``flat``
-    even light for psychophysics: mostly ambient, two weak frontal lights
-    from either side so neither half of the face is darker, faint
+    even light for psychophysics: a bright ambient and two weak lights from
+    above, either side, so neither half of the face is darker, faint
     highlights, a little occlusion, FXAA, a uniform grey background.
 ``legacy``
     the look of every picture before looks existed, to the pixel: VTK's
@@ -156,7 +156,9 @@ def material_class(part: str) -> str:
 _SKIN = Material(roughness=0.52, ior=1.4, specular=0.9, wrap=(0.16, 0.12, 0.1))
 _MATERIALS = {
     "skin": _SKIN,
-    "eye": Material(roughness=0.14, ior=1.376, specular=1.0),      # the cornea: a sharp catchlight
+    # the cornea: a catchlight. With the key light 45° up its highlight sits at the top of the iris, half
+    # under the upper lid; a little broader and brighter than physical (0.14, 1.0) it still shows there
+    "eye": Material(roughness=0.2, ior=1.376, specular=1.3),
     "eyelash": Material(roughness=0.7, ior=1.55, specular=0.3),
     "eyebrow": Material(roughness=0.7, ior=1.55, specular=0.3),
     "brow": Material(roughness=0.7, ior=1.55, specular=0.3),
@@ -171,15 +173,20 @@ _MATERIALS = {
 LOOKS: dict[str, Look] = {
     "portrait": Look(
         "portrait",
-        lights=(Light((-1.0, 0.6, 1.0), (1.0, 0.96, 0.92), 1.0),         # key: above the camera's left
+        # key: 45° above and 45° to the camera's left. Lower (0.6 up, as at first) the upper lip's
+        # underside and the upper teeth took the same light as the lip's front, and dlib's lip
+        # landmarks put the inner upper lip below the teeth: r 0.886 against the engine's lip gap
+        lights=(Light((-1.0, 1.4, 1.0), (1.0, 0.96, 0.92), 1.0),
                 Light((1.0, -0.1, 0.65), (0.92, 0.95, 1.0), 0.15),       # fill: the right, 1/6 as strong
                 Light((0.7, 0.8, -1.0), (1.0, 1.0, 1.0), 0.4)),          # rim: behind, above
         sky=(0.07, 0.07, 0.073), ground=(0.06, 0.057, 0.054), occlusion=1.0, direct_occlusion=0.75,
         materials=_MATERIALS),
     "flat": Look(
         "flat",
-        lights=(Light((-0.6, 0.25, 1.0), (1.0, 1.0, 1.0), 0.25), Light((0.6, 0.25, 1.0), (1.0, 1.0, 1.0), 0.25)),
-        sky=(0.45, 0.45, 0.45), ground=(0.38, 0.38, 0.38), occlusion=0.6, direct_occlusion=0.3,
+        # from above the eyes, as even left and right as before: lit from the front (0.25 up, with more
+        # ambient: sky 0.45, ground 0.38) the lips had no shading to set them off, r 0.802 (docs/looks.md)
+        lights=(Light((-0.6, 1.2, 1.0), (1.0, 1.0, 1.0), 0.4), Light((0.6, 1.2, 1.0), (1.0, 1.0, 1.0), 0.4)),
+        sky=(0.35, 0.35, 0.35), ground=(0.22, 0.22, 0.22), occlusion=0.6, direct_occlusion=0.3,
         materials={name: replace(m, specular=m.specular * 0.4) for name, m in _MATERIALS.items()},
         background=("#c8c8c8", "#c8c8c8")),
     # the old renderer's settings, recorded (engine.outputs.render draws this look with its own code)
