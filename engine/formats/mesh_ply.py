@@ -76,7 +76,10 @@ def read_ply(path: Path) -> RawMesh:
     if encoding == "ascii":
         values = _ascii_body(blob, body_start, header_lines, elements, fail)
     else:
-        values = _binary_body(blob, body_start, elements, "<" if encoding == "binary_little_endian" else ">", fail)
+        # float32 → float64 of a signalling NaN raises numpy's "invalid value" warning: it stays NaN (refused
+        # below as a coordinate that is not a finite number), without the warning reaching the user
+        with np.errstate(invalid="ignore"):
+            values = _binary_body(blob, body_start, elements, "<" if encoding == "binary_little_endian" else ">", fail)
     return _assemble(path, values, elements, comments, fail)
 
 

@@ -100,3 +100,4 @@ def test_the_check_itself(tmp_path):
     for name in ("../x.png", "/etc/passwd", "b/../../x.png", "x\0.png"):
         with pytest.raises(FileOutside):
             file_beside(document, name)
+
