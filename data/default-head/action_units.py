@@ -235,11 +235,12 @@ def source_pose(unit: ActionUnit, pose) -> np.ndarray:
 
 
 def appearance(unit: ActionUnit, skin: creases.Skin) -> np.ndarray:
-    """The furrows and bulges ``unit`` carries (:data:`APPEARANCE`), on its side of the face, (N, 3) mm."""
+    """The furrows and bulges ``unit`` carries (:data:`APPEARANCE`), on its side of the face, (N, 3) mm;
+    the lashes on a lid they move go with it (each as its nearest skin vertex)."""
     make = APPEARANCE.get(unit.appearance_key)
     if make is None:
         return np.zeros_like(skin.vertices)
-    return make(skin) * side_mask(skin.vertices[:, 0], unit.side)[:, None]
+    return skin.carry_lashes(make(skin) * side_mask(skin.vertices[:, 0], unit.side)[:, None])
 
 
 def unit_target(unit: ActionUnit, pose, model, D=None, skin: creases.Skin | None = None) -> np.ndarray:

@@ -20,6 +20,11 @@ two lines across the root of the nose, three crow's feet, the nasolabial
 furrow and the mentolabial sulcus, not fine wrinkles. Depths are at FACS
 intensity E (the AU at value 1) and scale with it.
 
+The lashes hang on the lids: where a field moves lid skin (AU6 bags and lifts
+the lower lid), each lash vertex moves as the skin vertex nearest it at rest
+(:meth:`Skin.carry_lashes`, which ``action_units.appearance`` applies), so
+that the lower lashes stay on the lifted lid.
+
 Waypoints are given for the subject's left side (+X) and mirrored.
 """
 
@@ -31,6 +36,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import sparse
 from scipy.sparse.csgraph import dijkstra
+from scipy.spatial import cKDTree
 
 CREASE_RING_MM = 0.55   # a crease's width: its depth falls to exp(-1) this far, as a share of the local edge
 FRONT = 0.0             # waypoints snap to skin whose normal faces forward at least this much (z component)
@@ -47,6 +53,8 @@ class Skin:
     edge_mm: np.ndarray         # each vertex's mean edge length
     landmarks: dict[str, np.ndarray]
     eyes: dict[str, tuple[np.ndarray, float]]   # side -> the eyeball's centre and radius
+    lashes: np.ndarray          # the lash vertices …
+    lash_skin: np.ndarray       # … and the skin vertex nearest each at rest (on its lid)
 
     @classmethod
     def of(cls, model) -> Skin:
@@ -78,7 +86,18 @@ class Skin:
         for side in ("left", "right"):
             centre = np.asarray(model.parameters[f"eye_{side}_turn"].pivot, dtype=float)
             eyes[side] = centre, float(np.linalg.norm(V[model.part_vertices(f"eye_{side}")] - centre, axis=1).max())
-        return cls(V, normals, np.flatnonzero(is_skin), graph, edge_mm, model.landmark_positions(), eyes)
+        lashes = np.flatnonzero(np.isin(model.vertex_part, [model.parts.index(p) for p in model.parts
+                                                            if p.startswith("eyelashes")]))
+        S = np.flatnonzero(is_skin)
+        lash_skin = S[cKDTree(V[S]).query(V[lashes])[1]] if len(lashes) else lashes
+        return cls(V, normals, S, graph, edge_mm, model.landmark_positions(), eyes, lashes, lash_skin)
+
+    def carry_lashes(self, D: np.ndarray) -> np.ndarray:
+        """``D`` with every lash vertex moved as the skin vertex nearest it at rest: a furrow or bulge on a
+        lid carries the lashes on it (the artist's poses move them with the lid margin already)."""
+        D = D.copy()
+        D[self.lashes] = D[self.lash_skin]
+        return D
 
     def lm(self, key: str) -> np.ndarray:
         return self.landmarks[key]
