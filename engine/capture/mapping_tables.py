@@ -22,13 +22,18 @@ def _sides(channel: str, target: str, weight: float, reason: str) -> list[Entry]
 
 ARKIT_TABLE: list[Entry] = [
     *_sides("eyeBlink{Side}", "eyelid_{side}_close", 1.0, "blink 1 = lid shut; eyelid_*_close 1 shuts the lid"),
-    *_sides("eyeWide{Side}", "AU5_{side}", 1.0, "eyeWide is FACS AU5, upper lid raiser"),
+    *_sides("eyeWide{Side}", "AU5_{side}", 0.74, "eyeWide is FACS AU5, upper lid raiser; AU5 at 1 is FACS intensity "
+           "E, the artist's pose × 1.35 (fit: 0.735)"),
     *_sides("eyeSquint{Side}", "AU7_{side}", 1.0, "eyeSquint is FACS AU7, lid tightener"),
-    ("browInnerUp", "AU1_left", 1.0, "browInnerUp is AU1 (inner brow raiser), one shape for both sides"),
-    ("browInnerUp", "AU1_right", 1.0, "as above, right side"),
-    *_sides("browOuterUp{Side}", "AU2_{side}", 1.0, "outer brow raiser, AU2"),
-    *_sides("browDown{Side}", "AU4_{side}", 1.0, "brow lowerer, AU4"),
-    *_sides("cheekSquint{Side}", "AU6_{side}", 1.0, "cheek raiser, AU6"),
+    ("browInnerUp", "AU1_left", 0.6, "browInnerUp is AU1 (inner brow raiser), one shape for both sides; AU1 at 1 "
+                                     "is FACS intensity E, the artist's pose × 1.6 with forehead lines (fit: 0.604)"),
+    ("browInnerUp", "AU1_right", 0.6, "as above, right side"),
+    *_sides("browOuterUp{Side}", "AU2_{side}", 0.79, "outer brow raiser, AU2; at 1 the artist's pose × 1.25 "
+           "(fit: 0.786)"),
+    *_sides("browDown{Side}", "AU4_{side}", 0.84, "brow lowerer, AU4; at 1 the artist's pose × 1.2 with the "
+           "glabellar furrows (fit: 0.84)"),
+    *_sides("cheekSquint{Side}", "AU6_{side}", 0.69, "cheek raiser, AU6; at 1 the artist's pose × 1.4 with the "
+           "lower lid's bag (fit: 0.688)"),
     *_sides("noseSneer{Side}", "AU9_{side}_nose", 0.59, "nose wrinkler AU9, split into nose and brow; the nose part "
            "is 1.7 × ARKit's sneer (docs/default-head.md)"),
     *_sides("noseSneer{Side}", "AU9_{side}_brow", 1.0, "AU9's pull on the brow"),
@@ -36,8 +41,10 @@ ARKIT_TABLE: list[Entry] = [
     ("mouthClose", "jaw_open", -1.0, "lips sealed over the open jaw (the reference poses: jawOpen + mouthClose "
                                      "= the rest lip gap); the head's lips follow its jaw, so the jaw gives it back"),
     *_sides("mouthSmile{Side}", "AU12_{side}", 1.0, "lip corner puller, AU12"),
-    *_sides("mouthFrown{Side}", "AU15_{side}", 1.0, "lip corner depressor, AU15"),
-    *_sides("mouthStretch{Side}", "AU20_{side}", 1.0, "lip stretcher, AU20"),
+    *_sides("mouthFrown{Side}", "AU15_{side}", 0.8, "lip corner depressor, AU15; at 1 the artist's pose × 1.25 "
+           "(fit: 0.798)"),
+    *_sides("mouthStretch{Side}", "AU20_{side}", 0.73, "lip stretcher, AU20; at 1 the artist's pose × 1.4 "
+           "(fit: 0.726)"),
     *_sides("mouthPress{Side}", "AU24_{side}", 1.0, "lip pressor, AU24"),
     *_sides("mouthLowerDown{Side}", "AU16_{side}", 1.0, "lower lip depressor, AU16"),
     *_sides("mouthUpperUp{Side}", "AU10_{side}", 1.0, "upper lip raiser, AU10 (fit to the reference pose: 0.99)"),
@@ -51,7 +58,9 @@ ARKIT_TABLE: list[Entry] = [
 ]
 """ARKit / MediaPipe blendshapes (both name the same 52 shapes). Where a blendshape needs more than one
 parameter, the weights are a non-negative least-squares fit of those parameters' displacements to the
-default head's own ARKit reference pose of that shape (``engine.fitting.reference_poses``), rounded."""
+default head's own ARKit reference pose of that shape (``engine.fitting.reference_poses``), rounded. So are
+those of the action units scaled to FACS intensity E (``E_GAIN`` in data/default-head/action_units.py): an AU
+at 1 moves more than the artist's pose the ARKit shape is, so the shape at 1 is the AU below 1."""
 
 ARKIT_LOST = {
     "jawForward": "the head has no jaw thrust", "jawLeft": "the head has no sideways jaw",
