@@ -117,7 +117,10 @@ def read_mesh(path: str | Path, scale: float | None = None, *, keep_units: bool 
     path = Path(path)
     factor = _check_scale(scale)
     rotation = up_rotation(up)
-    raw = _read_raw(path, timeout)
+    # NaN and infinite numbers in a file (a signalling NaN's cast to float64, a transform of an infinity) are
+    # refused below as coordinates that are not finite; numpy's warnings about them must not reach the user
+    with np.errstate(invalid="ignore", over="ignore"):
+        raw = _read_raw(path, timeout)
     if len(raw.faces) == 0:
         raise MeshImportError("holds no polygons (points and lines alone are not a surface)", file=path)
     try:

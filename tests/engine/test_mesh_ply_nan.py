@@ -1,5 +1,5 @@
-"""A NaN of any kind in a binary PLY is refused (coordinates) or taken as missing (texture coordinates) without
-a numpy warning, which a user sees on stderr before the one error line, and which fails where warnings are
+"""A NaN of any kind in a binary PLY or a glTF is refused (coordinates) or taken as missing (texture coordinates)
+without a numpy warning, which a user sees on stderr before the one error line, and which fails where warnings are
 errors (found by the release-size fuzz, tests/engine/test_mesh_fuzz.py)."""
 
 from __future__ import annotations
@@ -37,3 +37,23 @@ def test_a_signalling_nan_in_a_binary_ply_is_refused_without_a_warning(tmp_path,
         else:
             mesh = read_mesh(path)
             assert np.isnan(mesh.texture.corner_uv[0, 0])
+
+
+def test_a_signalling_nan_in_a_glb_position_is_refused_without_a_warning(tmp_path):
+    """The same NaN in a glTF's POSITION accessor (BoxTextured.glb: bufferView 1, the positions 288 bytes into it)."""
+    import struct
+    import warnings
+    from pathlib import Path
+
+    from engine.errors import MeshImportError
+
+    data = bytearray((Path(__file__).parent / "data" / "meshes" / "BoxTextured.glb").read_bytes())
+    json_length = struct.unpack_from("<I", data, 12)[0]
+    binary = 12 + 8 + json_length + 8                 # the BIN chunk's first byte
+    data[binary + 288:binary + 292] = SIGNALLING_NAN
+    path = tmp_path / "box.glb"
+    path.write_bytes(bytes(data))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(MeshImportError, match="not finite"):
+            read_mesh(path)
