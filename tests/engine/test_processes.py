@@ -16,8 +16,11 @@ import pytest
 from tests.engine.test_long_speech import alive, children_named, wait_for
 
 PARENT = """
-import subprocess, sys, time
+import signal, subprocess, sys, time
 from engine.processes import with_parent_death_signal
+# Ctrl-C ends it as it ends any Python program, even where the suite was started in the background
+# (a shell starts background jobs with SIGINT ignored, and Python keeps an ignored SIGINT ignored)
+signal.signal(signal.SIGINT, signal.default_int_handler)
 subprocess.Popen(with_parent_death_signal(["sleep", "1000"]), stdin=subprocess.DEVNULL,
                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
 print("started", flush=True)
