@@ -318,9 +318,11 @@ def test_mirror_map_of_the_default_head(painted_head):
 
 def test_topology_fallback_recovers_a_perturbed_side(painted_head):
     """One side of the head moved by random noise (σ = 0.3 mm per axis): no vertex is an exact mirror any more
-    except on the mid-plane. The fallback finds every skin vertex's true partner; the only slips are in the
-    pupils, whose rings of vertices lie 0.2 mm apart — below the noise — and they pick a vertex of the same
-    ring next to the true partner."""
+    except on the mid-plane. The fallback finds every skin vertex's true partner; the only slips are where
+    vertices lie closer together than the noise — the pupils' rings (0.2 mm apart) and the lashes (5 % of
+    their vertices within 0.07 mm of another) — and each picks a vertex of the same part next to the true
+    partner (within 1.5 mm: the eyes' rings, regenerated with the default head of issue 32, lie up to 1.3 mm
+    apart)."""
     m, ctx = painted_head
     truth = ctx.mirror.map
     V = m.vertices.copy()
@@ -334,8 +336,12 @@ def test_topology_fallback_recovers_a_perturbed_side(painted_head):
     skin = m.vertex_part == m.parts.index("skin")
     assert np.array_equal(mm.map[skin], truth[skin])
     slips = np.flatnonzero(matched & (mm.map != truth))
-    assert len(slips) <= 0.005 * m.n_vertices
-    assert np.all(np.linalg.norm(m.vertices[mm.map[slips]] - m.vertices[truth[slips]], axis=1) < 0.5)
+    crowded = {m.parts.index(name) for name in m.parts if name.startswith(("eye_", "eyelashes_"))}
+    assert set(m.vertex_part[slips].tolist()) <= crowded
+    assert len(slips) <= 0.01 * m.n_vertices
+    # a vertex of the same part next to the true partner (an eye's rings lie 0.2-1.3 mm apart)
+    assert np.array_equal(m.vertex_part[mm.map[slips]], m.vertex_part[truth[slips]])
+    assert np.all(np.linalg.norm(m.vertices[mm.map[slips]] - m.vertices[truth[slips]], axis=1) < 1.5)
     assert mm.n_unmatched <= 0.01 * m.n_vertices
     assert np.array_equal(mm.map[mm.map[matched]], np.flatnonzero(matched))
 
