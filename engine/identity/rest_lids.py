@@ -95,24 +95,27 @@ def upper_lid_cover(model: Model, side: str, positions: np.ndarray | None = None
     negative where sclera shows above the iris (AU5), the iris radius when it reaches the pupil's centre.
 
     ``positions``: a pose of ``model`` (its rest mesh by default), the eyeball where the pose has it."""
-    P = model.vertices if positions is None else positions
-    centre, radius = eyeball(model, side)
-    eye = model.part_vertices(f"eye_{side}")
-    centre = centre + P[eye].mean(axis=0) - model.vertices[eye].mean(axis=0)
-    seen = _visible(P, _skin_triangles(model), centre, radius)
-    r = radius * float(np.sin(np.radians(IRIS_DEGREES)))
+    r, seen = _iris_seen(model, side, positions)
     return r if seen is None else r - seen[0]
 
 
 def lower_lid_cover(model: Model, side: str, positions: np.ndarray | None = None) -> float:
     """How far (mm) the lower lid comes up over the iris, from the front (negative: sclera below it)."""
+    r, seen = _iris_seen(model, side, positions)
+    return r if seen is None else r + seen[1]
+
+
+def _iris_seen(model: Model, side: str,
+              positions: np.ndarray | None) -> tuple[float, tuple[float, float] | None]:
+    """The iris radius (mm) and what of it the lids leave visible from the front (``_visible``), in a pose
+    of ``model`` (its rest mesh by default), the eyeball where the pose has it."""
     P = model.vertices if positions is None else positions
     centre, radius = eyeball(model, side)
     eye = model.part_vertices(f"eye_{side}")
     centre = centre + P[eye].mean(axis=0) - model.vertices[eye].mean(axis=0)
     seen = _visible(P, _skin_triangles(model), centre, radius)
     r = radius * float(np.sin(np.radians(IRIS_DEGREES)))
-    return r if seen is None else r + seen[1]
+    return r, seen
 
 
 def lowered_lids(base: Model, positions: np.ndarray, eyes: Mapping[str, Similarity] | None = None,
