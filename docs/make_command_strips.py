@@ -4,7 +4,7 @@
     .venv/bin/python docs/make_command_strips.py                 # every command in library/
     .venv/bin/python docs/make_command_strips.py --only Blink Wink
 
-For each command of the shipped library (every ``library/*.lib``) a one-command
+For each command of the shipped library (every ``engine/library/*.lib``) a one-command
 script such as ``<commands><HeadNod at="0" count="2"/></commands>`` is
 translated and sampled on a timeline, and two pictures are written to
 ``docs/images/commands/``:

@@ -4,7 +4,7 @@
     .venv/bin/python docs/make_expression_gallery.py       (from the project root)
 
 Everything comes from the committed configuration: the model
-(``data/default-head/head.xml``) and the shipped library (``library/*.lib``).
+(``engine/data/default-head/head.xml``) and the shipped library (``engine/library/*.lib``).
 Writes to ``docs/images/expressions/``:
 
 ``action-units.png``

@@ -4,7 +4,7 @@
     .venv/bin/python docs/make_identity_gallery.py       (from the project root)
 
 Everything comes from the committed configuration: the default head, the
-identity targets (``data/identity``), the Finnish phone table (the ``a`` row)
+identity targets (``engine/data/identity``), the Finnish phone table (the ``a`` row)
 and the shipped library (Happy, Surprise at the middle of their apex).
 Writes ``docs/images/identity/gallery.png`` (front views) and prints the
 inner-lip gap of each identity at rest, at ``a`` and at the bilabial closure.

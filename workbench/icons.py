@@ -1,4 +1,4 @@
-"""The workbench's SVG icons (the project's ``icons/`` folder), by name.
+"""The workbench's SVG icons (``workbench/icon_files/``, installed with the package), by name.
 
 >>> icon("open")          # doctest: +SKIP
 <PySide6.QtGui.QIcon ...>
@@ -7,11 +7,12 @@
 from __future__ import annotations
 
 from functools import cache
+from importlib.resources import files
 from pathlib import Path
 
 from PySide6.QtGui import QIcon
 
-ICON_DIR = Path(__file__).resolve().parent.parent / "icons"
+ICON_DIR = Path(str(files("workbench") / "icon_files"))
 APP_ICON = "artificial-person"
 
 
@@ -21,6 +22,6 @@ def icon_path(name: str) -> Path:
 
 @cache
 def icon(name: str) -> QIcon:
-    """The icon ``icons/<name>.svg``; an empty icon if the file is missing (text still shows)."""
+    """The icon ``icon_files/<name>.svg``; an empty icon if the file is missing (text still shows)."""
     path = icon_path(name)
     return QIcon(str(path)) if path.exists() else QIcon()

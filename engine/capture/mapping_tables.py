@@ -59,7 +59,7 @@ ARKIT_TABLE: list[Entry] = [
 """ARKit / MediaPipe blendshapes (both name the same 52 shapes). Where a blendshape needs more than one
 parameter, the weights are a non-negative least-squares fit of those parameters' displacements to the
 default head's own ARKit reference pose of that shape (``engine.fitting.reference_poses``), rounded. So are
-those of the action units scaled to FACS intensity E (``E_GAIN`` in data/default-head/action_units.py): an AU
+those of the action units scaled to FACS intensity E (``E_GAIN`` in engine/data/default-head/action_units.py): an AU
 at 1 moves more than the artist's pose the ARKit shape is, so the shape at 1 is the AU below 1."""
 
 ARKIT_LOST = {

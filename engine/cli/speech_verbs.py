@@ -53,7 +53,7 @@ def add_verbs(verbs: Any) -> None:
     add_library_option(p)
     p.add_argument("--articulation", default=None, metavar="TABLE",
                    help="phone → target table (default: the shipped table of the voice's phone set, "
-                        "library/articulation/*.phones; phones a table lacks get targets from their features)")
+                        "engine/library/articulation/*.phones; phones a table lacks get targets from their features)")
     p.add_argument("--coarticulation", choices=("cohen-massaro", "none"), default="cohen-massaro",
                    help="Cohen–Massaro dominance functions (default) or the paper's plain target interpolation")
     p.add_argument("--prosody", action="store_true",

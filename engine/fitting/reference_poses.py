@@ -26,7 +26,7 @@ def reference_pose(name: str, path: str | Path | None = None) -> np.ndarray:
     """One reference pose of the default head as dense (N, 3) displacements, mm.
 
     ``name`` is ``"arkit/jawOpen"`` or, when unambiguous, just ``"jawOpen"``.
-    ``path`` defaults to ``data/default-head/reference-poses.h5``.
+    ``path`` defaults to ``engine/data/default-head/reference-poses.h5``.
     """
     import h5py
 

@@ -8,7 +8,7 @@ field of the rig moved with the face (:mod:`engine.identity.carry_over`), so
 the same parameter values make the same expression and the same speech on
 every identity. :func:`morph` blends two identities; the result is again an
 identity. The shape targets are MakeHuman's (CC0), cut to the head by
-``data/identity/derive_identity_targets.py``.
+``engine/data/identity/derive_identity_targets.py``.
 
 >>> from engine.identity import Identity, make_identity_head, morph
 >>> a, b = Identity({"sex": 0.0, "age": 30}), Identity({"sex": 0.8, "age": 70, "african": 1.0})

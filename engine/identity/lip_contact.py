@@ -1,6 +1,6 @@
 """The two lips of a rest mesh, whether a pose makes them pass through each other, and fields that respect it.
 
-The default head's derivation (``data/default-head``) fits its articulatory
+The default head's derivation (``engine/data/default-head``) fits its articulatory
 fields (§3.1.2) with these, and :mod:`engine.identity` fits them again on
 every new face, so both use this one implementation:
 

@@ -5,7 +5,7 @@ behind the lips. :func:`oral_cavity` finds it: cut along the edge loop that
 runs round the mouth through the upper lip's lowest midline vertex (landmark
 2.2), the skin falls apart into the face and the bag. The default head's
 derivation paints the bag dark by its depth behind that rim
-(``data/default-head/mouth_interior.py``); :mod:`engine.identity` moves it
+(``engine/data/default-head/mouth_interior.py``); :mod:`engine.identity` moves it
 with the face around it, so a new face's thinner cheeks do not let it show
 through.
 """

@@ -23,7 +23,7 @@ import numpy as np
 from engine.identity.carry_over import Similarity
 from engine.model import Model
 
-IRIS_DEGREES = 25.0     # the iris edge on the eyeball, from its centre (data/default-head/head_colors.py)
+IRIS_DEGREES = 25.0     # the iris edge on the eyeball, from its centre (engine/data/default-head/head_colors.py)
 REST_COVER = 0.35       # the rest upper lid covers at least this share of the iris radius (2.2 mm on the default head)
 STEP_MM = 0.02          # the vertical sampling of the measure
 TOLERANCE_MM = 0.01     # how close the lowered lid comes to its goal

@@ -1,7 +1,7 @@
-"""The identity space's shape targets file (``data/identity/identity-targets.h5``), read and summed.
+"""The identity space's shape targets file (``engine/data/identity/identity-targets.h5``), read and summed.
 
 The file holds MakeHuman's targets cut to the head (see
-``data/identity/derive_identity_targets.py``): per target its sparse
+``engine/data/identity/derive_identity_targets.py``): per target its sparse
 displacements in mm and the motion of the neck joint, which is taken back so
 the head stays on its origin. How identity values weight the targets is
 :mod:`engine.identity.weights`.

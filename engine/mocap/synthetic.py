@@ -7,7 +7,7 @@ default head itself:
 1. phones (from Festival, or given) → articulatory tracks of the head's own
    parameters (``jaw_open``, ``mouth_widen``, ``lip_protrude``,
    ``upper_lip_raise``, ``lower_lip_raise``) through the phone → target table
-   ``library/articulation/finnish.phones`` with Cohen–Massaro coarticulation
+   ``engine/library/articulation/finnish.phones`` with Cohen–Massaro coarticulation
    (:func:`engine.speech.coarticulation.articulation_tracks`), sampled at the
    capture rate (60 fps, as the paper's MacReflex);
 2. the head deformed by those values (exactly, through the model's own
@@ -135,7 +135,7 @@ def synthesize_recording(text: str | None = None, *, phones: Phones | None = Non
         The head (default: the shipped default head). Markers sit on its
         landmark vertices.
     table : ArticulationTable, optional
-        Phone → target table (default ``library/articulation/finnish.phones``).
+        Phone → target table (default ``engine/library/articulation/finnish.phones``).
     markers : sequence of ids
         Virtual markers, in this order (default :data:`DEFAULT_MARKERS`):
         the model's landmarks, or the reference points :func:`marker_vertices` places.

@@ -7,7 +7,7 @@ commands on it. The folder holds::
 
     README.txt                 what is here and how to use it
     model/<stem>.xml, .h5      the model, named after the file it was opened from
-    library/*.lib              shipped library files with a command that fits the model
+    engine/library/*.lib              shipped library files with a command that fits the model
     library-user-1/*.lib, …    the same from each user library folder, in search order
 
 A library file is exported when at least one command it defines is the one

@@ -11,7 +11,7 @@ left is what lies *between* the lips in the photograph:
   closed lips of the neutral face are lip-coloured;
 * :func:`mouth_bag`: the skin inside the mouth (palate, cheeks' lining)
   keeps the head's own colours, painted by depth behind the lips
-  (``data/default-head/mouth_interior.py``), instead of the photograph's teeth;
+  (``engine/data/default-head/mouth_interior.py``), instead of the photograph's teeth;
 * :func:`even_shadows`: the photograph's light is not the renderer's. Under
   the nose and along the creases from the nose to the mouth corners a
   portrait's key light leaves shadows (deepened by a smile), which the

@@ -1,4 +1,4 @@
-"""The phone → articulatory-target table (``library/articulation/*.phones``).
+"""The phone → articulatory-target table (``engine/library/articulation/*.phones``).
 
 One row per phone (or several phones sharing a row), one column per
 articulatory parameter::
@@ -174,7 +174,7 @@ def load_articulation(path: str | Path | None = None) -> ArticulationTable:
 
 
 def shipped_tables() -> dict[str, Path]:
-    """The shipped tables (``library/articulation/*.phones``) by the phone set they declare."""
+    """The shipped tables (``engine/library/articulation/*.phones``) by the phone set they declare."""
     tables: dict[str, Path] = {}
     for path in sorted(TABLE_DIR.glob("*.phones")):
         for line in path.read_text(encoding="utf-8").splitlines():

@@ -17,7 +17,7 @@ Every Festival phone set describes each phone by the same eight features
 =========  ==================================================================
 
 (``0`` is "does not apply".) :func:`derived_cells` turns them into a row of
-an articulation table (``library/articulation/*.phones`` syntax) for the
+an articulation table (``engine/library/articulation/*.phones`` syntax) for the
 default head's six articulatory parameters. The values are the Finnish hand-made
 table's, generalised: the jaw opens by vowel height, the lips spread for
 unrounded front vowels and round for rounded ones, bilabial stops and nasals

@@ -18,9 +18,9 @@ from engine.model import Model
 
 @pytest.fixture(scope="session")
 def head() -> Model:
-    """The shipped default head (``data/default-head/head.xml``), read-only."""
+    """The shipped default head (``engine/data/default-head/head.xml``), read-only."""
     if not engine.default_model_path().exists():
-        pytest.skip("the default head (data/default-head/head.xml) is not built yet")
+        pytest.skip("the default head (engine/data/default-head/head.xml) is not built yet")
     return engine.load_model()
 
 

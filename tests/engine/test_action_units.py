@@ -1,6 +1,6 @@
 """The FACS action units of Table 1 on the default head (§3.2).
 
-``data/default-head/derive_default_head.py`` fits one leaf per row and side
+``engine/data/default-head/derive_default_head.py`` fits one leaf per row and side
 of Table 1 to the artist's reference poses (``action_units.py`` is the
 recipe). These tests check the parameter set against the table, what each
 AU does to the MPEG-4 landmarks, that left AUs move only the left side, that
@@ -18,7 +18,7 @@ import pytest
 from engine.fitting import reference_pose
 from tests.engine.face_geometry import Lips, assert_lips_apart, eyeball_entry_mm
 
-HEAD_DIR = Path(__file__).resolve().parents[2] / "data" / "default-head"
+HEAD_DIR = Path(__file__).resolve().parents[2] / "engine" / "data" / "default-head"
 
 # Table 1: the AU row, its number of parameters, and the parameters that model it on the default head.
 TABLE_1 = [

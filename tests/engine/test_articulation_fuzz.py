@@ -1,4 +1,4 @@
-"""The articulation table parser (``library/articulation/*.phones``) against any input (issue 16 §4).
+"""The articulation table parser (``engine/library/articulation/*.phones``) against any input (issue 16 §4).
 
 Only :class:`engine.errors.LibraryError`, naming the file, may come out of it;
 no input makes it backtrack for long (a 100,000-digit cell once took minutes).
@@ -19,7 +19,7 @@ from engine.errors import LibraryError
 from engine.speech.articulation import load_articulation, parse_articulation
 
 EXAMPLES = int(os.environ.get("AP_FUZZ_EXAMPLES", "300"))
-SHIPPED = [Path(__file__).parents[2] / "library" / "articulation" / name for name in ("finnish.phones",
+SHIPPED = [Path(__file__).parents[2] / "engine" / "library" / "articulation" / name for name in ("finnish.phones",
                                                                                         "english.phones")]
 ALPHABET = st.sampled_from([*"$=#!/-,.:+eE0123456789 \t\napbx", "jaw_open", "parameters", "weak", "nan", "inf",
                             "1e999", "\u00e4", "\x00"])

@@ -2,7 +2,7 @@
 
 ``mouth_widen``, ``lip_protrude``, ``upper_lip_raise`` and ``lower_lip_raise``
 (next to ``jaw_open``) are displacement fields fitted to the artist's poses in
-``reference-poses.h5`` by ``data/default-head/derive_default_head.py``. These
+``reference-poses.h5`` by ``engine/data/default-head/derive_default_head.py``. These
 tests measure them through the MPEG-4 landmarks (2.2/2.3 inner lip midpoints,
 8.1/8.2 outer lip midpoints, 8.3/8.4 lip corners), and check in sagittal
 sections across the mouth that the lips touch without passing through each
@@ -26,7 +26,7 @@ from engine.paths import reference_poses_path
 from tests.engine.face_geometry import Lips, assert_lips_apart
 
 ARTICULATION = ["mouth_widen", "lip_protrude", "upper_lip_raise", "lower_lip_raise"]
-HEAD_DIR = Path(__file__).resolve().parents[2] / "data" / "default-head"
+HEAD_DIR = Path(__file__).resolve().parents[2] / "engine" / "data" / "default-head"
 
 
 

@@ -3,7 +3,7 @@
 Every error path must end with status 2 and exactly one ``error:`` line on
 stderr, never a traceback. Most tests use a small
 synthetic head saved into a temporary folder; tests of the shipped default
-head skip until ``data/default-head/head.xml`` exists.
+head skip until ``engine/data/default-head/head.xml`` exists.
 """
 
 from __future__ import annotations
@@ -98,7 +98,7 @@ def model_path(tmp_path_factory) -> Path:
 def default_head() -> Path:
     path = default_model_path()
     if not path.exists():
-        pytest.skip("the default head (data/default-head/head.xml) is not built yet")
+        pytest.skip("the default head (engine/data/default-head/head.xml) is not built yet")
     return path
 
 

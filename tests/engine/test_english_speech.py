@@ -28,7 +28,7 @@ def festival():
 
 RADIO_PHONES = Path("/usr/share/festival/radio_phones.scm")
 FINNISH_PHONES = Path("/usr/share/festival/voices/finnish/suopuhe.common/finnish_phones.scm")
-ENGLISH = Path(__file__).parents[2] / "library" / "articulation" / "english.phones"
+ENGLISH = Path(__file__).parents[2] / "engine" / "library" / "articulation" / "english.phones"
 
 
 def phone_set(path: Path) -> dict[str, PhoneFeatures]:

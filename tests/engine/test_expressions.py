@@ -1,7 +1,7 @@
 """The expression commands of the shipped library on the default head (§3.2).
 
 Neutral and the six basic emotions (plus contempt and a happy-surprise blend)
-are ``library/*.lib`` files built from the action units of Table 1, played by
+are ``engine/library/*.lib`` files built from the action units of Table 1, played by
 ``attack-hold-release``. These tests translate each like any script, sample it
 on a timeline, deform the head, and check the landmarks at the apex; and the
 timing, intensity, one-sided variants and additive blends.

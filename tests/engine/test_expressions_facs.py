@@ -176,7 +176,7 @@ def test_au20_stretches_the_lips_sideways(head, rest):
 # -- the appearance masks ------------------------------------------------------------------------
 
 def test_the_facs_appearance_file_holds_each_aus_furrows():
-    """data/default-head/facs-appearance.h5: per AU parameter, where its furrows and bulges lie (for
+    """engine/data/default-head/facs-appearance.h5: per AU parameter, where its furrows and bulges lie (for
     wrinkle maps); AU4's deepest furrow lies between the brows, AU12's beside the mouth."""
     import h5py
 

@@ -21,7 +21,6 @@ from engine import InfluenceRegion, Model, Parameter, ParameterTree, UserError
 from engine.deform.transforms import apply, rotation_about_axis
 from engine.errors import ParameterError
 from engine.fitting import FittingError, fit_parameter, fit_pose, mesh_edges, reference_pose, reference_pose_names
-from engine.paths import PROJECT_ROOT
 
 AXIS = np.array([0.96, 0.1, -0.26]) / np.linalg.norm([0.96, 0.1, -0.26])
 PIVOT = np.array([0.0, 70.0, 0.0])
@@ -347,7 +346,7 @@ def test_module_docstring_example():
 
 def test_docs_example():
     """The ``>>>`` examples of docs/fitting.md, read as one doctest (code fences end an example's output)."""
-    path = Path(PROJECT_ROOT) / "docs" / "fitting.md"
+    path = Path(__file__).resolve().parents[2] / "docs" / "fitting.md"
     text = "\n".join("" if line.startswith("```") else line for line in path.read_text().splitlines())
     test = doctest.DocTestParser().get_doctest(text, {}, "fitting.md", str(path), 0)
     runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)

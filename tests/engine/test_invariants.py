@@ -2,7 +2,7 @@
 
 Every test names the invariant it checks. The synthetic rigs come from
 ``synthetic.py``; the last section repeats invariants 1, 2, 3 and 5 on the
-shipped default head when ``data/default-head/head.xml`` exists. Positions
+shipped default head when ``engine/data/default-head/head.xml`` exists. Positions
 are in mm; "exactly" means ``np.array_equal``, otherwise the tolerance is
 1e-9 mm on coordinates of about ±100 mm.
 
@@ -538,7 +538,7 @@ def test_deformer_cache_invalidates_after_changed():
 
 
 # ---------------------------------------------------------------------------
-# The shipped default head (skipped until data/default-head/head.xml exists)
+# The shipped default head (skipped until engine/data/default-head/head.xml exists)
 # ---------------------------------------------------------------------------
 
 @pytest.fixture

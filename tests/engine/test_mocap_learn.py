@@ -44,7 +44,7 @@ SENTENCES = ["Papu ja kala.", "Hyvää päivää, mitä kuuluu?", "Öljyä ja sy
              "Iita ja Ukko istuvat tuvassa.", "Kuusi pientä poikaa.", "Aamu alkaa aina kahvilla.",
              "Minä tulin tänne tänään.", "Pekka toi tupaan puuta.", "Sisko ui aamulla.",
              "Tapani pitää tuutista.", "Kaikki kalat uivat."]
-#: (phone, parameter) → the known cell; the shipped one is in library/articulation/finnish.phones.
+#: (phone, parameter) → the known cell; the shipped one is in engine/library/articulation/finnish.phones.
 CHANGED = {("a", "jaw_open"): Target(0.55, 1.5, 0.05, 0.02),
            ("i", "mouth_widen"): Target(0.7, 2.0, 0.06, 0.06),
            ("u", "lip_protrude"): Target(0.8, 0.5, 0.015, 0.05),

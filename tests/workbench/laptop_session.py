@@ -201,7 +201,7 @@ def preview_head_nod(window: MainWindow, folder: Path, done: dict) -> None:
     choose_layout(window, "library")
     open_tool(window, "library.editor", window.library_editor_dock)     # Ctrl+L, unless on show already
     editor = window.library_editor
-    check(editor.open_file(ROOT / "library" / "HeadNod.lib"), "HeadNod.lib did not open")   # Library ▸ Open…
+    check(editor.open_file(ROOT / "engine" / "library" / "HeadNod.lib"), "HeadNod.lib did not open")   # Library ▸ Open…
     wait(0.6)
     on_show(window, editor.text, "the library editor's text")
     check(editor.text.width() >= 400, f"the library text pane is {editor.text.width()} px wide")

@@ -113,7 +113,7 @@ def shoot_every_layout(folder: Path, width: int, height: int) -> None:
 
     layouts.switch("library")
     gallery.thumbnails.render_all()
-    window.library_editor.open_file(ROOT / "library" / "HeadNod.lib")
+    window.library_editor.open_file(ROOT / "engine" / "library" / "HeadNod.lib")
     wait(app, 0.6)
     window.library_editor.preview()
     window.player.pause()

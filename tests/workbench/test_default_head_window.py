@@ -1,4 +1,4 @@
-"""The workbench on the shipped default head (skipped until data/default-head/head.xml exists)."""
+"""The workbench on the shipped default head (skipped until engine/data/default-head/head.xml exists)."""
 
 from __future__ import annotations
 

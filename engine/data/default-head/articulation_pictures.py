@@ -3,7 +3,7 @@
 
 Run from the project root::
 
-    .venv/bin/python data/default-head/articulation_pictures.py
+    .venv/bin/python engine/data/default-head/articulation_pictures.py
 
 Writes into ``docs/images/``:
 
@@ -24,7 +24,7 @@ import numpy as np
 from PIL import Image, ImageDraw
 
 HERE = Path(__file__).resolve().parent
-ROOT = HERE.parent.parent
+ROOT = HERE.parents[2]      # the checkout: engine/data/default-head → the project
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(HERE))
 

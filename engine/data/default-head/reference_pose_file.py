@@ -78,7 +78,7 @@ def write_facs_appearance(path: Path, appearance: dict) -> None:
         f.attrs["format"] = "artificial-person-poses"
         f.attrs["version"] = 1
         f.attrs["units"] = "mm"
-        f.attrs["source"] = "data/default-head/facs_creases.py (derive_default_head.py)"
+        f.attrs["source"] = "engine/data/default-head/facs_creases.py (derive_default_head.py)"
         facs = f.create_group("facs_appearance", track_order=True)
         facs.attrs["description"] = (
             "the furrows, wrinkles and bulges each FACS action unit parameter of head.xml carries at value 1 "

