@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
+import importlib.util
 import os
 import threading
 from collections.abc import Iterator
@@ -50,6 +51,9 @@ FACE_SCORE = 0.3
 detector fires on flags and folds of cloth in real photographs, checked on scikit-image's
 astronaut)."""
 CNN_CONFIDENCE = 0.3
+#: dlib's trained models, as the face_recognition_models package ships them in its models/ folder.
+DLIB_MODEL_FILES = ("mmod_human_face_detector.dat", "shape_predictor_68_face_landmarks.dat",
+                    "dlib_face_recognition_resnet_model_v1.dat")
 """The same for the CNN detector's confidence."""
 SAME_PERSON = 0.6
 """dlib's convention: two face descriptors less than this apart are the same person."""
@@ -82,22 +86,35 @@ class ModelFacts:
     licence: str
 
 
+def _dlib_models_folder() -> Path:
+    """The folder of dlib's trained models in the ``face_recognition_models`` package, found without
+    importing it: its ``__init__`` imports ``pkg_resources``, which setuptools 81 and later no longer have."""
+    spec = importlib.util.find_spec("face_recognition_models")
+    if spec is None or spec.origin is None:
+        raise ObserversMissing(f"{EXTRA_HINT} (face_recognition_models is missing)")
+    folder = Path(spec.origin).parent / "models"
+    for name in DLIB_MODEL_FILES:
+        if not (folder / name).is_file():
+            raise ObserversMissing(f"{EXTRA_HINT} ({folder / name} is missing)")
+    return folder
+
+
 class Observers:
     """The loaded models. Use :func:`observers` (one per process) rather than building one."""
 
     def __init__(self) -> None:
         try:
             import dlib
-            import face_recognition_models as files
             from ai_edge_litert.interpreter import Interpreter, OpResolverType
         except ImportError as exc:
             raise ObserversMissing(f"{EXTRA_HINT} ({exc.name or exc} is missing)") from None
+        models = _dlib_models_folder()
         self._dlib = dlib
         self._hog = dlib.get_frontal_face_detector()
         self._cnn: Any = None
-        self._cnn_file = files.cnn_face_detector_model_location()
-        self._points = dlib.shape_predictor(files.pose_predictor_model_location())
-        self._describer = dlib.face_recognition_model_v1(files.face_recognition_model_location())
+        self._cnn_file = str(models / "mmod_human_face_detector.dat")
+        self._points = dlib.shape_predictor(str(models / "shape_predictor_68_face_landmarks.dat"))
+        self._describer = dlib.face_recognition_model_v1(str(models / "dlib_face_recognition_resnet_model_v1.dat"))
         if _sha256(EMOTION_MODEL) != EMOTION_MODEL_SHA256:
             raise ObserversMissing(f"the emotion model {EMOTION_MODEL} is not the one shipped (its SHA-256 differs); "
                                    "reinstall the toolkit")
