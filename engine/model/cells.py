@@ -28,15 +28,35 @@ def cell_sizes(cells: npt.ArrayLike) -> np.ndarray:
     k = int(cells[0])
     if k >= 3 and len(cells) % (k + 1) == 0 and np.all(cells[::k + 1] == k):   # one size throughout
         return np.full(len(cells) // (k + 1), k, dtype=np.int64)
-    sizes: list[int] = []
-    i = 0
-    while i < len(cells):
-        k = int(cells[i])
-        if k < 3 or i + k >= len(cells):
-            raise UserError(f"face {len(sizes)}: malformed polygon list (a polygon needs at least 3 vertices)")
-        sizes.append(k)
-        i += k + 1
-    return np.array(sizes, dtype=np.int64)
+    starts = _walk_starts(cells)
+    sizes = cells[starts]
+    bad = (sizes < 3) | (starts + sizes >= len(cells))
+    if bad.any():
+        raise UserError(f"face {int(np.argmax(bad))}: malformed polygon list (a polygon needs at least 3 vertices)")
+    return sizes
+
+
+def _walk_starts(cells: np.ndarray) -> np.ndarray:
+    """Where the walk ``i → i + cells[i] + 1`` from 0 steps, up to the first count that cannot be one.
+
+    The walk is found by pointer doubling, a few whole-array steps instead of one Python step per
+    polygon: after round r, ``on`` holds the walk's first 2^r positions and ``jump`` leaps 2^r steps.
+    Counts below 1 step as 1 and counts past the end stop at the end, so a malformed list still gives
+    the walk up to (and including) its first bad count, which :func:`cell_sizes` then reports.
+    """
+    n = len(cells)
+    jump = np.empty(n + 1, dtype=np.int64)
+    jump[:n] = np.minimum(np.arange(n) + np.clip(cells, 1, n) + 1, n)
+    jump[n] = n
+    on = np.zeros(n + 1, dtype=bool)
+    on[0] = True
+    while True:
+        reached = jump[on]
+        if on[reached].all():
+            break
+        on[reached] = True
+        jump = jump[jump]
+    return np.flatnonzero(on[:n])
 
 
 def cell_starts(sizes: np.ndarray) -> np.ndarray:
