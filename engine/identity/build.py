@@ -8,6 +8,7 @@
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Callable
 from functools import cache
 
@@ -98,7 +99,15 @@ AS_MADE_MM = 2.0          # skin within this of MakeHuman's own place is taken b
 def _skin_as_made(model: Model, made_rest: np.ndarray, kept: np.ndarray) -> Model:
     """``model`` with its skin where MakeHuman made it (``made_rest`` for the ``kept`` vertices), where
     it is within :data:`AS_MADE_MM` of it: the default head's lowered rest lids (rest_lids.py) taken
-    back, so that each eyeball is fitted to the lids the identity's targets were made on."""
+    back, so that each eyeball is fitted to the lids the identity's targets were made on.
+
+    The result does not depend on the identity, only on the model and the targets, so it is kept for
+    the next identity of the same model (a photo fit makes some sixty); the caller must not change it.
+    """
+    key = hashlib.blake2b(model.vertices.tobytes() + made_rest.tobytes() + kept.tobytes()
+                          + model.vertex_part.tobytes() + "\0".join(model.parts).encode(), digest_size=16).digest()
+    if key in _AS_MADE:
+        return _AS_MADE[key]
     idx = np.flatnonzero(kept)
     is_skin = model.vertex_part[idx] == model.parts.index("skin") if "skin" in model.parts else np.ones(len(idx), bool)
     off = np.linalg.norm(model.vertices[idx] - made_rest, axis=1)
@@ -108,7 +117,14 @@ def _skin_as_made(model: Model, made_rest: np.ndarray, kept: np.ndarray) -> Mode
     out = model.copy()
     out.vertices[idx[back]] = made_rest[back]
     out.changed()
+    while len(_AS_MADE) >= AS_MADE_KEPT:
+        del _AS_MADE[next(iter(_AS_MADE))]
+    _AS_MADE[key] = out
     return out
+
+
+AS_MADE_KEPT = 4          # models whose as-made skin is kept (the default head and a few others)
+_AS_MADE: dict[bytes, Model] = {}
 
 
 def make_identity_head(identity: Identity, base: Model | None = None,
