@@ -29,6 +29,7 @@ from engine.identity.rest_fit import (
     refit_eyelid_angles,
 )
 from engine.identity.rest_lids import lowered_lids
+from engine.identity.skin import apply_skin
 from engine.identity.targets import IdentityTargets, shipped_targets
 from engine.identity.weights import identity_displacement
 from engine.model import Model
@@ -150,6 +151,7 @@ def make_identity_head(identity: Identity, base: Model | None = None,
             checkpoint()
             stage()
     head.identity = identity
+    apply_skin(head, identity)          # the person's own skin (engine.identity.skin; docs/skin.md)
     head.name = identity_name(identity)
     head.description = (f"{base.description} Identity: "
                         + (", ".join(f"{k}={v:g}" for k, v in identity.values.items()) or "the default head") + ".")
