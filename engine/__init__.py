@@ -12,6 +12,8 @@ commands (§2.3) and speech (§2.1).
 >>> P = head.deform(jaw_open=0.6, head_turn=0.2)  # (N, 3) vertex positions
 """
 
+from importlib.metadata import PackageNotFoundError, version
+
 from engine.errors import ModelFileError, ParameterError, UserError
 from engine.formats.model_files import load_model, save_model
 from engine.model import InfluenceRegion, Model, Parameter, ParameterTree
@@ -21,4 +23,22 @@ __all__ = [
     "InfluenceRegion", "Model", "ModelFileError", "Parameter", "ParameterError", "ParameterTree",
     "UserError", "default_model_path", "load_model", "save_model",
 ]
-__version__ = "0.1.0"
+
+
+def _version() -> str:
+    """The installed distribution's version (``pyproject.toml``'s, through the package metadata). A checkout
+    run without installing (``PYTHONPATH=.``) reads its ``pyproject.toml`` (``0.1.0+source``); else ``0+unknown``."""
+    try:
+        return version("artificial-person")
+    except PackageNotFoundError:
+        import tomllib
+        from pathlib import Path
+
+        try:
+            project = tomllib.loads((Path(__file__).parent.parent / "pyproject.toml").read_text(encoding="utf-8"))
+            return f"{project['project']['version']}+source"
+        except (OSError, ValueError, KeyError):
+            return "0+unknown"
+
+
+__version__ = _version()

@@ -9,7 +9,9 @@ The verbs live in one module each (``model_verbs``, ``command_verbs``,
 ``speech_verbs``, ``export_verbs``, ``config_verbs``, ``mocap_verbs``), sharing only
 :mod:`engine.cli.common`. Other installed packages add verbs through the
 ``artificial_person.verbs`` entry point group: the workbench adds
-``workbench`` that way, so the engine never imports the GUI.
+``workbench`` that way, so the engine never imports the GUI. A verb whose optional
+part (an extra of the distribution, :mod:`engine.cli.extras`) is not installed ends
+with one line naming the ``pip install 'artificial-person[EXTRA]'`` to run, status 2.
 
 >>> from engine.cli import main
 >>> main(["info", "--json"])                                   # doctest: +SKIP
@@ -24,6 +26,7 @@ from importlib import import_module
 from importlib.metadata import entry_points
 
 from engine.cli.common import PROG, CliParser, say_error
+from engine.cli.extras import check_extras, extra_for_import_error
 from engine.errors import UserError
 
 #: The engine's own verb modules, in the order ``--help`` lists them; each has ``add_verbs(verbs)``.
@@ -42,9 +45,16 @@ def main(argv: list[str] | None = None) -> int:
     parser = build_parser()
     try:
         args = parser.parse_args(argv)
+        check_extras(args)                 # an optional part the verb needs and lacks: one line, before any work
         return int(args.run(args) or 0)
     except UserError as exc:
         say_error(str(exc))
+        return 2
+    except ImportError as exc:            # a module of an extra, imported deep in a verb (a bug elsewhere: raised)
+        line = extra_for_import_error(exc)
+        if line is None:
+            raise
+        say_error(line)
         return 2
     except SystemExit as exc:  # --help and --version
         return exc.code if isinstance(exc.code, int) else 0

@@ -13,7 +13,6 @@ Writing (:mod:`engine.outputs.video_writer`) and inspecting
 
 from __future__ import annotations
 
-import shutil
 import subprocess
 from pathlib import Path
 
@@ -32,11 +31,13 @@ class VideoError(UserError):
 
 
 def find_tool(name: str) -> str:
-    """Full path of ``ffmpeg`` or ``ffprobe``, or :class:`FFmpegMissing` naming the Debian package."""
-    found = shutil.which(name)
+    """Full path of ``ffmpeg`` or ``ffprobe`` (``$AP_FFMPEG``/``$AP_FFPROBE``, else on ``PATH``:
+    :mod:`engine.programs`), or :class:`FFmpegMissing` saying how to install it."""
+    from engine.programs import find_program, missing_message
+
+    found = find_program(name)
     if found is None:
-        raise FFmpegMissing(f"{name} is not installed; it comes with the Debian package {FFMPEG_PACKAGE}: "
-                            f"sudo apt-get install {FFMPEG_PACKAGE}")
+        raise FFmpegMissing(missing_message(name))
     return found
 
 

@@ -32,7 +32,6 @@ from __future__ import annotations
 import contextlib
 import os
 import re
-import shutil
 import signal
 import subprocess
 import tempfile
@@ -44,6 +43,7 @@ from pathlib import Path
 import numpy as np
 
 from engine.processes import with_parent_death_signal
+from engine.programs import locate, missing_message, program_name
 from engine.speech.festival_script import (
     VOICES_SCRIPT,
     WAVE_FILE_PATTERN,
@@ -167,7 +167,8 @@ def prepare_text(text: str, source: str = "<text>") -> str:
 class FestivalSynthesizer:
     """Text → :class:`Utterance` with the Festival speech synthesizer.
 
-    ``festival`` is the program (name on ``PATH`` or a path); ``timeout`` (s)
+    ``festival`` is the program (name on ``PATH`` or a path; default ``$AP_FESTIVAL``, else ``festival``
+    on ``PATH``: :mod:`engine.programs`); ``timeout`` (s)
     bounds every Festival run — a run that takes longer is killed and
     reported, never waited for. ``cancelled``, when given, is asked every
     0.1 s while Festival runs; once it answers ``True`` Festival is killed and
@@ -178,9 +179,9 @@ class FestivalSynthesizer:
 
     default_voice = DEFAULT_VOICE
 
-    def __init__(self, festival: str = "festival", timeout: float = 600,
+    def __init__(self, festival: str | None = None, timeout: float = 600,
                  cancelled: Callable[[], bool] | None = None):
-        self.festival = str(festival)
+        self.festival = str(festival) if festival is not None else program_name("festival")
         self.timeout = float(timeout)
         self.cancelled = cancelled
         self._voices: list[str] | None = None
@@ -219,20 +220,10 @@ class FestivalSynthesizer:
     # -- running Festival ------------------------------------------------------
 
     def executable(self) -> str:
-        """The Festival program to run; :class:`SynthesisError` naming the package if there is none."""
-        if os.sep in self.festival or (os.altsep and os.altsep in self.festival):
-            if os.path.isfile(self.festival) and os.access(self.festival, os.X_OK):
-                return self.festival
-            raise SynthesisError(
-                f"Festival is not installed at {self.festival} (no such program); "
-                f"install the Debian package {FESTIVAL_PACKAGE}: "
-                f"sudo apt-get install {FESTIVAL_PACKAGE} {VOICE_PACKAGES[DEFAULT_VOICE]}")
-        found = shutil.which(self.festival)
+        """The Festival program to run; :class:`SynthesisError` saying how to install it if there is none."""
+        found = locate(self.festival)
         if found is None:
-            raise SynthesisError(
-                f"Festival is not installed (no program {self.festival!r} on PATH); "
-                f"install the Debian package {FESTIVAL_PACKAGE}: "
-                f"sudo apt-get install {FESTIVAL_PACKAGE} {VOICE_PACKAGES[DEFAULT_VOICE]}")
+            raise SynthesisError(missing_message("festival", self.festival))
         return found
 
     def _run(self, script: str, want_waves: bool = False) -> tuple[str, str, dict[str, bytes]]:

@@ -261,8 +261,13 @@ def _git_commit() -> str | None:
 
 
 def _festival_version() -> str | None:
+    from engine.programs import find_program
+
+    festival = find_program("festival")
+    if festival is None:
+        return None
     try:
-        done = subprocess.run(with_parent_death_signal(["festival", "--version"]), capture_output=True, text=True,
+        done = subprocess.run(with_parent_death_signal([festival, "--version"]), capture_output=True, text=True,
                               timeout=30, check=False)
     except (OSError, subprocess.TimeoutExpired):
         return None
