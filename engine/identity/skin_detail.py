@@ -75,7 +75,9 @@ def age_lines(P: np.ndarray, lm: Mapping[str, np.ndarray], age: float) -> np.nda
     start = brow_y + 9.0
     d = np.mod(wavy - start + 4.0, 8.0) - 4.0
     band = _fade((wavy - start + 3) / 4) * _fade((start + 34 - wavy) / 8) * _fade((48 - np.abs(x)) / 12)
-    lines += (0.05 * adult + 0.75 * old) * _groove(d, 0.7) * band * front
+    index = np.floor((wavy - start + 4.0) / 8.0)
+    broken = np.clip(0.75 + 0.6 * np.sin(x / 9.0 + 2.3 * index) * np.sin(x / 23.0 + 1.1 * index), 0, 1)
+    lines += (0.05 * adult + 0.75 * old) * _groove(d, 0.7) * band * broken * front
     for corner_key, side in (("3.7", 1.0), ("3.12", -1.0)):
         corner = lm[corner_key]
         dx, dy = side * (x - corner[0]), y - corner[1]

@@ -18,7 +18,9 @@ based shading writes it:
 * the occlusion takes ``occlusion`` of the ambient and ``direct_occlusion`` of the direct diffuse light
   away (not of the highlights, which are the mirror image of the light: a catchlight in an eye next to
   the lid stays);
-* times the exposure, clipped, back to gamma 2.2.
+* times the exposure, clipped, back to gamma 2.2;
+* on the skin, with ``LOOK_VIEW_POSITION`` defined (VTK: :func:`shading_source`), the normal is first
+  bumped by the albedo's fine relief (``lookDetail``: the look's ``skin_detail``; 0 elsewhere).
 
 :func:`look_uniforms` and :func:`material_uniforms` give the values, by uniform name, for a look and a
 part: the renderer hands them to VTK, the site writes them into the animation JSON for the player.
@@ -61,6 +63,7 @@ uniform float lookRoughness;
 uniform float lookReflectance;
 uniform float lookSpecular;
 uniform vec3 lookWrap;
+uniform float lookDetail;
 """
 
 SHADING = """
@@ -97,7 +100,29 @@ void lookLight(vec3 N, vec3 V, vec3 L, vec3 radiance, vec3 albedo, float alpha, 
   highlightSum += radiance * highlight;
 }
 
+#ifdef LOOK_VIEW_POSITION
+// the skin's fine detail as relief: the albedo's log luminance (the skin image darkens its pores and lines,
+// engine/identity/skin_detail.py) taken as a height, LOOK_DETAIL_MM per unit, times lookDetail, bumping the
+// normal by the surface gradient of its screen-space derivatives (Mikkelsen 2010, "Bump mapping
+// unparametrized surfaces on the GPU"); the position is the fragment's in the camera's frame, mm
+vec3 lookDetailNormal(vec3 albedo, vec3 N) {
+  vec3 p = LOOK_VIEW_POSITION;
+  float h = LOOK_DETAIL_MM * lookDetail * log(max(dot(albedo, vec3(0.2126, 0.7152, 0.0722)), 1e-4));
+  vec3 sx = dFdx(p);
+  vec3 sy = dFdy(p);
+  vec3 r1 = cross(sy, N);
+  vec3 r2 = cross(N, sx);
+  float det = dot(sx, r1);
+  vec3 gradient = sign(det) * (dFdx(h) * r1 + dFdy(h) * r2);
+  vec3 bumped = abs(det) * N - gradient;
+  return lookDetail > 0.0 && dot(bumped, bumped) > 1e-20 ? normalize(bumped) : N;
+}
+#endif
+
 vec3 lookShade(vec3 albedo, vec3 N, vec3 V, float occlusion) {
+#ifdef LOOK_VIEW_POSITION
+  N = lookDetailNormal(albedo, N);
+#endif
   float alpha = max(lookRoughness * lookRoughness, 0.002);
   vec3 diffuse = vec3(0.0);
   vec3 highlight = vec3(0.0);
@@ -122,9 +147,19 @@ vec3 lookShade(vec3 albedo, vec3 N, vec3 V, float occlusion) {
 """
 
 
+#: The skin's relief: millimetres of height per unit of the albedo's log luminance (a line
+#: the skin image darkens by a quarter is 0.2 mm deep).
+DETAIL_MM = 0.7
+#: Where VTK's fragment shader keeps the fragment's position in the camera's frame (declared before the
+#: look's shading is put in); the web player does not define ``LOOK_VIEW_POSITION``, so draws no relief.
+VTK_VIEW_POSITION = "vertexVCVSOutput.xyz"
+
+
 def shading_source(look: Look) -> str:
-    """:data:`SHADING` for ``look``: compiled for as many lights as it has (``LOOK_LIGHTS``)."""
-    return f"#define LOOK_LIGHTS {len(look.lights)}\n{SHADING}"
+    """:data:`SHADING` for ``look`` in VTK: compiled for as many lights as it has (``LOOK_LIGHTS``), with
+    the skin's relief (``LOOK_VIEW_POSITION``: VTK's fragment position)."""
+    return (f"#define LOOK_LIGHTS {len(look.lights)}\n#define LOOK_VIEW_POSITION {VTK_VIEW_POSITION}\n"
+            f"#define LOOK_DETAIL_MM {DETAIL_MM:.6f}\n{SHADING}")
 
 
 def look_uniforms(look: Look) -> dict[str, float | list[float]]:
@@ -145,6 +180,9 @@ def look_uniforms(look: Look) -> dict[str, float | list[float]]:
 
 def material_uniforms(look: Look, part: str) -> dict[str, float | list[float]]:
     """The uniforms of one part's material in ``look``."""
+    from engine.outputs.looks import material_class
+
     material = look.material(part)
+    detail = look.skin_detail if material_class(part) == "skin" and look.shading == "pbr" else 0.0
     return {"lookRoughness": material.roughness, "lookReflectance": round(material.reflectance(), 9),
-            "lookSpecular": material.specular, "lookWrap": list(material.wrap)}
+            "lookSpecular": material.specular, "lookWrap": list(material.wrap), "lookDetail": detail}

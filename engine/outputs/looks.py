@@ -10,7 +10,8 @@ presets ship:
     fill from the right at a sixth of its strength, a rim light from behind
     — over a dim sky-and-ground ambient, physically based shading (GGX
     highlights, Fresnel, skin that lets light wrap a little past the edge of
-    the shadow, redder there), baked ambient occlusion in the creases, FXAA.
+    the shadow, redder there), baked ambient occlusion in the creases, the skin image's fine detail
+    (pores, lines) as relief (``skin_detail``), FXAA.
 ``flat``
     even light for psychophysics: a bright ambient and two weak lights from
     above, either side, so neither half of the face is darker, faint
@@ -119,6 +120,9 @@ class Look:
     OpenGL), ``msaa`` (8× multisampling) or ``none``."""
     background: tuple[str, str] = ("#cfd1d4", "#eef0f2")
     """Bottom and top of the picture's vertical gradient (the same twice: one colour)."""
+    skin_detail: float = 1.0
+    """How strongly the skin image's fine detail (pores, lines: :mod:`engine.identity.skin_detail`) bumps the
+    skin's normal in the physically based shader (0: off, 1: as made, up to 4); the image's colours stay."""
     version: int = 1
 
     def material(self, part: str) -> Material:
@@ -136,7 +140,7 @@ class Look:
             "exposure": self.exposure,
             "materials": {name: {"roughness": m.roughness, "ior": m.ior, "specular": m.specular,
                                  "wrap": list(m.wrap)} for name, m in sorted(self.materials.items())},
-            "antialias": self.antialias, "background": list(self.background),
+            "antialias": self.antialias, "background": list(self.background), "skin_detail": self.skin_detail,
         }
 
 
@@ -194,7 +198,8 @@ LOOKS: dict[str, Look] = {
         "legacy", shading="legacy",
         lights=(Light((-1.0, 0.9, 1.2), intensity=0.78), Light((1.3, 0.1, 1.0), intensity=0.42),
                 Light((0.4, 1.2, -1.4), intensity=0.45)),
-        sky=(0.0, 0.0, 0.0), ground=(0.0, 0.0, 0.0), occlusion=0.0, direct_occlusion=0.0, antialias="msaa"),
+        sky=(0.0, 0.0, 0.0), ground=(0.0, 0.0, 0.0), occlusion=0.0, direct_occlusion=0.0, antialias="msaa",
+        skin_detail=0.0),
 }
 
 
@@ -240,7 +245,7 @@ def look_option(text: str) -> Look:
 
 
 _KEYS = {"preset", "name", "version", "shading", "lights", "sky", "ground", "occlusion", "direct_occlusion",
-         "occlusion_radius_mm", "exposure", "materials", "antialias", "background"}
+         "occlusion_radius_mm", "exposure", "materials", "antialias", "background", "skin_detail"}
 
 
 def _from_settings(table: dict[str, Any], where: str | None) -> Look:
@@ -266,6 +271,8 @@ def _from_settings(table: dict[str, Any], where: str | None) -> Look:
                                                  fail)
     if "exposure" in table:
         changes["exposure"] = _number(table["exposure"], "exposure", 0.05, 20.0, fail)
+    if "skin_detail" in table:
+        changes["skin_detail"] = _number(table["skin_detail"], "skin_detail", 0.0, 4.0, fail)
     if "version" in table:
         changes["version"] = int(_number(table["version"], "version", 1, 1_000_000, fail))
     for key in ("sky", "ground"):
