@@ -24,6 +24,12 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("--from", dest="source", metavar="A.xml", help="morph: the identity at T = 0 (a model file)")
     p.add_argument("--to", dest="target", metavar="B.xml", help="morph: the identity at T = 1 (a model file)")
     p.add_argument("--at", type=float, default=None, metavar="T", help="morph: where between A and B, 0 … 1")
+    p.add_argument("--hair", metavar="STYLE", help="scalp hair: none (bald), short, long or tied (docs/hair.md); "
+                                                  "without hair options the head stays as before: bald, brows painted")
+    p.add_argument("--hair-colour", "--hair-color", dest="hair_colour", metavar="COLOUR",
+                   help="black, dark-brown, brown, blond, red, grey or white (default: chosen from age and ancestry)")
+    p.add_argument("--beard", metavar="KIND", help="facial hair: none, stubble, moustache or beard")
+    p.add_argument("--brows", metavar="THICKNESS", help="brows as hair: none, thin, medium (default) or thick")
     p.add_argument("-o", "--output", metavar="PERSON.xml", help="the model file to write (.xml + .h5)")
     p.add_argument("--list", action="store_true", help="list the identity parameters with their ranges")
     p.add_argument("--json", action="store_true", help="with --list: as JSON objects")
@@ -68,7 +74,7 @@ def run_identity(args: argparse.Namespace) -> int:
     from engine.formats.model_files import save_model
     from engine.identity import make_identity_head
 
-    head = make_identity_head(identity)
+    head = make_identity_head(identity, hair=_hair(args))
     if identity.drawn is not None:
         head.name = f"random-person-{identity.drawn['seed']}"
     written = save_model(head, args.output)
@@ -77,8 +83,22 @@ def run_identity(args: argparse.Namespace) -> int:
                   f"sex={identity.value('sex'):g}, age={identity.value('age'):g}, {len(identity.values)} values")
     else:
         values = ", ".join(f"{k}={v:g}" for k, v in identity.values.items()) or "the default head"
-    print(f"{written}: {head.name} ({values}); rig carried over, {len(head.parameters)} parameters")
+    from engine.identity.hair_style import hair_of
+
+    hair = hair_of(head.identity)
+    worn = f"; {hair.describe()}" if hair is not None else ""
+    print(f"{written}: {head.name} ({values}); rig carried over, {len(head.parameters)} parameters{worn}")
     return 0
+
+
+def _hair(args: argparse.Namespace) -> Any:
+    """The hair ``--hair``, ``--hair-colour``, ``--beard`` and ``--brows`` ask for (None: none of them given)."""
+    given = [args.hair, args.hair_colour, args.beard, args.brows]
+    if all(v is None for v in given):
+        return None
+    from engine.identity.hair_style import HairChoice
+
+    return HairChoice.parse(style=args.hair, colour=args.hair_colour, beard=args.beard, brows=args.brows)
 
 
 def _random(args: argparse.Namespace) -> Any:

@@ -35,6 +35,7 @@ from lxml import etree
 
 from engine.errors import ModelFileError, ParameterError, UserError
 from engine.formats.atomic import atomic_files, finish_interrupted_writes
+from engine.formats.hair_element import read_hair, write_hair
 from engine.formats.hdf5_reading import HDF5Reader
 from engine.formats.hdf5_reading import text as hdf5_text
 from engine.formats.identity_drawn import read_drawn, write_drawn
@@ -196,7 +197,7 @@ def _read_identity(root: etree._Element, path: Path) -> IdentityRecord | None:
         if not math.isfinite(number):
             raise ModelFileError(f"identity value '{name}' must be a finite number", file=path, line=source_line(v))
         values[name] = number
-    return read_drawn(el, IdentityRecord(values, _required(el, "source", path)), path)
+    return read_hair(el, read_drawn(el, IdentityRecord(values, _required(el, "source", path)), path), path)
 
 
 def _child(el: etree._Element, tag: str, path: Path) -> etree._Element:
@@ -416,6 +417,7 @@ def model_to_xml(model: Model, arrays_name: str, generation: str | None = None) 
         for name, value in model.identity.values.items():
             etree.SubElement(ident, "value", name=_xml_text(name, "an identity parameter name"), value=repr(value))
         write_drawn(ident, model.identity)
+        write_hair(ident, model.identity)
     etree.indent(root, space="  ")
     return etree.tostring(root, xml_declaration=True, encoding="UTF-8", pretty_print=True)
 

@@ -18,6 +18,7 @@ from scipy.spatial import cKDTree
 from engine.identity.articulation_refit import refit_articulation
 from engine.identity.carry_over import Similarity, carry_rig_over, similarity
 from engine.identity.errors import IdentityError
+from engine.identity.hair_style import HairChoice
 from engine.identity.parameters import Identity
 from engine.identity.rest_fit import (
     keep_eyelid_clearance,
@@ -129,13 +130,14 @@ _AS_MADE: dict[bytes, Model] = {}
 
 
 def make_identity_head(identity: Identity, base: Model | None = None,
-                       between_stages: Callable[[], object] | None = None) -> Model:
+                       between_stages: Callable[[], object] | None = None, hair: HairChoice | None = None) -> Model:
     """The head of ``identity``: ``base`` (the default head by default) reshaped, its rig carried over.
 
     ``base`` must have the default head's vertices and no identity of its own
     (a default head whose rig was edited keeps its edits). The result carries
     ``identity`` and is named after it. ``between_stages()`` is called before each of the
     build's stages; an exception it raises ends the build (how a photo fit is stopped part-way).
+    ``hair`` (:mod:`engine.identity.hair`): brows, scalp and facial hair grown on the finished head.
     """
     checkpoint = between_stages if between_stages is not None else (lambda: None)
     base = base if base is not None else _default_head()
@@ -155,6 +157,10 @@ def make_identity_head(identity: Identity, base: Model | None = None,
     head.name = identity_name(identity)
     head.description = (f"{base.description} Identity: "
                         + (", ".join(f"{k}={v:g}" for k, v in identity.values.items()) or "the default head") + ".")
+    if hair is not None:
+        from engine.identity.hair import add_hair
+
+        head = add_hair(head, hair)
     return head
 
 
