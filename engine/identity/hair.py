@@ -98,14 +98,14 @@ def _scalp(kind: str, vertices: np.ndarray, regions: HairRegions, surface: SkinS
             out = np.stack([side * 0.9, np.full(len(points), -1.0), np.full(len(points), -0.35)], axis=1)
         return tangent(out, normals)
 
-    count = {"short": 2600, "long": 2200, "tied": 2000}[kind]
+    count = {"short": 2200, "long": 1800, "tied": 1700}[kind]
     roots = sample_roots(vertices, regions, regions.scalp, count, rng)
     anchors = surface.closest(roots)
     strength = np.einsum("mk,mk->m", anchors.bary, dense[anchors.corners])
     length = {"short": 15.0, "long": 34.0, "tied": 30.0}[kind] * rng.uniform(0.7, 1.2, count)
     height = 0.35 + (thickness - 0.25) * strength + rng.uniform(0.0, 0.6, count)
     strands = ribbons(surface, roots, field, length, rng.uniform(0.7, 1.2, count), height,
-                      5, rng.uniform(0.78, 1.18, count), lift_tip=0.3 if kind == "short" else 0.0,
+                      4, rng.uniform(0.78, 1.18, count), lift_tip=0.3 if kind == "short" else 0.0,
                       keep=inside if kind == "short" else None)
     pieces = [body, strands]
     skin = regions.skin
@@ -123,7 +123,7 @@ def _beard(kind: str, vertices: np.ndarray, regions: HairRegions, surface: SkinS
     strength = regions.moustache if kind == "moustache" else regions.beard
     thickness = 2.2 if kind == "moustache" else 5.0
     body = shell(vertices, regions, strength, thickness, surface, shade=0.6)
-    count = 700 if kind == "moustache" else 2600
+    count = 600 if kind == "moustache" else 1700
     roots = sample_roots(vertices, regions, strength, count, rng)
     dense = np.zeros(len(vertices))
     dense[regions.skin] = strength
@@ -166,7 +166,9 @@ def strand_colours(piece: HairPiece, colour: str, seed: int, skin_rgb: np.ndarra
     if colour in ("grey", "white"):
         dark = rng.random(strands) < (0.3 if colour == "grey" else 0.1)
         own[dark] = COLOURS["dark-brown"]
-    out = own[piece.strand] * np.abs(piece.shade)[:, None]
+    # light hair lets light through: its shadowed under-layer is less dark than dark hair's
+    depth = 0.5 if colour in ("grey", "white", "blond") else 1.0
+    out = own[piece.strand] * (1.0 - depth * (1.0 - np.abs(piece.shade)))[:, None]
     stubble = piece.shade < 0
     if stubble.any():
         out[stubble] = 0.55 * skin_rgb[stubble] + 0.45 * rgb * 0.8
