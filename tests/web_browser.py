@@ -1,7 +1,8 @@
 """A real headless Chromium for the web-export tests, driven over the DevTools protocol with ``websockets``.
 
 Everything stays on loopback: the site is served by Python's ``http.server`` on 127.0.0.1
-(port 0), Chromium listens for DevTools on 127.0.0.1 (port 0, read back from
+(port 0), Chromium (``AP_CHROMIUM``, else ``chromium`` on the PATH) listens for DevTools on
+127.0.0.1 (port 0, read back from
 ``DevToolsActivePort`` in its profile), and the flags below switch off its own traffic
 (updates, sync, safe browsing, …). Chromium is started in a session of its own with the
 parent-death signal, and :meth:`Browser.close` kills its whole process group whatever happened.
@@ -35,7 +36,7 @@ import numpy as np
 
 from engine.processes import with_parent_death_signal
 
-CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+CHROMIUM = os.environ.get("AP_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
 STARTUP_SECONDS = 60.0
 REPLY_SECONDS = 60.0
 FLAGS = [
@@ -148,6 +149,11 @@ class Browser:
         self.call("Page.navigate", {"url": url}, session)
         return page
 
+    def resize(self, page: Page, size: tuple[int, int]) -> None:
+        """Make ``page``'s window ``size`` (CSS pixels = device pixels), as a user resizing it would."""
+        self.call("Emulation.setDeviceMetricsOverride",
+                  {"width": size[0], "height": size[1], "deviceScaleFactor": 1, "mobile": False}, page.session)
+
     def close(self) -> None:
         """End Chromium (its whole process group) and remove its profile, whatever state it is in.
 
@@ -182,6 +188,9 @@ class Page:
     def __init__(self, browser: Browser, session: str) -> None:
         self.browser = browser
         self.session = session
+
+    def resize(self, size: tuple[int, int]) -> None:
+        self.browser.resize(self, size)
 
     def evaluate(self, expression: str, await_promise: bool = True) -> Any:
         result = self.browser.call("Runtime.evaluate", {"expression": expression, "awaitPromise": await_promise,

@@ -57,15 +57,14 @@ def vendored_jspsych() -> Files:
 
 
 def page(document: dict[str, Any], host: str) -> bytes:
-    """The experiment's ``index.html`` for ``host`` (the import map when the live player is used)."""
+    """The experiment's ``index.html`` for ``host`` (the live player, live/player.js, is one ES module with the
+    three.js it uses: the page needs no import map)."""
     from html import escape
 
-    importmap = ('<script type="importmap">\n{"imports": {"three": "./live/three/build/three.module.min.js", '
-                 '"three/addons/": "./live/three/examples/jsm/"}}\n</script>\n') if document["live"] else ""
     scripts = {"jatos": '<script src="jatos.js"></script>\n',
                "pavlovia": f'<script src="lib/vendors/{PAVLOVIA_PLUGIN}"></script>\n'}.get(host, "")
     text = (asset_text("index.html").replace("{{TITLE}}", escape(document["title"]))
-            .replace("{{LANG}}", "en").replace("{{IMPORTMAP}}", importmap).replace("{{HOST_SCRIPTS}}", scripts)
+            .replace("{{LANG}}", "en").replace("{{HOST_SCRIPTS}}", scripts)
             .replace("{{HOST}}", host))
     return text.encode("utf-8")
 

@@ -3,9 +3,10 @@
 The folder works offline from any static web server (nothing is fetched from elsewhere):
 
 =====================  ==================================================================
-``index.html``         the page, with an import map naming the vendored three.js
-``player.js``          the player (an ES module; its API is ``window.ArtificialPerson``)
-``three/``             three.js |three| from the npm registry (build + GLTFLoader), with its licence
+``index.html``         the page: the head fills the window, framed as ``render`` frames it
+``player.js``          the player and three.js |three| in one ES module (:mod:`.player_bundle`;
+                       its API is ``window.ArtificialPerson``): the page needs no import map
+``three-LICENSE.txt``  three.js's MIT licence, beside the bundle
 ``head.glb``           the model: skeleton + the morph targets the animation uses (:mod:`.web_model`)
 ``animation.json``     frame table, phones, words, camera, lights (:mod:`.animation`)
 ``speech.wav``         the audio (16-bit PCM, as ``say -o x.wav`` writes it)
@@ -36,6 +37,8 @@ from engine.outputs.look_shader import SHADING, UNIFORMS
 from engine.outputs.looks import Look, look_from
 from engine.speech.synthesis import Segment
 from engine.web.animation import animation_document
+from engine.web.player_bundle import SHADER_MARK, bundle_text, licence_text
+from engine.web.web_camera import web_framing
 from engine.web.web_look import look_document
 from engine.web.web_model import morph_parameters, web_glb
 
@@ -50,14 +53,14 @@ DEFAULT_FPS = 60.0
 DEFAULT_SIZE = (600, 800)
 MARKER = "artificial-person-web-site"
 THREE_VERSION = "0.170.0"
-#: The files a site holds besides the vendored three.js folder.
-SITE_FILES = ("index.html", "player.js", "head.glb", "animation.json", "speech.wav")
-#: Where player.js takes the look's shader (engine.outputs.look_shader), put in as the site is written.
-SHADER_MARK = '/*{{LOOK_SHADER}}*/""'
+#: The files a site of one utterance holds.
+SITE_FILES = ("index.html", "player.js", "three-LICENSE.txt", "head.glb", "animation.json", "speech.wav")
 
 
 def site_camera(model: Model, size: tuple[int, int] = DEFAULT_SIZE, view: str = "front") -> dict[str, Any]:
-    """The camera of ``render --view VIEW --size WxH`` (rest-pose framing), in metres, as the player takes it.
+    """The camera of ``render --view VIEW --size WxH`` (rest-pose framing), in metres, as the player takes it,
+    with the ``framing`` (:mod:`engine.web.web_camera`) by which the player frames the head so at the size of
+    its canvas, whatever that is.
 
     >>> from engine import load_model
     >>> camera = site_camera(load_model())
@@ -69,7 +72,8 @@ def site_camera(model: Model, size: tuple[int, int] = DEFAULT_SIZE, view: str = 
     return {"view": view, "fov_degrees": VIEW_ANGLE, "width": width, "height": height,
             "position": [round(float(c) / 1000.0, 7) for c in position],
             "target": [round(float(c) / 1000.0, 7) for c in focal],
-            "up": [float(c) for c in up], "near": near / 1000.0, "far": far / 1000.0}
+            "up": [float(c) for c in up], "near": near / 1000.0, "far": far / 1000.0,
+            "framing": web_framing(model, view)}
 
 
 def project(camera: dict[str, Any], points_mm: np.ndarray) -> np.ndarray:
@@ -116,7 +120,7 @@ def write_site(model: Model, names: Sequence[str], values: np.ndarray, frame_ms:
     """Write the site into the folder ``out`` (made if missing; a folder that is not empty must be an
     earlier site, whose files are replaced). ``values``: frames × ``names``, frame ``n`` at ``n × frame_ms``;
     ``look`` how the head is lit and shaded (:mod:`engine.outputs.looks`, default ``portrait``).
-    Returns each file's size in bytes (three.js as one entry, ``three/``)."""
+    Returns each file's size in bytes."""
     out = Path(out)
     check_folder(out)
     look = look_from(look)
@@ -124,7 +128,7 @@ def write_site(model: Model, names: Sequence[str], values: np.ndarray, frame_ms:
     animation.update(model="head.glb", audio="speech.wav")
     glb = web_glb(model, morph_parameters(model, shared_targets([animation])), look)
     files = {"animation.json": json_bytes(animation), "speech.wav": wav}
-    return write_folder(out, glb, files, size, "animation.json")
+    return write_folder(out, glb, files, "animation.json")
 
 
 def site_animation(model: Model, names: Sequence[str], values: np.ndarray, frame_ms: float,
@@ -161,11 +165,10 @@ def json_bytes(document: dict[str, Any]) -> bytes:
     return json.dumps(document, separators=(",", ":"), ensure_ascii=False).encode("utf-8")
 
 
-def write_folder(out: Path, glb: bytes, files: dict[str, bytes], size: tuple[int, int],
-                 first_animation: str) -> dict[str, int]:
-    """The page, the player, three.js and the model, with ``files`` (path in the site → bytes), into ``out``;
-    the page opens ``first_animation`` unless its address names a stimulus. Returns each file's size
-    (three.js as one entry, ``three/``).
+def write_folder(out: Path, glb: bytes, files: dict[str, bytes], first_animation: str) -> dict[str, int]:
+    """The page, the player (bundled with three.js) and the model, with ``files`` (path in the site → bytes),
+    into ``out``; the page opens ``first_animation`` unless its address names a stimulus. Returns each
+    file's size.
 
     Every file is written by :func:`engine.formats.atomic.atomic_files`, all under one journal: each goes
     to a new temporary file of a random name beside its target (so a link planted at some fixed name is
@@ -173,34 +176,15 @@ def write_folder(out: Path, glb: bytes, files: dict[str, bytes], size: tuple[int
     the next one into the folder (:func:`check_folder`), or, killed before its first rename, undone. A
     link in place of a file is replaced, not followed; a folder of the site that is a link is refused."""
     out.mkdir(parents=True, exist_ok=True)
-    page = (_player_file("index.html").replace("{{WIDTH}}", str(size[0])).replace("{{HEIGHT}}", str(size[1]))
-            .replace("{{ANIMATION}}", first_animation))
-    player = _player_file("player.js").replace(SHADER_MARK, json.dumps(UNIFORMS + SHADING))
-    everything = {"index.html": page.encode("utf-8"), "player.js": player.encode("utf-8"), "head.glb": glb, **files}
-    three = _vendored_three()
-    contents = {**everything, **three}
+    page = _player_file("index.html").replace("{{ANIMATION}}", first_animation)
+    player = bundle_text().replace(SHADER_MARK, json.dumps(UNIFORMS + SHADING))
+    contents = {"index.html": page.encode("utf-8"), "player.js": player.encode("utf-8"),
+                "three-LICENSE.txt": licence_text().encode("utf-8"), "head.glb": glb, **files}
     targets = {name: _site_path(out, name) for name in contents}
     with atomic_files(targets.values()) as temporary:
         for name, target in targets.items():
             temporary[target].write_bytes(contents[name])
-    sizes = {name: len(blob) for name, blob in everything.items()}
-    sizes["three/"] = sum(len(blob) for blob in three.values())
-    return sizes
-
-
-def _vendored_three() -> dict[str, bytes]:
-    """three.js as the package holds it (``engine/web/vendor/three``, its README left out): path in the site → bytes."""
-    found: dict[str, bytes] = {}
-
-    def walk(folder: Any, prefix: str) -> None:
-        for entry in sorted(folder.iterdir(), key=lambda e: e.name):
-            if entry.is_dir():
-                walk(entry, f"{prefix}{entry.name}/")
-            elif f"{prefix}{entry.name}" != "three/README.md":
-                found[f"{prefix}{entry.name}"] = entry.read_bytes()
-
-    walk(resources.files("engine.web") / "vendor" / "three", "three/")
-    return found
+    return {name: len(blob) for name, blob in contents.items()}
 
 
 def _site_path(out: Path, name: str) -> Path:
@@ -282,7 +266,8 @@ def check_folder(out: Path) -> None:
                             file=out)
 
 
-#: The folders a site has of its own (three.js, a stimulus set's files), besides the site's own folder.
+#: The folders a site has of its own (a stimulus set's files; ``three/``, which sites before the bundle
+#: held), besides the site's own folder.
 _SUBFOLDERS = ("three", "stimuli")
 
 

@@ -129,7 +129,7 @@ def write_stimuli_site(model: Model | None, set_folder: str | Path, out: str | P
             files[f"stimuli/{animation['stimulus']}.json"] = json_bytes(animation)
     files["stimuli.json"] = json_bytes({"format": STIMULI_FORMAT, "version": 1, "set": str(set_folder.name),
                                         "heads": len(glbs), "stimuli": listed})
-    return write_folder(out, glbs[0], files, size, listed[0]["animation"])
+    return write_folder(out, glbs[0], files, listed[0]["animation"])
 
 
 def _refuse_heads_of_their_own(listing: list[ListedStimulus], manifest: Path) -> None:

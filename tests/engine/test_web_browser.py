@@ -110,7 +110,8 @@ def test_the_page_loads_only_from_its_folder_and_logs_no_error(browser, stills):
         page = still["page"]
         assert page.problems() == [], kind
         requested = page.requested()
-        assert f"{base}/head.glb" in requested and f"{base}/three/build/three.module.min.js" in requested
+        assert f"{base}/head.glb" in requested and f"{base}/player.js" in requested
+        assert not [url for url in requested if "/three/" in url], kind          # three.js is in the bundle
         assert outside(requested, base) == [], kind
 
 

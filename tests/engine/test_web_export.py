@@ -17,12 +17,14 @@ from engine.outputs.gltf_export import glb_bytes, gltf_document, parameter_targe
 from engine.outputs.gltf_skeleton import skeleton_parameters
 from engine.speech.say import speak
 from engine.web.animation import dequantised
+from engine.web.player_bundle import IMPORT
 from engine.web.site import SITE_FILES, write_speech_site
 from engine.web.web_model import QUANTISATION, dequantised_target, web_glb, web_gltf_document
 from tests.engine.cli_runner import assert_user_error, made_set, run
 
 SENTENCE = "Pappa osti mummolle paljon omenoita."
 SIZE_LIMIT = 3_000_000
+ROOT = Path(__file__).resolve().parents[2]
 
 
 @pytest.fixture(scope="module")
@@ -37,16 +39,17 @@ def test_a_sentence_becomes_a_small_offline_site(tmp_path):
     assert result.returncode == 0, result.stderr
     for name in SITE_FILES:
         assert (site / name).is_file(), name
-    for name in ("build/three.module.min.js", "examples/jsm/loaders/GLTFLoader.js", "LICENSE"):
-        assert (site / "three" / name).is_file(), name
+    assert not (site / "three").exists()                     # three.js is in the bundle
     total = sum(f.stat().st_size for f in site.rglob("*") if f.is_file())
     assert total < SIZE_LIMIT, f"the site is {total / 1e6:.2f} MB"
     assert "MB in all" in result.stdout
     page = (site / "index.html").read_text()
-    imports = json.loads(re.search(r'<script type="importmap">(.*?)</script>', page, re.S).group(1))["imports"]
-    assert imports == {"three": "./three/build/three.module.min.js", "three/addons/": "./three/examples/jsm/"}
+    assert "importmap" not in page and 'from "./player.js"' in page   # the bundle needs no import map
+    assert IMPORT.search((site / "player.js").read_text()) is None      # and imports nothing itself
+    assert (site / "three-LICENSE.txt").read_text() == (ROOT / "engine/web/vendor/three/LICENSE").read_text()
     for name in ("index.html", "player.js"):                 # nothing named on another server
-        assert not re.search(r"https?://", (site / name).read_text()), name
+        text = (site / name).read_text().replace('"http://www.w3.org/1999/xhtml"', "")  # a namespace, not a URL
+        assert not re.search(r"https?://", text), name
 
 
 def test_morph_targets_read_back_as_the_engine_moves_the_vertices(head):
@@ -138,7 +141,7 @@ def test_tracks_and_audio_make_the_same_animation_as_the_sentence(tmp_path):
 def test_a_site_is_written_again_over_an_earlier_one(head, speech, tmp_path):
     write_speech_site(speech, head, tmp_path / "site")
     write_speech_site(speech, head, tmp_path / "site")
-    assert sorted(p.name for p in (tmp_path / "site").iterdir()) == sorted([*SITE_FILES, "three"])
+    assert sorted(p.name for p in (tmp_path / "site").iterdir()) == sorted(SITE_FILES)
 
 
 # -- bad input: one line, status 2 --------------------------------------------------------------------------
@@ -346,19 +349,19 @@ def test_a_folder_that_is_no_set_is_refused(tmp_path):
 
 
 def test_the_player_and_three_js_are_package_data():
-    """An installed toolkit (a wheel) carries the player and the vendored three.js: pyproject's package-data
-    patterns reach every file under engine/web/player and engine/web/vendor."""
+    """An installed toolkit (a wheel) carries the player, its bundle and the vendored three.js: pyproject's
+    package-data patterns reach every file under engine/web/player, engine/web/dist and engine/web/vendor."""
     import tomllib
 
     root = Path(__file__).resolve().parents[2]
     patterns = tomllib.loads((root / "pyproject.toml").read_text())["tool"]["setuptools"]["package-data"]["engine"]
     shipped = {path for pattern in patterns for path in (root / "engine").glob(pattern) if path.is_file()}
-    needed = {path for folder in ("player", "vendor") for path in (root / "engine" / "web" / folder).rglob("*")
+    needed = {path for folder in ("player", "dist", "vendor") for path in (root / "engine" / "web" / folder).rglob("*")
               if path.is_file()}
     assert needed and needed <= shipped, sorted(str(p) for p in needed - shipped)
 
 
-def test_the_size_sets_the_page_and_the_camera_as_render_size_does(head, speech, tmp_path):
+def test_the_size_sets_the_camera_as_render_size_does(head, speech, tmp_path):
     from engine.outputs.camera import VIEWS, camera_pose, framed_points
 
     write_speech_site(speech, head, tmp_path, size=(320, 240))
@@ -368,7 +371,7 @@ def test_the_size_sets_the_page_and_the_camera_as_render_size_does(head, speech,
     assert np.allclose(np.array(camera["position"]) * 1000, position, atol=1e-3)
     assert np.allclose(np.array(camera["target"]) * 1000, focal, atol=1e-3)
     page = (tmp_path / "index.html").read_text()
-    assert 'width="320" height="240"' in page and "{{" not in page
+    assert "{{" not in page and "width: 100%; height: 100%" in page    # the page itself fills its window
 
 
 @pytest.mark.slow

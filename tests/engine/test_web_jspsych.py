@@ -214,9 +214,6 @@ def jspsych_page(title: str, script: str) -> str:
     return f"""<!doctype html>
 <html lang="en"><head><meta charset="utf-8"><title>{title}</title><link rel="icon" href="data:,">
 <link rel="stylesheet" href="jspsych/css/jspsych.css">
-<script type="importmap">
-{{"imports": {{"three": "./three/build/three.module.min.js", "three/addons/": "./three/examples/jsm/"}}}}
-</script>
 <script src="jspsych/dist/index.browser.min.js"></script>
 <script src="plugin-artificial-person.js"></script>
 </head><body><script>

@@ -5,8 +5,8 @@
 //   <script src="plugin-artificial-person.js"></script>
 //   ... timeline.push({ type: jsPsychArtificialPerson, stimulus: "0001", choices: ["f", "j"] });
 //
-// The page must carry the site's import map (the player imports "three"), and the site is a folder
-// made by `artificial-person web-export --stimuli SET -o SITE/` (its stimuli.json, player.js, three/).
+// The site is a folder made by `artificial-person web-export --stimuli SET -o SITE/` (its stimuli.json and
+// player.js, the player bundled with three.js in one ES module: the page needs no import map).
 //
 // Times: `t` values are performance.now() in ms, as the page saw them; `_ms` values are on the
 // stimulus's own clip clock (0 = the clip's first sound sample, where its face starts too unless the
@@ -36,7 +36,8 @@ var jsPsychArtificialPerson = (function (jspsych) {
       trial_ends_after_stimulus: { type: ParameterType.BOOL, default: false },
       /** End the trial this many ms after the stimulus starts playing (null: no limit). */
       trial_duration: { type: ParameterType.INT, default: null },
-      /** The head's size on the page, [width, height] in CSS pixels (null: the site's size, e.g. 600×800). */
+      /** The head's size on the page, [width, height]: CSS pixels, or CSS lengths such as ["100%", "70vh"]
+       *  (null: the site's size, e.g. 600×800). The head is framed for the size it gets, as render frames it. */
       // (COMPLEX: jsPsych 8 refuses null for an array parameter, and turns an array given to an INT one into NaN)
       canvas_size: { type: ParameterType.COMPLEX, default: null },
     },
@@ -183,8 +184,10 @@ var jsPsychArtificialPerson = (function (jspsych) {
       const canvas = stage.querySelector("canvas");
       const start = stage.querySelector("button");
       if (trial.canvas_size) {
-        canvas.style.width = `${trial.canvas_size[0]}px`;
-        canvas.style.height = `${trial.canvas_size[1]}px`;
+        const length = (value) => (typeof value === "number" ? `${value}px` : String(value));
+        canvas.style.width = length(trial.canvas_size[0]);
+        canvas.style.height = length(trial.canvas_size[1]);
+        if (String(trial.canvas_size[0]).endsWith("%")) stage.style.display = "block";   // as wide as the page
       }
 
       const site = siteUrl(trial.site);

@@ -5,13 +5,18 @@
 //   await player.play();  player.pause();  player.seek(1200);
 //   player.addEventListener("word", (e) => console.log(e.detail.word, e.detail.t));
 //
+// The canvas takes the size the page gives it (CSS: `width: 100%; height: 100%` fills its container) and the
+// head is framed in it as `render --view front` frames a picture of that size, again whenever it is resized.
 // Events (CustomEvent, detail.t = performance.now() when the player saw it):
-//   ready, play, pause, seek, word {word, start_ms, end_ms}, ended.
-// The clock is the audio's (AudioContext.currentTime, less the output latency) once the
-// sound runs; before that, performance.now() since play().
+//   ready, play, pause, seek, word {word, start_ms, end_ms}, ended, resize {width, height}.
+// The clock is the audio's (AudioContext.currentTime, less the output latency) once the sound runs; before
+// that, performance.now() since play().
+//
+// This is the source: sites get engine/web/dist/player.js, this file and the three.js it imports bundled
+// into one ES module (engine/web/player_bundle.py), so that a page needs no import map.
 
-import * as THREE from "three";
-import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
+import * as THREE from "../vendor/three/build/three.module.min.js";
+import { GLTFLoader } from "../vendor/three/examples/jsm/loaders/GLTFLoader.js";
 
 THREE.ColorManagement.enabled = false;   // light colours as they are written, as the engine's renderer does
 
@@ -20,8 +25,9 @@ function linearToSrgb(c) {
 }
 
 // The shading of a physically based look: the engine's own GLSL (engine/outputs/look_shader.py), put in
-// here when the site is written, so the browser computes every pixel with the renderer's formulas.
-const LOOK_SHADER = /*{{LOOK_SHADER}}*/"";
+// here when the site is written (the marker string is replaced by the GLSL as a JSON string), so the browser
+// computes every pixel with the renderer's formulas.
+const LOOK_SHADER = "{{LOOK_SHADER}}";
 
 // A glTF colour (linear light, from sRGB by the exact curve) as VTK's physically based shading takes the
 // same colour: the stored sRGB value to the power 2.2.
@@ -30,9 +36,12 @@ function vtkLinear(c) {
 }
 
 export class ArtificialPerson extends EventTarget {
-  constructor(canvas) {
+  /** ``options.pixelRatio``: drawing-buffer pixels per CSS pixel (default the screen's, at most 2). */
+  constructor(canvas, options = {}) {
     super();
     this.canvas = canvas;
+    this.pixelRatio = options.pixelRatio || Math.min(window.devicePixelRatio || 1, 2);
+    this.size = null;             // {width, height}: the canvas's CSS size the camera is framed for
     this.position = 0;            // ms on the animation's clock
     this.playing = false;
     this.ready = false;
@@ -155,6 +164,7 @@ export class ArtificialPerson extends EventTarget {
     this.pause();
     this.disposed = true;
     if (this._frameRequest !== undefined) cancelAnimationFrame(this._frameRequest);
+    if (this._observer) this._observer.disconnect();
     if (this.audioContext) this.audioContext.close().catch(() => {});
     if (this.renderer) {
       this.renderer.dispose();
@@ -208,32 +218,103 @@ export class ArtificialPerson extends EventTarget {
   _setUpScene(animation) {
     const c = animation.camera;
     this.renderer = new THREE.WebGLRenderer({ canvas: this.canvas, antialias: true, alpha: true });
-    this.renderer.setPixelRatio(1);
-    this.renderer.setSize(c.width, c.height, false);
+    this.renderer.setPixelRatio(this.pixelRatio);
     this.renderer.outputColorSpace = THREE.LinearSRGBColorSpace;
     this.renderer.setClearColor(0x000000, 0);
     this.scene = new THREE.Scene();
     this.camera = new THREE.PerspectiveCamera(c.fov_degrees, c.width / c.height, c.near, c.far);
-    this.camera.position.fromArray(c.position);
     this.camera.up.fromArray(c.up);
-    this.camera.lookAt(new THREE.Vector3().fromArray(c.target));
     this.scene.add(this.camera);
+    this._fitCanvas(c);
     const background = animation.background;
     if (background) this.canvas.style.background = `linear-gradient(to top, ${background.bottom}, ${background.top})`;
     if (animation.look) return;     // a physically based look: its lights are the shader's uniforms
-    // The engine's key, fill and rim lights ride with the camera, aimed at what it looks at.
+    // The engine's key, fill and rim lights ride with the camera, aimed at what it looks at (a directional
+    // light's direction is all that counts, so they stay right when the camera moves in or out).
     const aim = new THREE.Object3D();
-    aim.position.set(0, 0, -new THREE.Vector3().fromArray(c.position).distanceTo(new THREE.Vector3().fromArray(c.target)));
+    const distance = new THREE.Vector3().fromArray(c.position).distanceTo(new THREE.Vector3().fromArray(c.target));
+    aim.position.set(0, 0, -distance);
     this.camera.add(aim);
-    const distance = -aim.position.z;
     for (const light of animation.lights) {
       const directional = new THREE.DirectionalLight(0xffffff, light.intensity * Math.PI);
       const [x, y, z] = light.camera_position;
-      directional.position.set(x * distance, y * distance, z * distance + aim.position.z);
+      directional.position.set(x * distance, y * distance, z * distance - distance);
       directional.target = aim;
       this.camera.add(directional);
     }
     this.scene.add(new THREE.AmbientLight(0xffffff, Math.PI));
+  }
+
+  // -- the canvas's size and the framing -------------------------------------------------------
+
+  /** Size the drawing buffer to the canvas's size on the page, frame the head for it, and again on resize. */
+  _fitCanvas(c) {
+    const canvas = this.canvas;
+    if (!canvas.hasAttribute("width") && !canvas.hasAttribute("height")) {
+      canvas.width = c.width;               // the site's size (--size) where the page sets none
+      canvas.height = c.height;
+    }
+    // A canvas the page gives no size takes it from its own width and height: pin it there, so that the
+    // drawing buffer (pixelRatio × the CSS size) does not make it grow.
+    const before = this._cssSize();
+    const [width, height] = [canvas.width, canvas.height];
+    canvas.width = width * 2;
+    canvas.height = height * 2;
+    const grows = before !== null && this._cssSize() !== null && this._cssSize().width !== before.width;
+    canvas.width = width;
+    canvas.height = height;
+    if (grows) {
+      canvas.style.width = `${before.width}px`;
+      canvas.style.height = `${before.height}px`;
+    }
+    const size = this._cssSize() || { width: c.width, height: c.height };
+    this._resize(size.width, size.height);
+    if (typeof ResizeObserver === "function") {
+      this._observer = new ResizeObserver((entries) => {
+        const box = entries[entries.length - 1].contentRect;
+        if (box.width > 0 && box.height > 0 && !this.disposed) {
+          this._resize(box.width, box.height);
+          this.renderer.render(this.scene, this.camera);     // at once: no frame of the old size is shown
+        }
+      });
+      this._observer.observe(canvas);
+    }
+  }
+
+  /** The canvas's content box in CSS pixels (null while it is not laid out). */
+  _cssSize() {
+    const style = getComputedStyle(this.canvas);
+    const width = parseFloat(style.width), height = parseFloat(style.height);
+    return width > 0 && height > 0 ? { width, height } : null;
+  }
+
+  _resize(width, height) {
+    if (this.size && this.size.width === width && this.size.height === height) return;
+    this.size = { width, height };
+    this.renderer.setSize(width, height, false);
+    this._frame(width, height);
+    this._emit("resize", { width, height });
+  }
+
+  /** Aim the camera as `render --view` does for a width × height picture (engine/web/web_camera.py): on the
+   * view's axis, as far from the focal point as the framed head needs to fit, across and up, with the margin. */
+  _frame(width, height) {
+    const c = this.animation.camera, f = c.framing;
+    const target = new THREE.Vector3().fromArray(c.target);
+    const back = new THREE.Vector3().fromArray(c.position).sub(target);
+    let distance = back.length(), near = c.near, far = c.far;
+    if (f) {
+      const tanX = f.tan_half_height * width / height;
+      distance = Math.max(f.distance_up, 0.001, ...f.sides.map(([a, b]) => b + a / tanX));
+      near = Math.max(distance - f.in_front - 0.01, distance * 0.01);
+      far = distance + f.behind + 0.01;
+    }
+    this.camera.position.copy(target).addScaledVector(back.normalize(), distance);
+    this.camera.lookAt(target);
+    this.camera.aspect = width / height;
+    this.camera.near = near;
+    this.camera.far = far;
+    this.camera.updateProjectionMatrix();
   }
 
   _setUpModel(gltf, animation) {
