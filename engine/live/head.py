@@ -33,7 +33,7 @@ from engine.commands.command_files import Activation
 from engine.live.protocol import RequestId
 from engine.model.model import Model
 from engine.speech.say import Speech
-from engine.timeline.rule import AnimationRule
+from engine.timeline.rule import AnimationRule, Placed
 
 Event = dict[str, Any]
 
@@ -175,14 +175,14 @@ class LiveHead:
             for name, value in pending.values.items():
                 self._base[self._column[name]] = value
             out.append((pending.owner, {"event": "applied", "id": pending.request_id, "t": self.t}))
-        total = self.rule.base_rows(1, self._base)
+        placed: list[Placed] = []
         running: list[Performance] = []
         for performance in self.performances:
             local = t - performance.start_t
             if local < 0:
                 running.append(performance)
                 continue
-            self.rule.add(total, performance.activations, performance.columns, np.array([local]))
+            placed.append((performance.activations, performance.columns, performance.start_t))
             while (performance.next_event < len(performance.events)
                    and performance.events[performance.next_event][0] <= local):
                 offset, fields = performance.events[performance.next_event]
@@ -196,7 +196,7 @@ class LiveHead:
             else:
                 running.append(performance)
         self.performances = running
-        self._current = self.rule.clamp(total)[0]
+        self._current = self.rule.values(np.array([float(t)]), placed, self._base)[0]
         return out
 
     def _add(self, performance: Performance) -> Performance:

@@ -5,8 +5,8 @@ and adds its value at both.
 
 :class:`~engine.timeline.timeline.Timeline` samples it over many frames; the live head
 (:class:`~engine.live.head.LiveHead`) over one frame at a time, for performances started at different
-moments. Both call :meth:`AnimationRule.add` and :meth:`AnimationRule.clamp`, so a sentence plays the same
-offline and live.
+moments. Both call :meth:`AnimationRule.values`, the rule whole (base, sum, clamp), so a sentence plays the
+same offline and live; :meth:`~AnimationRule.add` and :meth:`~AnimationRule.clamp` are its two steps.
 
 >>> import numpy as np
 >>> from engine import load_model
@@ -17,15 +17,23 @@ offline and live.
 >>> rule.add(total, nod, rule.columns(nod), np.array([50.0, 100.0, 300.0]))
 >>> rule.clamp(total)[:, rule.column["head_nod"]].round(6).tolist()
 [0.1, 0.2, 0.0]
+>>> rule.values(np.array([50.0]), [(nod, rule.columns(nod), 0.0)])[:, rule.column["head_nod"]].round(6).tolist()
+[0.1]
 """
 
 from __future__ import annotations
+
+from collections.abc import Iterable
 
 import numpy as np
 
 from engine.commands.command_files import Activation
 from engine.commands.interpolation import interpolate
 from engine.model.model import Model
+
+Placed = tuple[list[Activation], list[int], float]
+"""Activations, their columns (:meth:`AnimationRule.columns`) and where their time 0 is (ms): a timeline's
+activations at 0, a live performance's at its start on the frame clock."""
 
 
 class AnimationRule:
@@ -67,3 +75,12 @@ class AnimationRule:
     def clamp(self, total: np.ndarray) -> np.ndarray:
         """``total`` clamped to every parameter's range (a new array)."""
         return np.clip(total, self.minimum, self.maximum)
+
+    def values(self, times: np.ndarray, placed: Iterable[Placed], base: np.ndarray | None = None) -> np.ndarray:
+        """The rule: every parameter's value (one row per time in ``times``, ms) — the base (the defaults
+        unless ``base`` is given) plus what each of the ``placed`` activations adds at that time measured
+        from its own start, clamped to the parameter's range."""
+        total = self.base_rows(times.size, base)
+        for activations, columns, start in placed:
+            self.add(total, activations, columns, times - start if start else times)
+        return self.clamp(total)

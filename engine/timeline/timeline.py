@@ -65,9 +65,7 @@ class Timeline:
     def sample(self, times: ArrayLike) -> np.ndarray:
         """Values (len(times) × parameters, in ``self.parameters`` order) at the given times (ms)."""
         times = np.atleast_1d(np.asarray(times, dtype=float))
-        total = self.rule.base_rows(times.size)
-        self.rule.add(total, self.activations, self._column, times)
-        return self.rule.clamp(total)
+        return self.rule.values(times, [(self.activations, self._column, 0.0)])
 
     def values_at(self, time: float) -> dict[str, float]:
         """Every parameter's value at one time, as a dict ready for ``Model.deform``."""

@@ -228,3 +228,30 @@ def test_action_units_with_numbers_int_cannot_read_still_sort(name):
     from engine.timeline.expressions import _unit_order
 
     assert _unit_order(name)[1] == name
+
+
+def test_the_timeline_and_the_live_head_both_call_the_one_rule(monkeypatch):
+    """Issue 35 item 3: ``AnimationRule.values`` (base + sum of activations + clamp) is the only place both
+    the offline timeline and the live head turn activations into values."""
+    from engine import load_model
+    from engine.live.head import LiveHead
+    from engine.timeline.rule import AnimationRule
+
+    head = load_model()
+    calls = []
+    real = AnimationRule.values
+
+    def counted(self, times, placed, base=None):
+        calls.append(len(times))
+        return real(self, times, placed, base)
+
+    monkeypatch.setattr(AnimationRule, "values", counted)
+    nod = [Activation("head_nod", np.array([0.0, 100.0, 200.0]), np.array([0.0, 0.2, 0.0]))]
+    offline = Timeline(nod, head).sample([0.0, 100.0, 150.0])
+    assert calls == [3]
+    live = LiveHead(head)
+    live.add_commands(0.0, "c", None, nod)
+    for k, t in enumerate([0.0, 100.0, 150.0]):
+        live.advance(t)
+        np.testing.assert_array_equal(live.current, offline[k])
+    assert calls == [3, 1, 1, 1]
