@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import itertools
 import re
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -66,9 +66,10 @@ def speak_recording(audio: str | Path, labels: str | Path, model: Model, text: s
                     phone_set: str = "auto", tier: str | None = None, word_tier: str | None = None,
                     phone_map: str | Path | None = None, library: Library | None = None,
                     table: ArticulationTable | None = None, coarticulation: str = "cohen-massaro",
-                    prosody_seed: int | None = None, name: str = "<text>") -> Speech:
+                    prosody_seed: int | None = None, name: str = "<text>",
+                    table_of: Callable[[Utterance], ArticulationTable] | None = None) -> Speech:
     """The recording with a face: :func:`recorded_utterance` animated as :func:`engine.speech.say.speak`
-    animates synthetic speech.
+    animates synthetic speech (``table_of`` as there: the table chosen from the utterance).
 
     ``text`` (optional) holds the inline commands; its words are matched to
     the label file's word tier, which it therefore needs when it has commands.
@@ -87,6 +88,8 @@ def speak_recording(audio: str | Path, labels: str | Path, model: Model, text: s
     elif script.commands and not utterance.words:
         raise LabelFileError("the text has inline commands, but the labels have no word tier to anchor them to "
                          f"(tiers named {', '.join(WORD_TIER_NAMES)}, or --word-tier NAME)", file=labels)
+    if table_of is not None:
+        table = table_of(utterance)
     return animate(script, utterance, model, library, table, coarticulation, prosody_seed)
 
 

@@ -14,6 +14,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -71,13 +72,16 @@ class Speech:
 
 def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice: str | None = None,
           library: Library | None = None, table: ArticulationTable | None = None,
-          coarticulation: str = "cohen-massaro", prosody_seed: int | None = None, name: str = "<text>") -> Speech:
+          coarticulation: str = "cohen-massaro", prosody_seed: int | None = None, name: str = "<text>",
+          table_of: Callable[[Utterance], ArticulationTable] | None = None) -> Speech:
     """Synthesize ``text`` (with inline commands) and build the timeline that animates it.
 
     ``synthesizer`` defaults to Festival (:class:`engine.speech.festival.FestivalSynthesizer`),
     ``library`` to the shipped command library, ``table`` to the shipped
     articulation table of the voice's phone set (Finnish, English), any phone
-    without a row getting one derived from its phone features; ``name`` is what errors call the text. The files an
+    without a row getting one derived from its phone features, or ``table_of(utterance)`` when the table
+depends on what was synthesized (a viseme continuum's blended row), so the animation is built once;
+``name`` is what errors call the text. The files an
     utterance becomes (video, audio, tables) are written by
     :func:`engine.outputs.speech_files.write_speech_files`.
     """
@@ -96,6 +100,8 @@ def speak(text: str, model: Model, synthesizer: Synthesizer | None = None, voice
 
         synthesizer = FestivalSynthesizer()
     utterance = synthesizer.synthesize(script.text, voice)
+    if table_of is not None:
+        table = table_of(utterance)
     speech = animate(script, utterance, model, library, table, coarticulation, prosody_seed)
     speech.reading_warnings = reading_warnings(text, voice)
     return speech

@@ -62,21 +62,21 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     levels = stimulus.levels
     model = stimulus_head(design, levels)
     name = f"{design.path.name}: stimulus {stimulus.id}"
+    table_of = None
+    if "viseme" in levels:              # a viseme continuum: one phone articulated part of the way to another
+        from engine.speech.articulation import ArticulationTable, table_for
+
+        def table_of(utterance: Utterance) -> ArticulationTable:
+            return table_for(utterance).with_blended_row(str(levels["viseme"]), str(levels["viseme_b"]),
+                                                         float(levels["viseme_morph"]) / 100.0)
     if "audio" in levels:               # a recorded voice: its audio unchanged, the face from its labels
         from engine.speech.recorded import speak_recording
 
         speech = speak_recording(design.extra_files[levels["audio"]], design.extra_files[levels["labels"]], model,
-                                 text=levels.get("text"), library=_library(), name=name)
-    else:
+                                 text=levels.get("text"), library=_library(), name=name, table_of=table_of)
+    else:                               # either way the animation is built once, with the continuum's table if any
         speech = speak(str(levels.get("text", "")), model, voice=levels.get("voice"), library=_library(),
-                       name=name)
-    if "viseme" in levels:              # a viseme continuum: one phone articulated part of the way to another
-        from engine.speech.articulation import table_for
-        from engine.speech.say import animate
-
-        table = table_for(speech.utterance).with_blended_row(str(levels["viseme"]), str(levels["viseme_b"]),
-                                                              float(levels["viseme_morph"]) / 100.0)
-        speech = animate(speech.script, speech.utterance, model, _library(), table)
+                       name=name, table_of=table_of)
     timeline, apex_ms = _with_expression(speech, model, levels)
     utterance, alignment = speech.utterance, 0.0
     if "audio_text" in levels:          # incongruent (McGurk): heard one utterance, seen another
