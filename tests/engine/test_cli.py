@@ -20,6 +20,7 @@ import pytest
 
 from engine import InfluenceRegion, Model, Parameter, ParameterTree, load_model, save_model
 from engine.paths import default_model_path
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 
 DEFAULT_HEAD_PARAMETERS = {
@@ -118,7 +119,7 @@ def read_png(path: Path) -> np.ndarray:
 # ---------------------------------------------------------------------------
 
 def test_info_json_has_exactly_the_documented_schema(model_path):
-    result = run("info", "-m", model_path, "--json")
+    result = run_in_process("info", "-m", model_path, "--json")
     assert result.returncode == 0, result.stderr
     info = json.loads(result.stdout)
     assert set(info) == {"parameters", "landmarks", "vertices"}
@@ -136,7 +137,7 @@ def test_info_json_has_exactly_the_documented_schema(model_path):
 
 
 def test_info_text_shows_the_tree_indented_with_parts_and_landmarks(model_path):
-    result = run("info", "-m", model_path)
+    result = run_in_process("info", "-m", model_path)
     assert result.returncode == 0, result.stderr
     lines = result.stdout.splitlines()
     root = next(line for line in lines if "head_turn" in line)
@@ -201,24 +202,28 @@ ERROR_CASES = {
 
 @pytest.mark.parametrize("args", list(ERROR_CASES.values()), ids=list(ERROR_CASES))
 def test_user_errors_give_one_line_and_status_2(args, model_path, tmp_path):
-    result = run(*[str(model_path) if a == "{model}" else a for a in args], cwd=tmp_path)
+    real_process = args[:1] == ["workbench"]          # in a real process: it must not bring Qt into this one
+    result = (run if real_process else run_in_process)(*[str(model_path) if a == "{model}" else a for a in args],
+                                                       cwd=tmp_path)
     assert_user_error(result)
     assert not list(tmp_path.glob("out.*")), "nothing is written when the command fails"
 
 
 def test_error_messages_say_what_is_wrong(model_path, tmp_path):
-    line = assert_user_error(run("pose", "-m", model_path, "--set", "brow_raise=3", "-o", tmp_path / "a.obj"))
+    line = assert_user_error(run_in_process("pose", "-m", model_path, "--set", "brow_raise=3",
+                                            "-o", tmp_path / "a.obj"))
     assert "brow_raise" in line and "[0, 1]" in line
-    line = assert_user_error(run("pose", "-m", model_path, "--set", "browraise=1", "-o", tmp_path / "a.obj"))
+    line = assert_user_error(run_in_process("pose", "-m", model_path, "--set", "browraise=1",
+                                            "-o", tmp_path / "a.obj"))
     assert "unknown parameter 'browraise'" in line and "brow_raise" in line
-    line = assert_user_error(run("render", "-m", model_path, "--set", "jaw", "-o", tmp_path / "a.png"))
+    line = assert_user_error(run_in_process("render", "-m", model_path, "--set", "jaw", "-o", tmp_path / "a.png"))
     assert "NAME=VALUE" in line
 
 
 def test_malformed_xml_is_reported_with_file_and_line(tmp_path):
     bad = tmp_path / "bad.xml"
     bad.write_text('<?xml version="1.0"?>\n<model format="artificial-person-model">\n  <parts>\n</model>\n')
-    line = assert_user_error(run("info", "-m", bad))
+    line = assert_user_error(run_in_process("info", "-m", bad))
     assert re.match(rf"error: {re.escape(str(bad))}:\d+: ", line), line
 
 
@@ -227,7 +232,7 @@ def test_model_failing_the_schema_is_reported_with_file_and_line(model_path, tmp
     (tmp_path / "synthetic.h5").write_bytes(model_path.with_suffix(".h5").read_bytes())
     bad = tmp_path / "synthetic.xml"
     bad.write_text(text)
-    line = assert_user_error(run("info", "-m", bad, "--json"))
+    line = assert_user_error(run_in_process("info", "-m", bad, "--json"))
     assert re.match(rf"error: {re.escape(str(bad))}:\d+: ", line), line
 
 
@@ -238,7 +243,7 @@ def test_entity_reference_in_the_model_is_one_error_line(model_path, tmp_path):
     bad = tmp_path / "synthetic.xml"
     bad.write_text(text)
     (tmp_path / "synthetic.h5").write_bytes(model_path.with_suffix(".h5").read_bytes())
-    line = assert_user_error(run("info", "-m", bad))
+    line = assert_user_error(run_in_process("info", "-m", bad))
     assert str(bad) in line
 
 
@@ -249,7 +254,7 @@ def test_missing_hdf5_dataset_is_reported(model_path, tmp_path):
     arrays.write_bytes(model_path.with_suffix(".h5").read_bytes())
     with h5py.File(arrays, "r+") as f:
         del f["mesh/part"]
-    line = assert_user_error(run("pose", "-m", xml, "-o", tmp_path / "out.npz"))
+    line = assert_user_error(run_in_process("pose", "-m", xml, "-o", tmp_path / "out.npz"))
     assert "mesh/part" in line and "synthetic.h5" in line
 
 
@@ -257,14 +262,14 @@ def test_unreadable_arrays_file_is_reported(model_path, tmp_path):
     xml = tmp_path / "synthetic.xml"
     xml.write_text(model_path.read_text())
     (tmp_path / "synthetic.h5").write_text("this is not HDF5")
-    line = assert_user_error(run("info", "-m", xml))
+    line = assert_user_error(run_in_process("info", "-m", xml))
     assert "synthetic.h5" in line
 
 
 def test_import_of_a_damaged_mesh_is_a_user_error(tmp_path):
     damaged = tmp_path / "scan.ply"
     damaged.write_text("ply\nformat ascii 1.0\nthis is not a header\n")
-    line = assert_user_error(run("import-mesh", damaged, "-o", tmp_path / "out.xml"))
+    line = assert_user_error(run_in_process("import-mesh", damaged, "-o", tmp_path / "out.xml"))
     assert "scan.ply" in line
 
 
