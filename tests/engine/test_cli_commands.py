@@ -7,6 +7,7 @@ import csv
 import pytest
 
 from engine import load_model
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 
 PAPER = '<commands>\n  <HeadNod at="1000" amplitude="60" count="2"/>\n</commands>\n'
@@ -67,7 +68,7 @@ def test_tracks_with_a_user_library_folder(tmp_path):
 def test_errors_are_one_line_with_status_2(tmp_path, content, args, words):
     xml = tmp_path / "x.xml"
     xml.write_text(content)
-    line = assert_user_error(run("tracks", xml, *args, "-o", tmp_path / "out.csv"))
+    line = assert_user_error(run_in_process("tracks", xml, *args, "-o", tmp_path / "out.csv"))
     assert words in line
     assert not (tmp_path / "out.csv").exists()
 
@@ -76,13 +77,13 @@ def test_a_broken_user_library_file_is_reported_with_its_line(tmp_path, script):
     folder = tmp_path / "lib"
     folder.mkdir()
     (folder / "bad.lib").write_text("$command = Bad\nx = 0,0; 100,1; 50,0\n")
-    line = assert_user_error(run("translate", script, "-L", folder))
+    line = assert_user_error(run_in_process("translate", script, "-L", folder))
     assert "bad.lib:2:" in line and "must increase" in line
 
 
 def test_wrong_output_extension_and_missing_input(script, tmp_path):
-    assert "unknown output extension" in assert_user_error(run("tracks", script, "-o", tmp_path / "t.txt"))
-    assert "no such file" in assert_user_error(run("translate", tmp_path / "missing.xml"))
+    assert "unknown output extension" in assert_user_error(run_in_process("tracks", script, "-o", tmp_path / "t.txt"))
+    assert "no such file" in assert_user_error(run_in_process("translate", tmp_path / "missing.xml"))
 
 
 def test_library_lists_commands_and_checks_them_against_the_model(tmp_path):

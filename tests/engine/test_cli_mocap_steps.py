@@ -11,6 +11,7 @@ from engine.mocap.importer import build_session
 from engine.mocap.recording import Recording
 from engine.mocap.session import save_session
 from engine.mocap.synthetic import synthesize_recording
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.mocap_samples import TRAINING_PHONES, parse_phones
 
@@ -64,4 +65,4 @@ def test_custom_stages_and_explicit_frames(session_file, tmp_path):
 ])
 def test_errors_are_one_line(session_file, tmp_path, args, words):
     args = [a.format(session=session_file, tmp=tmp_path) for a in args]
-    assert words in assert_user_error(run("mocap", *args))
+    assert words in assert_user_error(run_in_process("mocap", *args))

@@ -23,7 +23,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from engine.cli import main
-from tests.engine.cli_runner import assert_user_error, run
+from tests.engine.cli_in_process import run_in_process
+from tests.engine.cli_runner import assert_user_error
 from tests.engine.fuzz_support import EXAMPLES, FUZZ, HANG_SECONDS, NUMBER_TEXT, mutated, no_hang
 
 NOD = '<commands><HeadNod at="0" amplitude="60" count="2"/></commands>\n'
@@ -42,7 +43,7 @@ def write(tmp_path, name: str, text: str):
     ('<commands><HeadNod at="0" period="1e-300" end="1000"/></commands>', "more than 1000000"),
 ], ids=["at-1e308", "count-1e9", "tiny-period"])
 def test_tracks_of_commands_beyond_the_bounds(tmp_path, xml, words):
-    line = assert_user_error(run("tracks", write(tmp_path, "in.xml", xml), "-o", tmp_path / "out.csv"))
+    line = assert_user_error(run_in_process("tracks", write(tmp_path, "in.xml", xml), "-o", tmp_path / "out.csv"))
     assert "in.xml:1:" in line and words in line
 
 
@@ -53,13 +54,14 @@ def test_tracks_of_commands_beyond_the_bounds(tmp_path, xml, words):
     ("--fps", "nan", "positive"),
 ])
 def test_tracks_options_beyond_the_bounds(tmp_path, option, value, words):
-    line = assert_user_error(run("tracks", write(tmp_path, "in.xml", NOD), option, value, "-o", tmp_path / "o.csv"))
+    line = assert_user_error(run_in_process("tracks", write(tmp_path, "in.xml", NOD), option, value,
+                                            "-o", tmp_path / "o.csv"))
     assert option in line and words in line
 
 
 def test_too_many_frames_is_one_error(tmp_path):
-    line = assert_user_error(run("tracks", write(tmp_path, "in.xml", NOD), "--fps", "1000", "--end", "86400000",
-                                 "-o", tmp_path / "o.csv"))
+    line = assert_user_error(run_in_process("tracks", write(tmp_path, "in.xml", NOD), "--fps", "1000",
+                                            "--end", "86400000", "-o", tmp_path / "o.csv"))
     assert "more than 5000000" in line
 
 
@@ -70,19 +72,19 @@ def test_input_that_is_not_a_regular_file_is_refused_unread(tmp_path, source):
     elif source == "fifo":
         source = str(tmp_path / "pipe.xml")
         os.mkfifo(source)                           # no writer: opening it would block for ever
-    line = assert_user_error(run("translate", source))
+    line = assert_user_error(run_in_process("translate", source))
     assert "not a regular file" in line and source in line
 
 
 def test_say_refuses_a_device_as_its_text_file():
-    assert "not a regular file" in assert_user_error(run("say", "--file", "/dev/zero", "-o", "x.wav"))
+    assert "not a regular file" in assert_user_error(run_in_process("say", "--file", "/dev/zero", "-o", "x.wav"))
 
 
 def test_an_input_file_too_large_is_refused(tmp_path):
     big = tmp_path / "big.xml"
     with big.open("wb") as stream:               # sparse: 200 MB on paper, nothing on the disk
         stream.truncate(200_000_000)
-    assert "file too large" in assert_user_error(run("translate", big))
+    assert "file too large" in assert_user_error(run_in_process("translate", big))
 
 
 @pytest.mark.parametrize("text", [
@@ -94,16 +96,16 @@ def test_an_input_file_too_large_is_refused(tmp_path):
     '<!DOCTYPE commands [<!ENTITY nod SYSTEM "file:///etc/passwd">]>\n<commands>&nod;</commands>\n',
 ], ids=["external-dtd", "external-dtd-entity-in-attribute", "internal-entity"])
 def test_command_files_relying_on_dtd_entities_are_refused_not_emptied(tmp_path, text):
-    line = assert_user_error(run("translate", write(tmp_path, "low.xml", text)))
+    line = assert_user_error(run_in_process("translate", write(tmp_path, "low.xml", text)))
     assert "low.xml:" in line and ("DTD" in line or "entit" in line)
 
 
 @pytest.mark.parametrize("where", ["input", "output"])
 def test_an_over_long_file_name_is_status_2(tmp_path, where):
     if where == "input":
-        result = run("translate", tmp_path / f"{LONG_NAME}.xml")
+        result = run_in_process("translate", tmp_path / f"{LONG_NAME}.xml")
     else:
-        result = run("tracks", write(tmp_path, "in.xml", NOD), "-o", tmp_path / f"{LONG_NAME}.csv")
+        result = run_in_process("tracks", write(tmp_path, "in.xml", NOD), "-o", tmp_path / f"{LONG_NAME}.csv")
     assert "too long" in assert_user_error(result)
 
 
