@@ -244,5 +244,7 @@ class Page:
 
 
 def outside(urls: list[str], base: str, local: Callable[[str], bool] | None = None) -> list[str]:
-    """The URLs not under ``base`` (``data:`` URLs, which travel nowhere, count as inside)."""
-    return [u for u in urls if not (u.startswith((base + "/", "data:")) or (local is not None and local(u)))]
+    """The URLs not under ``base`` (``data:`` URLs and the page's own ``blob:`` URLs — the glTF loader's embedded
+    images — which travel nowhere, count as inside)."""
+    inside = (base + "/", "data:", f"blob:{base}/")
+    return [u for u in urls if not (u.startswith(inside) or (local is not None and local(u)))]
