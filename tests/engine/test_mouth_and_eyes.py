@@ -11,7 +11,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import engine
 from engine.outputs.camera import VIEW_ANGLE, VIEWS, camera_pose, framed_points
 from engine.outputs.part_layout import PartLayout
 from engine.outputs.render import render_model
@@ -21,11 +20,6 @@ SIZE = (400, 500)
 DARK_LUMA = 70              # a pixel of the cavity: Rec. 601 luma below this
 BRIGHT_LUMA, GREY_SPREAD = 140, 45   # a pixel of a tooth: light and nearly grey
 MIN_DARK, MIN_BRIGHT = 0.45, 0.10    # fractions of the lip opening
-
-
-@pytest.fixture(scope="module")
-def head():
-    return engine.load_model()
 
 
 def phone_values(phone: str) -> dict[str, float]:

@@ -10,7 +10,6 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from engine.formats.model_files import load_model
 from engine.outputs.render import render_model
 from engine.photofit import fit_photos
 from engine.photofit.face_points import point_vertices
@@ -20,11 +19,6 @@ from engine.photofit.points import REQUIRED_FRONT
 from tests.engine.test_photofit import project
 
 SIZE = (450, 600)
-
-
-@pytest.fixture(scope="module")
-def head():
-    return load_model()
 
 
 @pytest.fixture(scope="module")

@@ -16,7 +16,6 @@ from collections import Counter
 import numpy as np
 import pytest
 
-from engine.formats.model_files import load_model
 from engine.outputs.render import render_model
 from engine.photofit import FitStopped, fit_photos
 from engine.photofit.face_points import point_vertices
@@ -26,11 +25,6 @@ from engine.photofit.raster import rasterize
 from tests.engine.test_photofit import project
 
 SIZE = (450, 600)
-
-
-@pytest.fixture(scope="module")
-def head():
-    return load_model()
 
 
 @pytest.fixture(scope="module")
