@@ -44,6 +44,7 @@ from engine.outputs.occlusion import model_occlusion
 from engine.outputs.part_layout import PartLayout
 from engine.outputs.part_materials import colour_rgb, eye_colours, hex_rgb, is_eyeball, part_material
 from engine.outputs.png_file import write_png
+from engine.outputs.render_backend import describe
 
 if TYPE_CHECKING:
     from vtkmodules.vtkCommonCore import vtkDataArray
@@ -180,6 +181,14 @@ class FrameRenderer:
         if self._fxaa:
             return fxaa(image[::-1, :, :3])
         return np.ascontiguousarray(image[::-1, :, :3])
+
+    def backend(self) -> dict[str, str]:
+        """Which OpenGL draws these frames (:func:`engine.outputs.render_backend.describe`):
+        ``kind`` is e.g. ``software (Mesa llvmpipe)`` or ``GPU (…)``."""
+        if self._window is None:
+            raise RuntimeError("this FrameRenderer is closed")
+        self._window.Render()
+        return describe(self._window)
 
     # -- lifetime ------------------------------------------------------------
     def close(self) -> None:
