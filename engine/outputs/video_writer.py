@@ -221,7 +221,8 @@ def check_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
 
 
 def encode_video(request: VideoRequest, destination: str | Path, progress: Progress | None = None,
-                 antialias: bool | None = None) -> VideoStats:
+                 antialias: bool | None = None,
+                 on_frame: Callable[[int, np.ndarray], None] | None = None) -> VideoStats:
     """Render and encode ``request`` into ``destination`` as it is: no temporary file, no rename.
 
     For writers that make the file atomic themselves (as :func:`write_video`
@@ -229,7 +230,8 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
     :func:`engine.formats.atomic.atomic_files`): ``destination`` is their
     temporary file; errors name ``request.path``. ``progress`` and
     ``antialias`` as in :func:`write_video`. If anything goes wrong (Ctrl-C
-    included), ffmpeg is stopped before the exception leaves.
+    included), ffmpeg is stopped before the exception leaves. ``on_frame(n, image)``, when given, sees
+    every frame's picture as drawn (height × width × 3), so a caller needing one picture draws it no more.
     """
     started = time.perf_counter()
     ffmpeg = find_tool("ffmpeg")
@@ -278,6 +280,8 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                         t1 = time.perf_counter()
                         image = renderer.render(positions)
                     t2 = time.perf_counter()
+                    if on_frame is not None:
+                        on_frame(n, image)
                     if not writer.put(image):
                         break                               # ffmpeg stopped taking frames: report below
                     t3 = time.perf_counter()
