@@ -8,7 +8,7 @@
   core, engine/stimuli/cores.py), and one- and two-worker Dask clusters of
   local processes (127.0.0.1), and the speed-up of two over one.
 
-    .venv/bin/python benchmarks/bench_stimuli.py [--clips 40] [--json out.json]
+    .venv/bin/python benchmarks/bench_stimuli.py [--clips 40] [--size 1280x720] [--local-only] [--json out.json]
 """
 
 from __future__ import annotations
@@ -46,10 +46,10 @@ def one_sentence(folder: Path) -> dict[str, float]:
     return {"audio_s": audio_s, "total_s": total_s, "rtf": total_s / audio_s, "festival_rtf": festival_s / audio_s}
 
 
-def clip_set(folder: Path, clips: int, workers: int, scheduler: str | None = None) -> float:
+def clip_set(folder: Path, clips: int, workers: int, scheduler: str | None = None, size: str = "320x240") -> float:
     texts = (SENTENCES * (clips // len(SENTENCES) + 1))[:clips]
     levels = ", ".join(json.dumps(t + " " * i) for i, t in enumerate(texts))   # distinct levels
-    design = parse_design(f'[factors]\ntext = [{levels}]\n[output]\nkinds = ["mp4"]\nsize = "320x240"\nfps = 30\n',
+    design = parse_design(f'[factors]\ntext = [{levels}]\n[output]\nkinds = ["mp4"]\nsize = "{size}"\nfps = 30\n',
                           folder / "set.toml")
     out = folder / f"set-{workers}-{'dask' if scheduler else 'local'}"
     started = time.perf_counter()
@@ -61,15 +61,24 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--clips", type=int, default=40)
     parser.add_argument("--json", type=Path)
+    parser.add_argument("--size", default="320x240", help="the set's WxH (issue 36: 1280x720)")
+    parser.add_argument("--local-only", action="store_true", help="only the set on 1 and 2 local workers")
     args = parser.parse_args(argv)
+    if args.local_only:
+        with tempfile.TemporaryDirectory() as name:
+            one = clip_set(Path(name), args.clips, 1, size=args.size)
+            two = clip_set(Path(name), args.clips, 2, size=args.size)
+        print(f"{args.clips} clips at {args.size}: 1 local worker {one:5.1f}, 2 local workers {two:5.1f} "
+              f"stimuli/min ({two / one:.2f}×)", flush=True)
+        return 0
     with tempfile.TemporaryDirectory() as name:
         folder = Path(name)
         single = one_sentence(folder)
         print(f"one sentence, {single['audio_s']:.1f} s of speech → MP4 320×240: real-time factor "
               f"{single['rtf']:.2f} (Festival alone, the floor: {single['festival_rtf']:.3f})", flush=True)
-        one = clip_set(folder, args.clips, 1)
+        one = clip_set(folder, args.clips, 1, size=args.size)
         print(f"{args.clips} clips, 1 local worker:  {one:5.1f} stimuli/min", flush=True)
-        two = clip_set(folder, args.clips, 2)
+        two = clip_set(folder, args.clips, 2, size=args.size)
         print(f"{args.clips} clips, 2 local workers: {two:5.1f} stimuli/min ({two / one:.2f}×)", flush=True)
         from distributed import LocalCluster
 
@@ -77,7 +86,7 @@ def main(argv: list[str] | None = None) -> int:
         for workers in (1, 2):
             with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
                               dashboard_address=None, silence_logs=50) as cluster:
-                dask[workers] = clip_set(folder, args.clips, workers, cluster.scheduler_address)
+                dask[workers] = clip_set(folder, args.clips, workers, cluster.scheduler_address, args.size)
         print(f"{args.clips} clips, 1 Dask worker:   {dask[1]:5.1f} stimuli/min", flush=True)
         print(f"{args.clips} clips, 2 Dask workers:  {dask[2]:5.1f} stimuli/min ({dask[2] / dask[1]:.2f}× one Dask "
               f"worker, {dask[2] / one:.2f}× one local worker)", flush=True)

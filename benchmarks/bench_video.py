@@ -32,7 +32,23 @@ they were made before looks). Anti-aliasing "on" is the look's own method:
 Real-time factor = wall-clock time / video length (below 1: faster than real
 time). The machine is shared: the load average and how much CPU two busy
 processes can get are printed with the figures, and CPU seconds per second
-of video (all processes) give the cost independent of the load.
+of video (all processes) give the cost independent of the load. The first
+line names the OpenGL that draws (``software (Mesa llvmpipe)`` or ``GPU (…)``,
+:mod:`engine.outputs.render_backend`).
+
+Issue 36 at 1280 × 720 and 1920 × 1080 (one run each, 2026-12-03, load 2.7–5.2,
+software (Mesa llvmpipe); CPU-s of all processes per video second; the table with
+the profile is in benchmarks/README.md):
+
+=========== ======== ============= ============ ============= ===============
+size        look     anti-aliasing render CPU  CPU-s/video-s encoder alone
+=========== ======== ============= ============ ============= ===============
+1280 × 720  legacy   off           73 ms/frame  2.86          0.94
+1280 × 720  legacy   8× MSAA       259 ms/frame 8.85          0.93
+1280 × 720  portrait off           98 ms/frame  4.20          0.99
+1280 × 720  portrait FXAA          141 ms/frame 5.12          1.05
+1920 × 1080 portrait FXAA          227 ms/frame 9.11          2.07
+=========== ======== ============= ============ ============= ===============
 """
 
 from __future__ import annotations
@@ -51,7 +67,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 import engine
-from engine.outputs import video_probe, video_writer
+from engine.outputs import render_backend, video_probe, video_writer
 from engine.outputs.render import FrameRenderer
 
 MOTION = {  # parameter: (centre, amplitude as a fraction of the half range, frequency Hz)
@@ -226,6 +242,7 @@ def main(argv=None) -> int:
     size = tuple(int(s) for s in args.size.lower().split("x"))
     modes = {"off": [False], "on": [True], "both": [False, True]}[args.antialias]
     results = []
+    print(f"OpenGL: {render_backend.probe()['kind']}", flush=True)     # software (Mesa llvmpipe) or GPU (…)
     with tempfile.TemporaryDirectory(prefix="bench-video-") as scratch:
         for look in args.looks.split(","):
             for antialias in modes:
