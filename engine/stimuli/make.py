@@ -117,15 +117,27 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     if still_ms is None:
         still_ms = (apex_ms + layout.video_start_ms) if apex_ms is not None else layout.video_start_ms + \
             0.5 * (speech.duration_ms)
+    # the still is the video's frame when that frame shows the very same values, drawn the same way
+    still_frame = min(count - 1, max(0, round(still_ms * fps / 1000.0)))
+    kept: dict[int, np.ndarray] = {}
+    reuse = ("png" in paths and drawn is not None and requests[drawn].antialias(None)
+             and np.array_equal(values[still_frame], timeline.sample([still_ms - layout.video_start_ms])[0]))
+
+    def keep_still(n: int, image: np.ndarray) -> None:
+        if n == still_frame:
+            kept[n] = np.array(image)
+
     with atomic_files(paths.values()) as temporary:
-        for kind, path in sorted(paths.items(), key=lambda item: item[0] == "silent-mp4"):   # after the mp4
+        for kind, path in sorted(paths.items(), key=lambda item: item[0] in ("silent-mp4", "png")):   # after the mp4
             destination = temporary[path]
             if kind in requests:
-                encode_video(requests[kind], destination)
+                encode_video(requests[kind], destination, on_frame=keep_still if reuse else None)
             elif kind == "silent-mp4":                   # the mp4, written just before, without its sound
                 copy_without_audio(temporary[paths["mp4"]], destination, path)
             elif kind == "wav":
                 destination.write_bytes(wav_bytes(audio, rate))
+            elif kind == "png" and still_frame in kept:
+                write_png(destination, kept[still_frame])
             elif kind == "png":
                 _still(model, timeline, still_ms - layout.video_start_ms, design, destination)
             elif kind == "phones":
@@ -139,7 +151,8 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
                                   layout.audio_start_ms, float(levels["snr_db"]) if "snr_db" in levels else None,
                                   gain)
         frames = _decoded_frames(paths, count)
-        video_check = _check_video(paths, vertex_motion(model, values), fps, layout.video_start_ms, frames)
+        video_check = (_check_video(paths, vertex_motion(model, values), fps, layout.video_start_ms, frames)
+                       if drawn is not None and count >= 25 else {})    # no video to check: no motion to deform
         check = audio_check.result()
     check.update(video_check)
     if check.get("video_ok") is False:
