@@ -119,7 +119,11 @@ def _scalp(kind: str, vertices: np.ndarray, regions: HairRegions, surface: SkinS
 def _beard(kind: str, vertices: np.ndarray, regions: HairRegions, surface: SkinSurface,
            rng: np.random.Generator) -> HairPiece:
     if kind == "stubble":
-        return shell(vertices, regions, np.minimum(regions.beard, 1.0), 0.35, surface, least=0.3, shade=-1.0)
+        stubble = shell(vertices, regions, regions.beard, 0.35, surface, least=0.3)
+        dense = np.zeros(len(vertices))
+        dense[regions.skin] = regions.beard
+        stubble.shade = -np.einsum("mk,mk->m", stubble.anchors.bary, dense[stubble.anchors.corners])
+        return stubble
     strength = regions.moustache if kind == "moustache" else regions.beard
     thickness = 2.2 if kind == "moustache" else 5.0
     body = shell(vertices, regions, strength, thickness, surface, shade=0.6)
@@ -171,7 +175,8 @@ def strand_colours(piece: HairPiece, colour: str, seed: int, skin_rgb: np.ndarra
     out = own[piece.strand] * (1.0 - depth * (1.0 - np.abs(piece.shade)))[:, None]
     stubble = piece.shade < 0
     if stubble.any():
-        out[stubble] = 0.55 * skin_rgb[stubble] + 0.45 * rgb * 0.8
+        k = 0.5 * -piece.shade[stubble, None]                  # thinning out at the beard's edge
+        out[stubble] = (1 - k) * skin_rgb[stubble] + k * rgb * 0.8
     return np.clip(np.rint(out), 0, 255).astype(np.uint8)
 
 
@@ -196,6 +201,7 @@ def add_hair(model: Model, choice: HairChoice) -> Model:
     parts = list(base.parts)
     colours = [base.vertex_colors if base.vertex_colors is not None else _part_rgb(base)]
     anchors_all = []
+    skin_colours = skin_vertex_colours(base)
     n = base.n_vertices
     for name, piece in pieces.items():
         parts.append(name)
@@ -204,7 +210,7 @@ def add_hair(model: Model, choice: HairChoice) -> Model:
         tri = piece.triangles + n
         faces.append(np.column_stack([np.full(len(tri), 3), tri]).ravel())
         vertex_part.append(np.full(len(points), len(parts) - 1))
-        skin_rgb = np.einsum("mk,mkd->md", piece.anchors.bary, colours[0][piece.anchors.corners].astype(float))
+        skin_rgb = np.einsum("mk,mkd->md", piece.anchors.bary, skin_colours[piece.anchors.corners])
         colours.append(strand_colours(piece, choice.colour, choice.seed + len(parts), skin_rgb))
         anchors_all.append(piece.anchors)
         n += len(points)
@@ -262,6 +268,31 @@ def without_hair(model: Model) -> Model:
                 {k: v for k, v in model.part_colors.items() if k in parts},
                 None if model.vertex_colors is None else model.vertex_colors[:keep], texture)
     out.identity = model.identity
+    return out
+
+
+def skin_vertex_colours(model: Model) -> np.ndarray:
+    """(n, 3) sRGB floats of the skin at every vertex: its texture's colour there where the skin is textured
+    (the person's own skin, engine.identity.skin), else the vertex colour."""
+    out = (model.vertex_colors if model.vertex_colors is not None else _part_rgb(model)).astype(float)
+    texture = model.texture
+    if texture is None or not texture.images or not (texture.face_image >= 0).any():
+        return out
+    from engine.model.cells import cell_sizes, index_mask
+
+    sizes = cell_sizes(model.faces)
+    corner_vertex = model.faces[index_mask(model.faces, sizes)]
+    corner_image = np.repeat(texture.face_image, sizes)
+    for image_index, image in enumerate(texture.images):
+        pick = corner_image == image_index
+        if not pick.any():
+            continue
+        vertex, first = np.unique(corner_vertex[pick], return_index=True)
+        uv = texture.corner_uv[pick][first] % 1.0
+        h, w = image.pixels.shape[:2]
+        col = np.clip((uv[:, 0] * w).astype(int), 0, w - 1)
+        row = np.clip(((1.0 - uv[:, 1]) * h).astype(int), 0, h - 1)
+        out[vertex] = image.pixels[row, col, :3]
     return out
 
 

@@ -18,14 +18,15 @@ True
 from __future__ import annotations
 
 import hashlib
+from typing import Any
 
 import numpy as np
 
 from engine.formats.hair_element import BEARDS, BROWS, COLOURS, PIGMENTS, SEED, STYLES, HairChoice
 from engine.model.identity_record import IdentityRecord
 
-__all__ = ["BEARDS", "BROWS", "COLOURS", "PIGMENTS", "SEED", "STYLES", "HairChoice", "colour_for", "grey_share",
-           "hair_of"]
+__all__ = ["BEARDS", "BROWS", "COLOURS", "HAIR_KEYS", "PIGMENTS", "SEED", "STYLES", "HairChoice", "colour_for",
+           "grey_share", "hair_from_level", "hair_of", "without_hair_keys"]
 
 
 def grey_share(age: float) -> float:
@@ -60,3 +61,24 @@ def hair_of(record: IdentityRecord | None) -> HairChoice | None:
     """The hair an identity record carries (``record.hair``), if any."""
     hair = getattr(record, "hair", None)
     return hair if isinstance(hair, HairChoice) else None
+
+
+#: The keys of a stimulus design's identity table that choose hair, not the shape (docs/stimuli.md).
+HAIR_KEYS = {"hair": "style", "hair_colour": "colour", "hair_color": "colour", "beard": "beard", "brows": "brows"}
+
+
+def hair_from_level(level: object) -> HairChoice | None:
+    """The hair an identity level of a design asks for (``{sex = 1, hair = "short", beard = "stubble"}``), if any.
+
+    >>> hair_from_level({"sex": 1, "hair": "long", "hair_colour": "red"}).describe()
+    'long red hair, no beard, medium brows'
+    """
+    if not isinstance(level, dict) or not any(k in level for k in HAIR_KEYS):
+        return None
+    asked = {HAIR_KEYS[k]: str(v) for k, v in level.items() if k in HAIR_KEYS}
+    return HairChoice.parse(**asked)
+
+
+def without_hair_keys(level: dict[str, Any]) -> dict[str, Any]:
+    """An identity table with its hair keys taken out (what :class:`~engine.identity.Identity` is made from)."""
+    return {k: v for k, v in level.items() if k not in HAIR_KEYS}

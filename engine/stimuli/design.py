@@ -317,10 +317,14 @@ def _level(name: str, value: Any, where: Locator, folder: Path) -> Any:
             need((folder / value).is_file(), f"no such model file ({folder / value})")
         else:
             from engine.identity import Identity, IdentityError
+            from engine.identity.hair_style import hair_from_level, without_hair_keys
 
             try:
-                Identity(value)
+                Identity(without_hair_keys(value))
+                hair_from_level(value)                 # hair = "short", beard = "stubble" … (docs/hair.md)
             except IdentityError as exc:
+                need(False, exc.message)
+            except UserError as exc:
                 need(False, exc.message)
     elif name in RANGES:
         need(_in_range(name, value), RANGES[name][2])

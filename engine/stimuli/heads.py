@@ -17,11 +17,14 @@ from __future__ import annotations
 
 import functools
 import json
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from engine.formats.model_files import load_model
 from engine.model.model import Model
 from engine.stimuli.design import Design
+
+if TYPE_CHECKING:
+    from engine.identity.hair_style import HairChoice
 
 #: The factors that choose a stimulus's head.
 HEAD_FACTORS = ("model", "identity", "identity_b", "identity_morph")
@@ -35,7 +38,9 @@ def stimulus_head(design: Design, levels: dict[str, Any]) -> Model:
         return _model(base)
     ends = [_identity_values(design, levels.get(key, {})) for key in ("identity", "identity_b")]
     share = float(levels.get("identity_morph", 0.0)) / 100.0
-    return _identity_head(base, ends[0], ends[1], share)
+    from engine.identity.hair_style import hair_from_level
+
+    return _identity_head(base, ends[0], ends[1], share, hair_from_level(levels.get("identity")))
 
 
 def head_key(levels: dict[str, Any]) -> str:
@@ -52,17 +57,19 @@ def _identity_values(design: Design, level: Any) -> tuple[tuple[str, float], ...
     if isinstance(level, str):
         record = _model(str(design.extra_files[level])).identity
         return tuple(sorted(record.values.items())) if record is not None else ()
-    return tuple(sorted((str(k), float(v)) for k, v in dict(level).items()))
+    from engine.identity.hair_style import without_hair_keys
+
+    return tuple(sorted((str(k), float(v)) for k, v in without_hair_keys(dict(level)).items()))
 
 
 @functools.lru_cache(maxsize=16)
 def _identity_head(base: str, a: tuple[tuple[str, float], ...], b: tuple[tuple[str, float], ...],
-                   share: float) -> Model:
+                   share: float, hair: HairChoice | None = None) -> Model:
     """An identity's head per worker process, made once (engine.identity: the rig carried over)."""
     from engine.identity import Identity, make_identity_head, morph
 
     identity = morph(Identity(dict(a)), Identity(dict(b)), share) if b or share else Identity(dict(a))
-    return make_identity_head(identity, _model(base) if base else None)
+    return make_identity_head(identity, _model(base) if base else None, hair=hair)
 
 
 @functools.lru_cache(maxsize=8)

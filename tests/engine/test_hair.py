@@ -141,3 +141,20 @@ def test_the_identity_verb_grows_hair_and_refuses_a_bad_name(tmp_path):
     assert not {"hair", "eyebrow_left"} & set(load_model(tmp_path / "bald.xml").parts)
     message = assert_user_error(run("identity", "--beard", "goatee", "-o", tmp_path / "x.xml"))
     assert "goatee" in message and "stubble, moustache, beard" in message
+
+
+def test_a_stimulus_design_asks_for_hair_in_its_identity_table(tmp_path):
+    from engine.errors import UserError
+    from engine.stimuli.design import parse_design
+    from engine.stimuli.heads import stimulus_head
+
+    text = ('[factors]\ntext = ["Moi."]\nidentity = [{sex = 1.0, age = 60, hair = "short", beard = "stubble"},'
+            ' {sex = 1.0, age = 60}]\n[output]\nkinds = ["png"]\n')
+    design = parse_design(text, tmp_path / "d.toml")
+    haired, bald = (stimulus_head(design, s.levels) for s in design.stimuli)
+    assert {"hair", "hair_beard", "eyebrow_left"} <= set(haired.parts)
+    assert "hair" not in bald.parts                         # no hair keys: the head as before
+    assert haired.identity.value("age") == 60 and hair_of(haired.identity).beard == "stubble"
+    with pytest.raises(UserError) as bad:
+        parse_design(text.replace('"short"', '"mullet"'), tmp_path / "d.toml")
+    assert "d.toml:3" in str(bad.value) and "mullet" in str(bad.value)
