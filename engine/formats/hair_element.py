@@ -4,7 +4,7 @@
 hair a head was given (:mod:`engine.identity.hair`): the scalp ``style`` (``none`` is bald),
 the ``beard``, the ``brows``' thickness, the hair ``colour`` (brows and beard share it) and the
 ``seed`` of the strands' layout. The geometry itself is in the arrays file, as the parts
-``eyebrow_left``, ``eyebrow_right``, ``hair`` and ``hair_beard``; the element says what they are,
+``eyebrow_left``, ``eyebrow_right``, ``hair``, ``hair_beard`` or ``beard_stubble``; the element says what they are,
 so a head can be made again. A name this program does not know is refused with the file and line.
 
 >>> HairChoice.parse(style="short", colour="brown", beard="stubble", brows="thick").describe()

@@ -10,7 +10,8 @@ parts:
 * ``hair`` — the scalp: ``short`` (cropped, combed from the crown),
   ``long`` (parted, falling past the ears to the jaw), ``tied`` (combed
   back into a knot); ``none`` is bald;
-* ``hair_beard`` — ``stubble``, a ``moustache`` or a full ``beard``.
+* ``hair_beard`` — a ``moustache`` or a full ``beard``; ``beard_stubble`` — ``stubble``, the skin
+  under it darkened (shaded as skin, being skin more than hair).
 
 The hair is grown on the default head (:mod:`engine.identity.hair_geometry`)
 and held by its skin (:mod:`engine.identity.hair_surface`): on an identity it
@@ -45,7 +46,7 @@ from engine.model import Model
 from engine.model.identity_record import IdentityRecord
 from engine.model.texture import ModelTexture
 
-HAIR_PARTS = ("eyebrow_left", "eyebrow_right", "hair", "hair_beard")
+HAIR_PARTS = ("eyebrow_left", "eyebrow_right", "hair", "hair_beard", "beard_stubble")
 #: Hairs per brow and the band's half-widths (inner, top, outer; mm) for each brow thickness.
 BROW_HAIRS = {"thin": (160, (2.6, 2.0, 1.1)), "medium": (260, (3.6, 2.9, 1.6)), "thick": (380, (4.6, 3.7, 2.1))}
 CROWN = np.array([0.0, 248.0, 10.0])          # short hair is combed out from here (default head, mm)
@@ -155,7 +156,9 @@ def pieces_for(choice: HairChoice) -> dict[str, HairPiece]:
             out[part] = grown(part, choice.brows, choice.seed)
     if choice.style != "none":
         out["hair"] = grown("hair", choice.style, choice.seed)
-    if choice.beard != "none":
+    if choice.beard == "stubble":                  # shaded as skin (the material of a part named beard…)
+        out["beard_stubble"] = grown("beard_stubble", choice.beard, choice.seed)
+    elif choice.beard != "none":
         out["hair_beard"] = grown("hair_beard", choice.beard, choice.seed)
     return out
 

@@ -152,7 +152,7 @@ def test_a_stimulus_design_asks_for_hair_in_its_identity_table(tmp_path):
             ' {sex = 1.0, age = 60}]\n[output]\nkinds = ["png"]\n')
     design = parse_design(text, tmp_path / "d.toml")
     haired, bald = (stimulus_head(design, s.levels) for s in design.stimuli)
-    assert {"hair", "hair_beard", "eyebrow_left"} <= set(haired.parts)
+    assert {"hair", "beard_stubble", "eyebrow_left"} <= set(haired.parts)
     assert "hair" not in bald.parts                         # no hair keys: the head as before
     assert haired.identity.value("age") == 60 and hair_of(haired.identity).beard == "stubble"
     with pytest.raises(UserError) as bad:
