@@ -26,9 +26,6 @@ their colours :mod:`engine.outputs.part_materials` and the PNG writer
 from __future__ import annotations
 
 import contextlib
-import ctypes.util
-import os
-import sys
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, SupportsInt
@@ -44,7 +41,7 @@ from engine.outputs.occlusion import model_occlusion
 from engine.outputs.part_layout import PartLayout
 from engine.outputs.part_materials import colour_rgb, eye_colours, hex_rgb, is_eyeball, part_material
 from engine.outputs.png_file import write_png
-from engine.outputs.render_backend import describe
+from engine.outputs.render_backend import choose_offscreen_backend, describe
 
 if TYPE_CHECKING:
     from vtkmodules.vtkCommonCore import vtkDataArray
@@ -148,7 +145,7 @@ class FrameRenderer:
         self._layout = PartLayout(model)
         self._window: vtkRenderWindow | None = None
         self._meshes: list[_MeshArrays] = []
-        _choose_offscreen_backend()
+        choose_offscreen_backend()
         from vtkmodules.util.numpy_support import vtk_to_numpy
         from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
 
@@ -425,16 +422,6 @@ def vtk_texture(pixels: np.ndarray, largest: int) -> Any:
     texture.RepeatOn()
     texture.SetColorModeToDirectScalars()
     return texture
-
-
-def _choose_offscreen_backend() -> None:
-    """Without a display, ask VTK for EGL (or OSMesa) instead of letting it fail on X first."""
-    if not sys.platform.startswith("linux") or os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"):
-        return
-    if ctypes.util.find_library("EGL"):
-        os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
-    elif ctypes.util.find_library("OSMesa"):
-        os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkOSOpenGLRenderWindow")
 
 
 # A three-point set-up in camera space (camera at +Z looking at the origin, +Y up):

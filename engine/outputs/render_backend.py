@@ -18,7 +18,10 @@ and version strings from an open VTK render window and says in words what kind i
 
 from __future__ import annotations
 
+import ctypes.util
 import glob
+import os
+import sys
 from typing import Any
 
 __all__ = ["classify", "describe", "gpu_render_nodes", "is_software", "probe"]
@@ -26,6 +29,16 @@ __all__ = ["classify", "describe", "gpu_render_nodes", "is_software", "probe"]
 _SOFTWARE = (("llvmpipe", "software (Mesa llvmpipe)"), ("softpipe", "software (Mesa softpipe)"),
              ("swrast", "software (Mesa swrast)"), ("offscreen", "software (OSMesa)"),
              ("swiftshader", "software (SwiftShader)"), ("software", "software"))
+
+
+def choose_offscreen_backend() -> None:
+    """Without a display, ask VTK for EGL (or OSMesa) instead of letting it fail on X first."""
+    if not sys.platform.startswith("linux") or os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"):
+        return
+    if ctypes.util.find_library("EGL"):
+        os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow")
+    elif ctypes.util.find_library("OSMesa"):
+        os.environ.setdefault("VTK_DEFAULT_OPENGL_WINDOW", "vtkOSOpenGLRenderWindow")
 
 
 def gpu_render_nodes(pattern: str = "/dev/dri/renderD*") -> list[str]:
@@ -63,9 +76,8 @@ def describe(window: Any) -> dict[str, str]:
 def probe() -> dict[str, str]:
     """:func:`describe` of a tiny offscreen VTK window opened the way every renderer here opens
     one (EGL or OSMesa without a display, as :mod:`engine.outputs.render` chooses)."""
-    from engine.outputs.render import _choose_offscreen_backend
 
-    _choose_offscreen_backend()
+    choose_offscreen_backend()
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL window classes)
     from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow
 
