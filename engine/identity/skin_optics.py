@@ -24,7 +24,7 @@ perfect white reflector gives (1, 1, 1).
 >>> import numpy as np
 >>> light, dark = skin_albedo(np.array([0.03, 0.35]), np.array([0.02, 0.02]))
 >>> bool(light.sum() > 2 * dark.sum()), bool(light[0] > light[1] > light[2])
-True, True
+(True, True)
 """
 
 from __future__ import annotations
