@@ -97,9 +97,14 @@ def beyond_identity(model: engine.Model, base: engine.Model | None = None) -> st
     """What a head has that its identity alone (made from ``base``, default: the default head) does not make
     (a photograph's shape or texture), or ``None``."""
     from engine.identity import identity_vertices
+    from engine.identity.skin import SKIN_IMAGE
 
-    images = model.texture is not None and len(model.texture.images) > 0 and not (
-        base is not None and base.texture is not None and len(base.texture.images) > 0)
+    def photographs(head: engine.Model | None) -> bool:
+        # the skin an identity paints for itself (engine.identity.skin) is made again with the new identity
+        return head is not None and head.texture is not None and any(
+            image.name != SKIN_IMAGE for image in head.texture.images)
+
+    images = photographs(model) and not photographs(base)
     skin = model.vertex_part == model.parts.index("skin") if "skin" in model.parts else np.ones(model.n_vertices, bool)
     try:
         shape = identity_vertices(identity_of(model), base)

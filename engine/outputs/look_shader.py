@@ -40,7 +40,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:
     from engine.outputs.looks import Look
 
-__all__ = ["SHADING", "UNIFORMS", "look_uniforms", "material_uniforms", "shading_source"]
+__all__ = ["SHADING", "UNIFORMS", "look_uniforms", "material_uniforms", "shading_source", "web_shading_source"]
 
 LIGHTS = 4
 
@@ -151,8 +151,10 @@ vec3 lookShade(vec3 albedo, vec3 N, vec3 V, float occlusion) {
 #: the skin image darkens by a quarter is 0.2 mm deep).
 DETAIL_MM = 0.7
 #: Where VTK's fragment shader keeps the fragment's position in the camera's frame (declared before the
-#: look's shading is put in); the web player does not define ``LOOK_VIEW_POSITION``, so draws no relief.
+#: look's shading is put in).
 VTK_VIEW_POSITION = "vertexVCVSOutput.xyz"
+#: Where three.js keeps it, negated (``vViewPosition``, declared before the web player puts the shading in).
+WEB_VIEW_POSITION = "(-vViewPosition)"
 
 
 def shading_source(look: Look) -> str:
@@ -160,6 +162,17 @@ def shading_source(look: Look) -> str:
     the skin's relief (``LOOK_VIEW_POSITION``: VTK's fragment position)."""
     return (f"#define LOOK_LIGHTS {len(look.lights)}\n#define LOOK_VIEW_POSITION {VTK_VIEW_POSITION}\n"
             f"#define LOOK_DETAIL_MM {DETAIL_MM:.6f}\n{SHADING}")
+
+
+def web_shading_source() -> str:
+    """:data:`UNIFORMS` and :data:`SHADING` as the web player compiles them: with the skin's relief from
+    three.js's fragment position, in metres as the glTF is (the player defines ``LOOK_LIGHTS`` itself).
+
+    >>> "#define LOOK_VIEW_POSITION (-vViewPosition)" in web_shading_source()
+    True
+    """
+    return (f"#define LOOK_VIEW_POSITION {WEB_VIEW_POSITION}\n#define LOOK_DETAIL_MM {DETAIL_MM / 1000:.9f}\n"
+            f"{UNIFORMS}{SHADING}")
 
 
 def look_uniforms(look: Look) -> dict[str, float | list[float]]:

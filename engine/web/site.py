@@ -33,7 +33,7 @@ from engine.errors import UserError
 from engine.formats.atomic import atomic_files, finish_interrupted_writes
 from engine.outputs.camera import VIEW_ANGLE, VIEWS, camera_pose, framed_points
 from engine.outputs.gltf_skeleton import skeleton_parameters
-from engine.outputs.look_shader import DETAIL_MM, SHADING, UNIFORMS
+from engine.outputs.look_shader import web_shading_source
 from engine.outputs.looks import Look, look_from
 from engine.speech.synthesis import Segment
 from engine.web.animation import animation_document
@@ -177,10 +177,7 @@ def write_folder(out: Path, glb: bytes, files: dict[str, bytes], first_animation
     link in place of a file is replaced, not followed; a folder of the site that is a link is refused."""
     out.mkdir(parents=True, exist_ok=True)
     page = _player_file("index.html").replace("{{ANIMATION}}", first_animation)
-    # the skin's relief as in the engine's render: three.js keeps the fragment's camera-frame position, negated,
-    # in vViewPosition (declared before the player puts the look's shading in), in metres as the glTF is
-    relief = f"#define LOOK_VIEW_POSITION (-vViewPosition)\n#define LOOK_DETAIL_MM {DETAIL_MM / 1000:.9f}\n"
-    player = bundle_text().replace(SHADER_MARK, json.dumps(relief + UNIFORMS + SHADING))
+    player = bundle_text().replace(SHADER_MARK, json.dumps(web_shading_source()))   # the skin's relief as rendered
     contents = {"index.html": page.encode("utf-8"), "player.js": player.encode("utf-8"),
                 "three-LICENSE.txt": licence_text().encode("utf-8"), "head.glb": glb, **files}
     targets = {name: _site_path(out, name) for name in contents}

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from engine.outputs.look_shader import SHADING, UNIFORMS
+from engine.outputs.look_shader import SHADING, UNIFORMS, web_shading_source
 from engine.outputs.looks import LOOKS
 from engine.outputs.occlusion import model_occlusion
 from engine.outputs.render import render_model
@@ -84,7 +84,8 @@ def test_the_site_carries_the_look(head, tmp_path):
     assert animation["background"] == {"bottom": "#c8c8c8", "top": "#c8c8c8"} and "lights" not in animation
     assert look["uniforms"]["lookSky"] == list(LOOKS["flat"].sky)
     assert set(look["materials"]) == set(head.parts)
-    assert json.dumps(UNIFORMS + SHADING) in (folder / "player.js").read_text()      # the engine's own GLSL
+    assert json.dumps(web_shading_source()) in (folder / "player.js").read_text()      # the engine's own GLSL
+    assert web_shading_source().endswith(UNIFORMS + SHADING)                          # with the relief's defines
     glb = (folder / "head.glb").read_bytes()
     length = int.from_bytes(glb[12:16], "little")
     document = json.loads(glb[20:20 + length])
