@@ -24,6 +24,7 @@ from engine.cli.common import (
     require_suffix,
     size,
 )
+from engine.cli.render_info import RenderInfoAction
 from engine.model import Model
 from engine.model.landmarks import landmark_sort_key
 
@@ -48,6 +49,7 @@ def add_verbs(verbs: Any) -> None:
                    help="lighting and shading: portrait (default), flat, legacy, or a JSON file of a look's "
                         "settings (docs/looks.md)")
     p.add_argument("-o", "--output", required=True, metavar="OUT.png", help="picture to write")
+    p.add_argument("--info", action=RenderInfoAction, help="print which OpenGL draws here (GPU or software) and end")
     p.set_defaults(run=run_render)
 
     p = verbs.add_parser("pose", help="write the deformed mesh (same vertex order as the model)")

@@ -62,15 +62,23 @@ def is_software(kind: str) -> bool:
 
 def describe(window: Any) -> dict[str, str]:
     """The backend of an open (already rendered once) VTK render window: its class, the OpenGL
-    vendor/renderer/version strings and :func:`classify`'s kind."""
+    vendor/renderer/version strings, :func:`classify`'s kind, VTK's version, the GPU render nodes
+    seen and, for llvmpipe, its thread count (``LP_NUM_THREADS``: ``render --info`` prints them all,
+    a stimulus set's ``provenance.json`` records them as ``"render_backend"``)."""
     strings = {"vendor": "", "renderer": "", "version": ""}
     for line in str(window.ReportCapabilities()).splitlines():
         for key in strings:
             prefix = f"OpenGL {key} string:"
             if line.startswith(prefix):
                 strings[key] = line[len(prefix):].strip()
-    return {"window": type(window).__name__, **strings, "kind": classify(strings["renderer"]),
-            "gpu_render_nodes": ", ".join(gpu_render_nodes()) or "none"}
+    from vtkmodules.vtkCommonCore import vtkVersion
+
+    kind = classify(strings["renderer"])
+    report = {"window": type(window).__name__, **strings, "kind": kind, "vtk": vtkVersion.GetVTKVersion(),
+              "gpu_render_nodes": ", ".join(gpu_render_nodes()) or "none"}
+    if "llvmpipe" in kind:
+        report["llvmpipe_threads"] = os.environ.get("LP_NUM_THREADS") or "one per core the process may use"
+    return report
 
 
 def probe() -> dict[str, str]:

@@ -13,7 +13,11 @@
   whether they meet the design.
 * ``provenance.json``: the toolkit's version and git commit, the hashes of
   the design, model, noise and library files, Festival's version and voices,
-  the numeric libraries' versions, the seed.
+  the numeric libraries' versions, the seed, and which OpenGL drew the pictures
+  (``render_backend``: GPU or Mesa's software rasteriser,
+  :func:`engine.outputs.render_backend.probe`). Its ``format_version`` is
+  :data:`PROVENANCE_VERSION`; files written before it had one are version 1
+  (no ``render_backend``), and :func:`read_provenance` reads both.
 """
 
 from __future__ import annotations
@@ -31,6 +35,7 @@ from typing import Any
 
 import numpy as np
 
+from engine.errors import UserError
 from engine.formats.atomic import atomic_files
 from engine.outputs.png_file import png_bytes
 from engine.paths import LIBRARY_DIR
@@ -43,6 +48,9 @@ MANIFEST = "manifest.csv"
 CONDITIONS = "conditions.csv"
 CHECKS = "check.csv"
 PROVENANCE = "provenance.json"
+#: 2: ``format_version`` and ``render_backend`` added; 1: the files before (no ``format_version``).
+PROVENANCE_VERSION = 2
+DRAWN_KINDS = frozenset({"mp4", "silent-mp4", "png"})
 CONTACT_SHEET = "contact-sheet.png"
 SHEET_COLUMNS = 8
 SHEET_LIMIT = 400
@@ -172,6 +180,7 @@ def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
         except importlib.metadata.PackageNotFoundError:
             libraries[name] = None
     made = {
+        "format_version": PROVENANCE_VERSION,
         "toolkit": {"version": _toolkit_version(), "git_commit": _git_commit()},
         "design": {"file": design.path.name, "sha256": design.sha256, "seed": design.seed,
                    "stimuli": len(records)},
@@ -182,6 +191,7 @@ def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
         "python": sys.version.split()[0], "platform": platform.platform(), "libraries": libraries,
         "look": design.output.look.settings(), "look_methods": look_methods(),
         "encoding": design.output.encoding.settings(),
+        "render_backend": _render_backend() if DRAWN_KINDS & set(design.output.kinds) else None,
     }
     if design.output.validate:
         from dataclasses import asdict
@@ -191,6 +201,37 @@ def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
         made["validation"] = {"observers": [asdict(m) for m in model_facts()],
                               "emotion_model_sha256": EMOTION_MODEL_SHA256}
     return made
+
+
+def read_provenance(path: str | Path) -> dict[str, Any]:
+    """A set's ``provenance.json`` as a dict whose ``format_version`` and ``render_backend`` are always
+    there (1 and ``None`` for a file written before they were), or a :class:`UserError` naming the file."""
+    path = Path(path)
+    try:
+        made = json.loads(path.read_text(encoding="utf-8"))
+    except OSError as exc:
+        raise UserError(f"cannot read the set's provenance: {exc.strerror or exc}", file=path) from None
+    except (UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise UserError(f"the set's provenance is not JSON ({exc})", file=path) from None
+    if not isinstance(made, dict):
+        raise UserError("the set's provenance must be a JSON object", file=path)
+    version = made.get("format_version", 1)
+    if isinstance(version, bool) or not isinstance(version, int) or version < 1:
+        raise UserError(f"format_version must be a whole number from 1, not {version!r}", file=path)
+    if version > PROVENANCE_VERSION:
+        raise UserError(f"format_version {version} is newer than this toolkit reads ({PROVENANCE_VERSION}): "
+                        "update the toolkit", file=path)
+    backend = made.get("render_backend")
+    if backend is not None and not isinstance(backend, dict):
+        raise UserError("render_backend must be an object or null", file=path)
+    return {**made, "format_version": version, "render_backend": backend}
+
+
+def _render_backend() -> dict[str, str]:
+    """Which OpenGL draws here (the set's workers open theirs the same way), as ``render --info`` prints it."""
+    from engine.outputs.render_backend import probe
+
+    return probe()
 
 
 def look_methods() -> dict[str, Any]:
@@ -274,5 +315,5 @@ def _festival_version() -> str | None:
     return (done.stdout or done.stderr).strip().splitlines()[0] if (done.stdout or done.stderr).strip() else None
 
 
-__all__ = ["CHECKS", "CONDITIONS", "FIXED_FACTORS", "MANIFEST", "PROVENANCE", "level_text", "provenance",
-           "write_set_files"]
+__all__ = ["CHECKS", "CONDITIONS", "FIXED_FACTORS", "MANIFEST", "PROVENANCE", "PROVENANCE_VERSION", "level_text",
+           "provenance", "read_provenance", "write_set_files"]

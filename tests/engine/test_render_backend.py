@@ -97,3 +97,42 @@ def test_gpu_and_software_draw_the_same_picture_within_tolerance(tmp_path: Path)
     # tolerance: rasterisation rules and shader precision differ at edges, not in the surfaces
     assert difference.mean() <= 2.0, json.dumps({"mean": float(difference.mean())})
     assert np.percentile(difference.max(axis=2), 99) <= 32
+
+
+def test_render_info_prints_the_backend_and_ends_with_status_0() -> None:
+    from tests.engine.cli_in_process import run_in_process
+
+    done = run_in_process("render", "--info")
+    assert done.returncode == 0, done.stderr
+    lines = dict(line.split(": ", 1) for line in done.stdout.splitlines())
+    report = probe()
+    assert lines["backend"] == report["kind"]
+    assert lines["OpenGL renderer"] == report["renderer"] and lines["OpenGL version"] == report["version"]
+    assert lines["window"].startswith(report["window"]) and lines["VTK"] == report["vtk"]
+    assert lines["GPU render nodes"] == report["gpu_render_nodes"]
+
+
+def test_a_drawn_sets_provenance_names_its_backend_and_an_old_file_still_reads(tmp_path: Path) -> None:
+    from engine.errors import UserError
+    from engine.stimuli import parse_design
+    from engine.stimuli.manifest import PROVENANCE_VERSION, provenance, read_provenance
+
+    drawn = provenance(parse_design('[factors]\ntext = ["Aa."]\n', "d.toml"), [])
+    assert drawn["format_version"] == PROVENANCE_VERSION == 2
+    assert drawn["render_backend"]["kind"] == probe()["kind"] and drawn["render_backend"]["renderer"]
+    heard = provenance(parse_design('[output]\nkinds = ["wav"]\n[factors]\ntext = ["Aa."]\n', "d.toml"), [])
+    assert heard["render_backend"] is None                       # nothing drawn: no OpenGL to name
+    new = tmp_path / "new.json"
+    new.write_text(json.dumps(drawn))
+    assert read_provenance(new) == drawn
+    old = tmp_path / "old.json"                                  # written before format_version existed
+    old.write_text(json.dumps({k: v for k, v in drawn.items() if k not in ("format_version", "render_backend")}))
+    assert read_provenance(old)["format_version"] == 1 and read_provenance(old)["render_backend"] is None
+    newer = tmp_path / "newer.json"
+    newer.write_text(json.dumps({**drawn, "format_version": PROVENANCE_VERSION + 1}))
+    with pytest.raises(UserError, match="newer than this toolkit reads"):
+        read_provenance(newer)
+    broken = tmp_path / "broken.json"
+    broken.write_text("{")
+    with pytest.raises(UserError, match="not JSON"):
+        read_provenance(broken)
