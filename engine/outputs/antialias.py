@@ -52,25 +52,35 @@ def fxaa(image: np.ndarray) -> np.ndarray:
     out = np.array(image, dtype=np.uint8, copy=True)
     if height < 3 or width < 3:
         return out
-    green = np.ascontiguousarray(image[..., 1])               # luma: the green channel (FXAA's cheap variant)
-    edge = np.pad(green, 1, mode="edge")
+    edge = _padded_luma(out)
     centre = edge[1:-1, 1:-1]
-    brightest = np.maximum(np.maximum(edge[:-2, 1:-1], edge[2:, 1:-1]), np.maximum(edge[1:-1, :-2], edge[1:-1, 2:]))
-    darkest = np.minimum(np.minimum(edge[:-2, 1:-1], edge[2:, 1:-1]), np.minimum(edge[1:-1, :-2], edge[1:-1, 2:]))
+    n_, s_, w_, e_ = edge[:-2, 1:-1], edge[2:, 1:-1], edge[1:-1, :-2], edge[1:-1, 2:]
+    brightest = np.maximum(n_, s_)
+    np.maximum(brightest, w_, out=brightest)
+    np.maximum(brightest, e_, out=brightest)
     np.maximum(brightest, centre, out=brightest)
-    np.minimum(darkest, centre, out=darkest)
-    contrast = brightest - darkest                            # uint8: brightest >= darkest
-    floor = np.maximum(brightest >> 3, np.uint8(round(EDGE_THRESHOLD_MIN * 255)))   # EDGE_THRESHOLD = 1/8
-    where = np.flatnonzero(contrast >= floor)
+    contrast = np.minimum(n_, s_)
+    np.minimum(contrast, w_, out=contrast)
+    np.minimum(contrast, e_, out=contrast)
+    np.minimum(contrast, centre, out=contrast)
+    np.subtract(brightest, contrast, out=contrast)            # uint8: brightest >= darkest
+    np.right_shift(brightest, 3, out=brightest)               # EDGE_THRESHOLD = 1/8 …
+    np.maximum(brightest, np.uint8(round(EDGE_THRESHOLD_MIN * 255)), out=brightest)     # … and the floor
+    where = np.flatnonzero(contrast >= brightest)
     if len(where) == 0:
         return out
     ys, xs = np.divmod(where, width)
-    pad = edge.astype(np.float32) / np.float32(255)
-    py, px = ys + 1, xs + 1                                   # in the padded picture
-    m = pad[py, px]
-    n, s, w, e = pad[py - 1, px], pad[py + 1, px], pad[py, px - 1], pad[py, px + 1]
-    nw, ne, sw, se = pad[py - 1, px - 1], pad[py - 1, px + 1], pad[py + 1, px - 1], pad[py + 1, px + 1]
-    span = contrast[ys, xs].astype(np.float32) / np.float32(255)
+    stride = width + 2                                        # of the padded picture, flattened
+    flat = edge.reshape(-1)
+    here = (ys + 1) * stride + (xs + 1)                       # each edge pixel in the padded picture
+
+    def luma(index: np.ndarray) -> np.ndarray:
+        return _UNIT[flat[index]]
+
+    m = luma(here)
+    n, s, w, e = luma(here - stride), luma(here + stride), luma(here - 1), luma(here + 1)
+    nw, ne, sw, se = luma(here - stride - 1), luma(here - stride + 1), luma(here + stride - 1), luma(here + stride + 1)
+    span = _UNIT[contrast.reshape(-1)[where]]
     horizontal = (np.abs(nw + sw - 2 * w) + 2 * np.abs(n + s - 2 * m) + np.abs(ne + se - 2 * e)
                   >= np.abs(nw + ne - 2 * n) + 2 * np.abs(w + e - 2 * m) + np.abs(sw + se - 2 * s))
     # the two neighbours across the edge (above/below a horizontal edge, left/right of a vertical one)
@@ -87,22 +97,29 @@ def fxaa(image: np.ndarray) -> np.ndarray:
     # the search along the edge's middle line, between the pixel and the one across
     edge_mean = (m + neighbour) / 2
     threshold = gradient / 4
-    dy_along, dx_along = np.where(horizontal, 0, 1), np.where(horizontal, 1, 0)
     dy_across, dx_across = np.where(horizontal, across, 0), np.where(horizontal, 0, across)
     lower = (m - edge_mean) < 0
+    # a point on the search line: ``start + position × along`` (the pixel's own row or column) and
+    # ``start_across + position × along`` (the one across), ``position`` kept inside the padded picture
+    position = np.where(horizontal, xs + 1, ys + 1)
+    limit = np.where(horizontal, width + 1, height + 1)
+    along = np.where(horizontal, 1, stride)
+    start = np.where(horizontal, (ys + 1) * stride, xs + 1)
+    start_across = np.where(horizontal, (ys + 1 + dy_across) * stride, xs + 1 + dx_across)
     found = []
     for direction in (-1, 1):
         distance = np.zeros(len(ys), dtype=np.int64)
         end = np.zeros(len(ys), dtype=np.float32)
-        done = np.zeros(len(ys), dtype=bool)
+        going = np.arange(len(ys))                            # the pixels whose search goes on
         for step in SEARCH_STEPS:
-            going = ~done
             distance[going] += step
-            y = np.clip(py + direction * distance * dy_along, 0, height + 1)
-            x = np.clip(px + direction * distance * dx_along, 0, width + 1)
-            value = (pad[y, x] + pad[np.clip(y + dy_across, 0, height + 1), np.clip(x + dx_across, 0, width + 1)]) / 2
-            end = np.where(going, value - edge_mean, end)
-            done |= np.abs(end) >= threshold
+            at = np.minimum(np.maximum(position[going] + direction * distance[going], 0), limit[going])
+            at *= along[going]
+            value = (luma(start[going] + at) + luma(start_across[going] + at)) / 2 - edge_mean[going]
+            end[going] = value
+            going = going[np.abs(value) < threshold[going]]
+            if len(going) == 0:
+                break
         found.append((distance, end))
     (distance_n, end_n), (distance_p, end_p) = found
     nearer_n = distance_n < distance_p
@@ -114,3 +131,16 @@ def fxaa(image: np.ndarray) -> np.ndarray:
         image[np.clip(ys + dy_across, 0, height - 1), np.clip(xs + dx_across, 0, width - 1)].astype(np.float32) * blend
     out[ys, xs] = np.clip(np.rint(mixed), 0, 255).astype(np.uint8)
     return out
+
+
+_UNIT = np.arange(256, dtype=np.float32) / np.float32(255)      # a uint8 level as 0 … 1
+
+
+def _padded_luma(image: np.ndarray) -> np.ndarray:
+    """The green channel (FXAA's cheap luma) with its edge pixels repeated one pixel further round."""
+    height, width = image.shape[:2]
+    edge = np.empty((height + 2, width + 2), dtype=np.uint8)
+    edge[1:-1, 1:-1] = image[..., 1]
+    edge[0, 1:-1], edge[-1, 1:-1] = image[0, :, 1], image[-1, :, 1]
+    edge[:, 0], edge[:, -1] = edge[:, 1], edge[:, -2]
+    return edge
