@@ -53,12 +53,17 @@ if TYPE_CHECKING:
     """A part's VTK points and normals arrays, each with a writable numpy view on it."""
 
 # VIEWS (engine.outputs.camera) and write_png (engine.outputs.png_file) are importable from here too.
-__all__ = ["BACKGROUND", "DEFAULT_SIZE", "MAX_SIZE", "VIEWS", "FrameRenderer", "aim_camera", "check_size",
-           "copy_pose", "render_model", "scene_renderer", "write_png"]
+__all__ = ["BACKGROUND", "CULL_BACK_FACES", "DEFAULT_SIZE", "MAX_SIZE", "VIEWS", "FrameRenderer", "aim_camera",
+           "check_size", "copy_pose", "render_model", "scene_renderer", "write_png"]
 
 DEFAULT_SIZE = (600, 800)
 MAX_SIZE = 8192
 BACKGROUND = ("#cfd1d4", "#eef0f2")   # bottom, top of a faint vertical gradient
+#: A physically based look draws no triangle that faces away from the camera: on a software OpenGL (Mesa
+#: llvmpipe) that is a fifth of a 720p frame's drawing (docs/export.md, "Speed"), and the picture differs
+#: from one drawn with them in a few pixels on the silhouette of a thin fold (tests/engine/test_render_speed.py
+#: states the tolerance). The ``legacy`` look keeps drawing them: its pictures stay those of pyvista.
+CULL_BACK_FACES = True
 
 
 def render_model(model: Model, values: Mapping[str, float] | None = None, view: str = "front",
@@ -322,6 +327,7 @@ def scene_renderer(model: Model, layout: PartLayout, view: str, width: int, heig
             values.SetName(OCCLUSION_ARRAY)
             mesh.GetPointData().AddArray(values)
             dress_actor(actor, look, part, texture)
+            prop.SetBackfaceCulling(CULL_BACK_FACES)    # see CULL_BACK_FACES
         renderer.AddActor(actor)
         meshes.append((point_array, vtk_to_numpy(point_array), normal_array, vtk_to_numpy(normal_array)))
     # a physically based look lights with its own uniforms; VTK writes its lighting code (which the
