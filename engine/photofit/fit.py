@@ -16,6 +16,7 @@ from engine.identity.articulation_refit import refit_articulation
 from engine.identity.carry_over import Similarity, carry_rig_over, similarity
 from engine.identity.rest_fit import keep_fields_off_the_eyes, keep_lids_off_the_eyes, refit_eyelid_angles
 from engine.model import Model
+from engine.model.texture import ModelTexture, TextureImage
 from engine.photofit.auto_landmarks import find_face_points, write_points
 from engine.photofit.errors import PhotoFitError
 from engine.photofit.expression_fit import posed
@@ -25,7 +26,7 @@ from engine.photofit.photos import read_photo
 from engine.photofit.points import PhotoPoints, read_points
 from engine.photofit.shape import ShapeFit, fit_shape
 from engine.photofit.stopping import ShouldStop, stop_if_asked
-from engine.photofit.texture import bake_texture
+from engine.photofit.texture import IMAGE_NAME, bake_texture
 from engine.photofit.texture_cleanup import mouth_bag, mouth_opening, shadow_vertices
 
 
@@ -68,8 +69,8 @@ def _fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mod
     shape = fit_shape(base, {v: p for v, p in points.items() if v in photos}, photos.get("side"), should_stop,
                       photos.get("front"))
     report("head")
-    head = (make_identity_head(shape.identity, base, lambda: stop_if_asked(should_stop)) if shape.identity.values
-            else base.copy())
+    head = (make_identity_head(shape.identity, _photographed(base), lambda: stop_if_asked(should_stop))
+            if shape.identity.values else base.copy())
     moved = head.vertices + shape.warp
     rigid: dict[str, Similarity] = {}
     for part in ("eye_left", "eye_right"):
@@ -109,6 +110,21 @@ def _fit_photos(photos: Mapping[str, np.ndarray], points: PhotoPoints, base: Mod
     fitted.changed()
     seconds["texture"] = time.perf_counter() - started
     return PhotoFit(fitted, shape, seconds)
+
+
+def _photographed(base: Model) -> Model:
+    """``base`` with a placeholder photograph as its texture image (its texture coordinates kept), for
+    :func:`make_identity_head`: a head whose texture shows a photograph keeps it, so the identity's own skin
+    image (``engine.identity.skin``, about 5 s of CPU on the 1024² atlas) is not painted only to be replaced by
+    the photographs' (:func:`bake_texture` reads the texture coordinates alone)."""
+    if base.texture is None:
+        return base
+    shell = base.copy()
+    assert shell.texture is not None
+    placeholder = TextureImage(IMAGE_NAME, np.zeros((1, 1, 3), dtype=np.uint8))
+    shell.texture = ModelTexture(shell.texture.corner_uv, [placeholder],
+                                 np.where(shell.texture.face_image >= 0, 0, -1))
+    return shell
 
 
 @contextlib.contextmanager

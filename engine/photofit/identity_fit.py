@@ -32,6 +32,7 @@ from engine.model import Model
 from engine.photofit.camera import WeakPerspective, initial_vector
 from engine.photofit.expression_fit import ExpressionBasis
 from engine.photofit.face_points import point_index
+from engine.photofit.side_table import first_macro_effect, shipped_sides, side_effect
 from engine.photofit.stopping import ShouldStop, stop_if_asked
 
 #: The identity parameters fitted (the macros first).
@@ -92,7 +93,10 @@ class IdentityBasis:
         self.sides: dict[tuple[int, int], np.ndarray] = {}        # (parameter, ±1) → (L, 3) per unit
         self.centre = self.defaults.copy()
         self.at_centre = base.vertices[self.index]
-        self.macro_columns = self._macro_columns(self.defaults, first=True)
+        # the effects about the default identity do not depend on the photograph: shipped where they can be
+        self.table = shipped_sides(base, MODIFIERS, MACROS)
+        self.rows = self.table.rows(self.index) if self.table is not None else None
+        self.macro_columns = self._first_macro_columns()
         for k in np.flatnonzero(~self.macro):
             self.side(int(k), 1)
         self._refresh()
@@ -108,19 +112,28 @@ class IdentityBasis:
         """(L, 3) modifier ``k``'s effect per unit on the side ``sign`` of 0 (MakeHuman's target there)."""
         if (k, sign) not in self.sides:
             stop_if_asked(self.should_stop)
-            p = self.params[k]
-            step = 0.5 * (p.maximum if sign > 0 else -p.minimum)
-            moved = identity_vertices(Identity({p.name: sign * step}), self.base)[self.index]
-            self.sides[(k, sign)] = (moved - self.base.vertices[self.index]) / (sign * step)
+            name = self.params[k].name
+            self.sides[(k, sign)] = (self.table.side(name, sign, self.rows) if self.table and self.rows is not None
+                                     else side_effect(self.base, self.index, name, sign))
         return self.sides[(k, sign)]
 
-    def _macro_columns(self, values: np.ndarray, first: bool = False) -> dict[int, np.ndarray]:
+    def _first_macro_columns(self) -> dict[int, np.ndarray]:
+        """The macros' effects about the default identity (:func:`first_macro_effect`)."""
+        out = {}
+        for k in np.flatnonzero(self.macro):
+            stop_if_asked(self.should_stop)
+            name = self.params[k].name
+            out[int(k)] = (self.table.macro(name, self.rows) if self.table and self.rows is not None
+                           else first_macro_effect(self.base, self.index, name))
+        return out
+
+    def _macro_columns(self, values: np.ndarray) -> dict[int, np.ndarray]:
         current = self.as_dict(values)
         out = {}
         for k in np.flatnonzero(self.macro):
             stop_if_asked(self.should_stop)
             p = self.params[k]
-            step = (0.25 if first else REFINE_STEP) * (p.maximum - p.minimum)
+            step = REFINE_STEP * (p.maximum - p.minimum)
             moved_value = values[k] + step if values[k] + step <= p.maximum else values[k] - step
             moved = identity_vertices(Identity({**current, p.name: float(moved_value)}), self.base)[self.index]
             out[int(k)] = (moved - self.at_centre) / (moved_value - values[k])
