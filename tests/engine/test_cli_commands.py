@@ -8,7 +8,7 @@ import pytest
 
 from engine import load_model
 from tests.engine.cli_in_process import run_in_process
-from tests.engine.cli_runner import assert_user_error, run
+from tests.engine.cli_runner import assert_user_error
 
 PAPER = '<commands>\n  <HeadNod at="1000" amplitude="60" count="2"/>\n</commands>\n'
 
@@ -21,7 +21,7 @@ def script(tmp_path):
 
 
 def test_translate_prints_the_paper_example(script):
-    result = run("translate", script)
+    result = run_in_process("translate", script)
     assert result.returncode == 0, result.stderr
     assert '<activate parameter="head_nod" interp="linear" command="HeadNod" line="amplitude"' in result.stdout
     assert result.stdout.count("<key ") == 9
@@ -30,10 +30,10 @@ def test_translate_prints_the_paper_example(script):
 
 def test_translate_to_a_file_and_tracks_from_both_levels(script, tmp_path):
     low = tmp_path / "low.xml"
-    assert run("translate", script, "-o", low).returncode == 0
+    assert run_in_process("translate", script, "-o", low).returncode == 0
     for source in (script, low):
         out = tmp_path / f"{source.stem}.csv"
-        result = run("tracks", source, "--fps", "60", "-o", out)
+        result = run_in_process("tracks", source, "--fps", "60", "-o", out)
         assert result.returncode == 0, result.stderr
         with out.open() as fh:
             rows = list(csv.reader(fh))
@@ -51,7 +51,7 @@ def test_tracks_with_a_user_library_folder(tmp_path):
     xml = tmp_path / "yes.xml"
     xml.write_text('<commands><Yes at="0"/></commands>')
     out = tmp_path / "yes.csv"
-    assert run("tracks", xml, "-L", folder, "--fps", "10", "-o", out).returncode == 0
+    assert run_in_process("tracks", xml, "-L", folder, "--fps", "10", "-o", out).returncode == 0
     rows = list(csv.reader(out.read_text().splitlines()))
     nod = rows[0].index("head_nod")
     assert [float(r[nod]) for r in rows[1:]] == pytest.approx([0, 0.2, 0])
@@ -87,7 +87,7 @@ def test_wrong_output_extension_and_missing_input(script, tmp_path):
 
 
 def test_library_lists_commands_and_checks_them_against_the_model(tmp_path):
-    result = run("library")
+    result = run_in_process("library")
     assert result.returncode == 0, result.stderr
     for name in ("HeadNod", "HeadShake", "HeadTurn", "HeadTilt", "Blink", "Wink", "EyesLook", "BrowRaise",
                  "JawOpen"):
@@ -95,7 +95,7 @@ def test_library_lists_commands_and_checks_them_against_the_model(tmp_path):
     folder = tmp_path / "lib"
     folder.mkdir()
     (folder / "smile.lib").write_text("$command = Smile\n\nlip_corner_pull = 0,0; 100,1\n")
-    result = run("library", "-L", folder)
+    result = run_in_process("library", "-L", folder)
     assert result.returncode == 2
     assert "smile.lib:3:" in result.stderr and "lip_corner_pull" in result.stderr
     assert "Traceback" not in result.stderr

@@ -17,7 +17,8 @@ import pytest
 
 from engine.cli import common, main
 from engine.identity import Identity, IdentityError
-from tests.engine.cli_runner import assert_user_error, run
+from tests.engine.cli_in_process import run_in_process
+from tests.engine.cli_runner import assert_user_error
 
 DIGITS = "9" * 401
 
@@ -38,7 +39,7 @@ def test_identity_to_dev_null_is_refused_and_writes_nothing_beside_it():
     beside = [Path("/dev/null.xml"), Path("/dev/null.h5")]
     there = [p.exists() for p in beside]
     try:
-        line = assert_user_error(run("identity", "--set", "age=40", "-o", os.devnull))
+        line = assert_user_error(run_in_process("identity", "--set", "age=40", "-o", os.devnull))
         assert line == "error: /dev/null: the model must be a file, not a device or a pipe", line
         assert [p.exists() for p in beside] == there
     finally:                        # the command before the fix wrote these: leave /dev as it was

@@ -15,6 +15,7 @@ from engine import load_model, save_model
 from engine.commands import load_library
 from engine.errors import LibraryError, UserError
 from engine.outputs.configuration_export import README_NAME, export_configuration
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.synthetic import random_model
 
@@ -142,7 +143,7 @@ def test_export_config_verb_names_the_files_after_the_model_file_given(tmp_path)
 def test_export_config_verb_reports_a_bad_library_file_in_one_line(tmp_path):
     bad = tmp_path / "Bad.lib"
     bad.write_text("$command = Bad\njaw_open = 1\n$proc = no-such-procedure\n")
-    line = assert_user_error(run("export-config", "-L", bad, "-o", tmp_path / "out"))
+    line = assert_user_error(run_in_process("export-config", "-L", bad, "-o", tmp_path / "out"))
     assert line.startswith(f"error: {bad}:3:") and "no-such-procedure" in line
     assert not (tmp_path / "out").exists()
-    assert assert_user_error(run("export-config")).startswith("error: ")            # -o is required
+    assert assert_user_error(run_in_process("export-config")).startswith("error: ")            # -o is required
