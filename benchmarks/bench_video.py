@@ -177,6 +177,54 @@ def run(seconds: float, fps: float, size: tuple[int, int], antialias: bool, scra
     }
 
 
+def profile(size: tuple[int, int], look: str, frames: int = 20) -> dict[str, float]:
+    """CPU ms per frame (this process's, llvmpipe's threads included) of each step of
+    ``FrameRenderer.render``, done one by one as it does them (docs/export.md, "Speed")."""
+    from engine.outputs.antialias import fxaa
+    from engine.outputs.render import _OPAQUE, copy_pose
+
+    model = engine.load_model()
+    _, names, values = motion(model, frames / 30.0, 30.0)
+    full = np.tile(model.values_array(), (len(values), 1))
+    full[:, [model.parameters.names.index(n) for n in names]] = values
+    deformer = model.deformer()
+    renderer = FrameRenderer(model, size=size, look=look)
+    renderer.render(model.vertices)
+    window, (width, height) = renderer._window, size
+    steps: dict[str, float] = {}
+
+    def timed(name, work, *args):
+        cpu = time.process_time()
+        out = work(*args)
+        steps[name] = steps.get(name, 0.0) + 1000 * (time.process_time() - cpu) / len(full)
+        return out
+
+    def background_under(pixels):
+        drawn = renderer._vtk_to_numpy(pixels).view(np.uint32).reshape(height, width)[::-1]
+        whole = np.where(drawn >= _OPAQUE, drawn, renderer._background)
+        return np.ascontiguousarray(whole.view(np.uint8).reshape(height, width, 4)[:, :, :3])
+
+    with open(os.devnull, "wb") as sink:
+        for row in full:
+            positions = timed("deform", deformer.deform, row)
+            timed("points and normals into VTK", copy_pose, renderer._layout, renderer._meshes, positions)
+            timed("draw (llvmpipe: rasterise, shade)", lambda: (window.Render(), window.WaitForCompletion()))
+            if renderer._background is not None:
+                timed("read-back (RGBA)", lambda: window.GetRGBACharPixelData(0, 0, width - 1, height - 1, 1,
+                                                                               renderer._pixels, 0))
+                image = timed("flip, background under the head", lambda: background_under(renderer._pixels))
+            else:
+                timed("read-back (RGB)", lambda: window.GetPixelData(0, 0, width - 1, height - 1, 1,
+                                                                      renderer._pixels, 0))
+                image = timed("flip", lambda: np.ascontiguousarray(
+                    renderer._vtk_to_numpy(renderer._pixels).reshape(height, width, -1)[::-1, :, :3]))
+            if renderer._fxaa:
+                image = timed("FXAA (numpy)", fxaa, image, False)
+            timed("pipe write (rgb24, no copy)", sink.write, memoryview(image.data).cast("B"))
+    renderer.close()
+    return steps
+
+
 def available_cores(seconds: float = 1.0) -> float:
     """How many cores' worth of CPU two busy processes get right now (the machine is shared)."""
     code = ("import time\nt = time.perf_counter(); c = time.process_time()\n"
@@ -238,11 +286,21 @@ def main(argv=None) -> int:
     parser.add_argument("--looks", default="legacy,portrait", help="looks to measure, comma-separated "
                                                                    "(default legacy,portrait)")
     parser.add_argument("--json", default=None, metavar="OUT", help="also write the figures as JSON")
+    parser.add_argument("--profile", type=int, default=0, metavar="FRAMES",
+                        help="first, the CPU of each step of drawing a frame, over FRAMES frames of the first look")
     args = parser.parse_args(argv)
     size = tuple(int(s) for s in args.size.lower().split("x"))
     modes = {"off": [False], "on": [True], "both": [False, True]}[args.antialias]
     results = []
     print(f"OpenGL: {render_backend.probe()['kind']}", flush=True)     # software (Mesa llvmpipe) or GPU (…)
+    if args.profile:
+        look = args.looks.split(",")[0]
+        steps = profile(size, look, args.profile)
+        print(f"\n== one frame of {look} at {size[0]}x{size[1]}, step by step ({args.profile} frames, load average "
+              f"{os.getloadavg()[0]:.2f}): CPU ms per frame")
+        for name, ms in steps.items():
+            print(f"  {name:36s} {ms:7.2f}")
+        print(f"  {'all':36s} {sum(steps.values()):7.2f}", flush=True)
     with tempfile.TemporaryDirectory(prefix="bench-video-") as scratch:
         for look in args.looks.split(","):
             for antialias in modes:

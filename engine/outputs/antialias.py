@@ -46,10 +46,14 @@ def settings() -> dict[str, object]:
             "edge_threshold_min": EDGE_THRESHOLD_MIN, "subpixel": SUBPIXEL, "search_steps": list(SEARCH_STEPS)}
 
 
-def fxaa(image: np.ndarray) -> np.ndarray:
-    """``image`` ((H, W, 3) uint8 RGB) with its edges smoothed, as a new array."""
+def fxaa(image: np.ndarray, copy: bool = True) -> np.ndarray:
+    """``image`` ((H, W, 3) uint8 RGB) with its edges smoothed, as a new array (``copy=False``: smoothed
+    where it is, when it is a writable C-contiguous uint8 array, and returned)."""
     height, width = image.shape[:2]
-    out = np.array(image, dtype=np.uint8, copy=True)
+    if copy or image.dtype != np.uint8 or not image.flags.c_contiguous or not image.flags.writeable:
+        out = np.array(image, dtype=np.uint8, copy=True)
+    else:
+        out = image
     if height < 3 or width < 3:
         return out
     edge = _padded_luma(out)

@@ -62,3 +62,26 @@ def test_culling_back_faces_changes_the_picture_within_the_tolerance(model: engi
     assert face > 0.1
     assert (difference > 0).mean() <= CULLED_SHARE, float((difference > 0).mean())
     assert difference.mean() <= CULLED_MEAN, float(difference.mean())
+
+
+@pytest.mark.parametrize(("look", "antialias"), [("portrait", True), ("flat", False)])
+def test_the_background_put_under_the_head_afterwards_gives_the_same_bytes(
+        model: engine.Model, monkeypatch: pytest.MonkeyPatch, look: str, antialias: bool) -> None:
+    def frames() -> tuple[np.ndarray, bool]:
+        with FrameRenderer(model, size=SIZE, look=look, antialias=antialias) as renderer:
+            return np.stack([renderer.render(p) for p in _poses(model)]), renderer._background is not None
+
+    afterwards, composited = frames()
+    monkeypatch.setattr(render, "BACKGROUND_AFTER_DRAWING", False)
+    drawn, composited_before = frames()
+    assert composited and not composited_before
+    assert np.array_equal(afterwards, drawn)
+    if look == "portrait":                                       # a gradient, not one colour (flat's is)
+        assert len(np.unique(afterwards[0][:, 0, 1])) > 1
+
+
+def test_the_legacy_look_draws_its_own_background(model: engine.Model) -> None:
+    with FrameRenderer(model, size=(32, 24), look="legacy") as renderer:
+        assert renderer._background is None
+    with FrameRenderer(model, size=(32, 24), look="portrait") as renderer:
+        assert renderer._background is not None and renderer._background.shape == (24, 32)
