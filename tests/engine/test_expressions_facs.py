@@ -233,6 +233,36 @@ def test_sadness_has_its_oblique_brows_and_its_pout():
     assert sad["AU1_left"] > 2 * sad["AU4_left"], "the inner brows raised more than lowered: oblique"
 
 
+def test_happiness_is_the_cheeks_and_the_corners_and_nothing_of_the_brows():
+    library = load_library()
+    for name in ("Happy", "HappyOpen"):
+        happy = aus(library, name)
+        assert {"AU6", "AU12"} <= happy, name
+        assert not {"AU1", "AU2", "AU4", "AU15", "AU20"} & happy, name
+
+
+def test_anger_has_4_5_7_23_and_disgust_9_10_with_less_of_anger_s_brows():
+    """Disgust is told from anger by the nose and the upper lip, not the brows (EMFACS 9, 10 against
+    4 + 5 + 7 + 23): less AU4, more AU9's nose part and AU10 than anger, and no glare (AU5)."""
+    library = load_library()
+    for name in ("Anger", "AngerOpen"):
+        assert {"AU4", "AU5", "AU7", "AU23"} <= aus(library, name), name
+    assert {"AU9", "AU10"} <= aus(library, "Disgust")
+    assert "AU5" not in aus(library, "Disgust")
+    anger, disgust = levels(library, "Anger"), levels(library, "Disgust")
+    assert disgust.get("AU4_left", 0) < anger["AU4_left"], "less AU4 than anger"
+    assert disgust["AU9_left_nose"] > anger.get("AU9_left_nose", 0), "more of the nose wrinkled"
+    assert disgust["AU10_left"] > anger.get("AU10_left", 0), "more of the upper lip raised"
+
+
+def test_surprise_has_the_whole_brow_raised_and_fear_the_stretched_lips():
+    library = load_library()
+    surprise, fear = levels(library, "Surprise"), levels(library, "Fear")
+    assert surprise["AU1_left"] >= 0.8 and surprise["AU2_left"] >= 0.8, "1 + 2 at D or E"
+    assert fear["AU20_left"] >= 0.8 and fear["AU4_left"] >= 0.25, "fear's 20 at D or E, its 4 at least B"
+    assert surprise["jaw_open"] >= 0.2, "surprise's jaw dropped (AU26)"
+
+
 def test_the_open_variants_part_the_lips():
     library = load_library()
     assert aus(library, "HappyOpen") == {"AU6", "AU12", "AU25/26/27"}
