@@ -31,16 +31,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-import numpy as np
-
-from engine.commands.command_files import format_number, low_level_xml
 from engine.errors import UserError
 from engine.formats.atomic import atomic_files
-from engine.model.landmarks import landmark_sort_key
 from engine.model.model import Model
+from engine.outputs.data_files import FrameData, write_data_file
 from engine.outputs.video_writer import Progress, VideoRequest, check_video, encode_video
-from engine.speech.synthesis import phones_csv, write_wav
-from engine.timeline.tracks import tracks_csv_text
 
 if TYPE_CHECKING:
     from engine.outputs.looks import Look
@@ -107,6 +102,7 @@ def write_speech_files(speech: Speech, model: Model, targets: Mapping[str, str |
         video = check_video(paths["mp4"], model, times, values, speech.timeline.parameters, fps,
                             audio=speech.utterance.samples, sample_rate=speech.utterance.sample_rate,
                             size=size, view=view, look=look, encoding=encoding)
+    data = FrameData(speech.timeline.parameters, times, values, speech.utterance, model, speech.activations)
     steps = _Steps(len(times) * (video is not None) + len(paths) - (video is not None), progress, cancelled)
     steps.start()
     with atomic_files(paths.values()) as temporary:
@@ -116,48 +112,12 @@ def write_speech_files(speech: Speech, model: Model, targets: Mapping[str, str |
             if video is not None and kind == "mp4":
                 encode_video(video, destination, steps.frame, antialias)
                 continue
-            if kind == "wav":
-                write_wav(destination, speech.utterance)
-            elif kind == "xml":
-                destination.write_text(low_level_xml(speech.activations), encoding="utf-8")
-            elif kind == "phones":
-                destination.write_text(phones_csv(speech.utterance), encoding="utf-8")
-            elif kind == "tracks":
-                destination.write_text(tracks_csv_text(speech.timeline.parameters, times, values), encoding="utf-8")
-            elif kind == "landmarks":
-                destination.write_text(landmarks_csv(model, times, values), encoding="utf-8")
+            write_data_file(kind, destination, data)
             steps.advance()
     return list(paths.values())
 
 
 _SUFFIX = {"mp4": ".mp4", "wav": ".wav", "xml": ".xml", "phones": ".csv", "tracks": ".csv", "landmarks": ".csv"}
-
-
-def landmarks_csv(model: Model, times: np.ndarray, values: np.ndarray) -> str:
-    """The landmarks table: ``frame,time_ms,<id>_x,<id>_y,<id>_z,…`` (mm), one row per frame.
-
-    ``values`` (frames × parameters, in the model's tree order) at ``times``
-    (ms), as :meth:`engine.timeline.Timeline.sample` gives them.
-
-    >>> from engine import load_model
-    >>> head = load_model()
-    >>> table = landmarks_csv(head, np.array([0.0]), head.values_array()[None])
-    >>> table.splitlines()[0].split(",")[:5]
-    ['frame', 'time_ms', '2.1_x', '2.1_y', '2.1_z']
-    """
-    times, values = np.asarray(times, dtype=float), np.asarray(values, dtype=float)
-    if values.shape != (len(times), len(model.parameters)):
-        raise ValueError(f"expected {len(times)} frames × {len(model.parameters)} parameters of values, "
-                         f"got shape {values.shape}")
-    ids = sorted(model.landmarks, key=landmark_sort_key)
-    vertices = [model.landmarks[i] for i in ids]
-    header = ["frame", "time_ms"] + [f"{i}_{axis}" for i in ids for axis in "xyz"]
-    lines = [",".join(header)]
-    deformer = model.deformer()
-    for n, (t, row) in enumerate(zip(times, values, strict=True)):
-        points = deformer.deform(row)[vertices]
-        lines.append(",".join([str(n), format_number(t)] + [format_number(c) for c in points.ravel()]))
-    return "\n".join(lines) + "\n"
 
 
 class _Steps:

@@ -30,11 +30,12 @@ from engine.commands import Library, load_library, translate
 from engine.commands.command_files import HighLevelCommand
 from engine.formats.atomic import atomic_files, atomic_write_text
 from engine.model.model import Model
+from engine.outputs.data_files import FrameData, write_data_file
 from engine.outputs.png_file import write_png
 from engine.outputs.video_tools import copy_without_audio
 from engine.outputs.video_writer import check_video, encode_video
 from engine.speech.say import Speech, speak
-from engine.speech.synthesis import Utterance, phones_csv, wav_bytes
+from engine.speech.synthesis import Utterance
 from engine.stimuli.audio import (
     add_noise,
     clip_layout,
@@ -46,7 +47,6 @@ from engine.stimuli.audio import (
 from engine.stimuli.design import Design, DesignError, Stimulus
 from engine.stimuli.heads import stimulus_head
 from engine.timeline.timeline import Timeline
-from engine.timeline.tracks import tracks_csv_text
 
 RECORDS = ".records"
 PAUSES = frozenset({"#", "##", "pau", "h#", "brth", "_", "sil", "sp"})
@@ -127,6 +127,10 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
         if n == still_frame:
             kept[n] = np.array(image)
 
+    # the files beside the video show its sound (placed, padded, with its noise) and the phones where they are heard
+    files_sound = replace(utterance, samples=audio, sample_rate=rate, source_wav=None,
+                          phones=_shifted(utterance.phones, layout.audio_start_ms))
+    data = FrameData(timeline.parameters, frame_times, values, files_sound, model)
     with atomic_files(paths.values()) as temporary:
         for kind, path in sorted(paths.items(), key=lambda item: item[0] in ("silent-mp4", "png")):   # after the mp4
             destination = temporary[path]
@@ -134,17 +138,12 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
                 encode_video(requests[kind], destination, on_frame=keep_still if reuse else None)
             elif kind == "silent-mp4":                   # the mp4, written just before, without its sound
                 copy_without_audio(temporary[paths["mp4"]], destination, path)
-            elif kind == "wav":
-                destination.write_bytes(wav_bytes(audio, rate))
             elif kind == "png" and still_frame in kept:
                 write_png(destination, kept[still_frame])
             elif kind == "png":
                 _still(model, timeline, still_ms - layout.video_start_ms, design, destination)
-            elif kind == "phones":
-                shifted = replace(utterance, phones=_shifted(utterance.phones, layout.audio_start_ms))
-                destination.write_text(phones_csv(shifted), encoding="utf-8")
-            elif kind == "tracks":
-                destination.write_text(tracks_csv_text(timeline.parameters, frame_times, values), encoding="utf-8")
+            else:                                        # wav, phones, tracks: as say writes them
+                write_data_file(kind, destination, data)
     # the audio's check decodes the file's sound while the video's decodes its frames: both at once
     with ThreadPoolExecutor(max_workers=1, thread_name_prefix="audio-check") as pool:
         audio_check = pool.submit(_check, paths, utterance.samples * gain, clean, mask, rate,

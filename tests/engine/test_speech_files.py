@@ -14,16 +14,16 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-import engine.outputs.speech_files as speech_files
+import engine.outputs.data_files as data_files
 from engine.commands import low_level_xml
 from engine.errors import UserError
+from engine.outputs.data_files import landmarks_csv
 from engine.outputs.speech_files import (
     KINDS,
     SPEECH_FILE_KINDS,
     ExportCancelled,
     ExportPlan,
     export_speech,
-    landmarks_csv,
     write_speech_files,
 )
 from engine.speech.say import Speech, speak
@@ -119,7 +119,7 @@ def test_a_failure_half_way_leaves_the_old_files_and_nothing_else(speech, head, 
     def fail(*_):
         raise failure
 
-    monkeypatch.setattr(speech_files, "landmarks_csv", fail)      # the last file
+    monkeypatch.setattr(data_files, "landmarks_csv", fail)        # the last file
     with pytest.raises(type(failure)):
         write_speech_files(speech, head, targets, fps=25)
     assert files_in(tmp_path) == before
