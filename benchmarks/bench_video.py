@@ -36,19 +36,19 @@ of video (all processes) give the cost independent of the load. The first
 line names the OpenGL that draws (``software (Mesa llvmpipe)`` or ``GPU (…)``,
 :mod:`engine.outputs.render_backend`).
 
-Issue 36 at 1280 × 720 and 1920 × 1080 (one run each, 2026-12-03, load 2.7–5.2,
-software (Mesa llvmpipe); CPU-s of all processes per video second; the table with
-the profile is in benchmarks/README.md):
+Issue 36 at 1280 × 720 and 1920 × 1080. Before: one run each, first session, load 2.7–5.2.
+After back faces were culled, the gradient put under the head in numpy and FXAA's edge search
+narrowed: one run each, 2026-12-03, load 16.5–20.5. Both on software (Mesa llvmpipe), in CPU-s of
+all processes per video second (``--profile 20`` gives each step of a frame; docs/export.md,
+"Speed"):
 
-=========== ======== ============= ============ ============= ===============
-size        look     anti-aliasing render CPU  CPU-s/video-s encoder alone
-=========== ======== ============= ============ ============= ===============
-1280 × 720  legacy   off           73 ms/frame  2.86          0.94
-1280 × 720  legacy   8× MSAA       259 ms/frame 8.85          0.93
-1280 × 720  portrait off           98 ms/frame  4.20          0.99
-1280 × 720  portrait FXAA          141 ms/frame 5.12          1.05
-1920 × 1080 portrait FXAA          227 ms/frame 9.11          2.07
-=========== ======== ============= ============ ============= ===============
+=========== ======== ============= ============ ============= =============== ============
+size        look     anti-aliasing render CPU  CPU-s/video-s encoder alone   before
+=========== ======== ============= ============ ============= =============== ============
+1280 × 720  portrait FXAA          58 ms/frame  2.98          0.67            5.12
+1280 × 720  legacy   8× MSAA       187 ms/frame 6.19          0.69            8.85
+1920 × 1080 portrait FXAA          93 ms/frame  4.60          1.22            9.11
+=========== ======== ============= ============ ============= =============== ============
 """
 
 from __future__ import annotations
