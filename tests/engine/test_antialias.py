@@ -56,3 +56,15 @@ def test_fxaa_leaves_a_flat_picture_alone_and_keeps_shape_and_type() -> None:
     out = fxaa(flat)
     assert out.shape == flat.shape and out.dtype == np.uint8 and (out == 77).all()
     assert out is not flat
+
+
+def test_fxaa_in_place_gives_the_same_picture_and_leaves_a_copy_alone() -> None:
+    aliased = _edge(1)
+    copied = fxaa(aliased)
+    assert not np.array_equal(copied, aliased)               # the original is untouched …
+    assert np.array_equal(aliased, _edge(1))
+    frame = aliased.copy()
+    smoothed = fxaa(frame, copy=False)                       # … a fresh frame is smoothed where it is
+    assert smoothed is frame and np.array_equal(smoothed, copied)
+    flipped = aliased[::-1]                                  # not contiguous: copied even when asked not to
+    assert fxaa(flipped, copy=False) is not flipped and np.array_equal(flipped, aliased[::-1])
