@@ -24,6 +24,7 @@ from engine.errors import MeshImportError
 from engine.formats.gltf_read import GltfFileError, read_gltf
 from engine.formats.mesh_io import import_mesh, read_mesh
 from engine.formats.texture_images import png_bytes
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 
 TRIANGLE = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], "<f4")
@@ -99,7 +100,7 @@ def test_a_buffer_uri_that_leaves_the_documents_folder_is_refused(layout, uri):
 
 def test_the_cli_says_so_in_one_line(layout):
     path = gltf(layout, "%2e%2e/secret.bin")
-    line = assert_user_error(run("import-mesh", path, "-o", layout / "out.xml"))
+    line = assert_user_error(run_in_process("import-mesh", path, "-o", layout / "out.xml"))
     assert line.startswith(f"error: {path}: buffer 0: ") and "folder" in line, line
     assert not (layout / "out.xml").exists()
 
@@ -203,7 +204,7 @@ def test_an_index_that_names_no_element_is_refused(layout, what, index):
 
 def test_a_negative_index_is_named_in_one_line(layout):
     path = gltf(layout, edit=_set(*PRIMITIVE, "attributes", "POSITION", -1))
-    line = assert_user_error(run("import-mesh", path, "-o", layout / "out.xml"))
+    line = assert_user_error(run_in_process("import-mesh", path, "-o", layout / "out.xml"))
     assert "accessor -1" in line and "does not exist" in line, line
 
 
@@ -263,7 +264,7 @@ def test_coordinates_that_overflow_when_scaled_are_one_line(tmp_path):
     path.write_text("ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
                     "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
                     "1e308 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
-    line = assert_user_error(run("import-mesh", path, "--scale", "1000", "-o", tmp_path / "out.xml"))
+    line = assert_user_error(run_in_process("import-mesh", path, "--scale", "1000", "-o", tmp_path / "out.xml"))
     assert line.startswith(f"error: {path}: "), line
 
 
