@@ -257,7 +257,7 @@ def fit_parameters(base: Model, points: Mapping[str, Mapping[str, tuple[float, f
             A = np.vstack([J / scale, np.sqrt(damping) * np.eye(len(x))])
             below = np.concatenate([np.minimum(lo - x[:Q], -1e-12), -free]) * scale
             above = np.concatenate([np.maximum(hi - x[:Q], 1e-12), free]) * scale
-            scaled = lsq_linear(A, np.concatenate([-r, np.zeros(len(x))]), bounds=(below, above)).x
+            scaled = lsq_linear(A, np.concatenate([-r, np.zeros(len(x))]), bounds=(below, above), method="bvls").x
             moved = x + scaled / scale
             moved[:Q] = np.clip(moved[:Q], lo, hi)
             r_moved = residuals(moved)

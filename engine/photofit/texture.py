@@ -43,29 +43,34 @@ INSIDE_MARGIN = 0.10                # of the head's width: the rim of its outlin
 
 def skin_triangles(model: Model) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Fan triangles of the textured skin polygons: vertex indices (T, 3), corner indices (T, 3), polygon (T,)."""
-    sizes = cell_sizes(model.faces)
-    starts = cell_starts(sizes)
     skin = model.parts.index("skin") if "skin" in model.parts else 0
-    tri_v, tri_c, tri_f = [], [], []
-    corner = 0
-    for f, (n, s) in enumerate(zip(sizes, starts, strict=True)):
-        verts = model.faces[s + 1:s + 1 + n]
-        if np.all(model.vertex_part[verts] == skin):
-            for k in range(1, n - 1):
-                tri_v.append((verts[0], verts[k], verts[k + 1]))
-                tri_c.append((corner, corner + k, corner + k + 1))
-                tri_f.append(f)
-        corner += n
-    return np.array(tri_v), np.array(tri_c), np.array(tri_f)
+    tri_v, tri_c, tri_f = _fans(model.faces)
+    sizes = cell_sizes(model.faces)
+    corners = np.delete(np.asarray(model.faces), cell_starts(sizes))             # each polygon's vertices in turn
+    whole = np.logical_and.reduceat(model.vertex_part[corners] == skin, np.cumsum(sizes) - sizes)
+    keep = whole[tri_f]
+    return tri_v[keep], tri_c[keep], tri_f[keep]
 
 
 def all_triangles(model: Model) -> np.ndarray:
     """(T, 3) vertex indices: every polygon of the model as a fan from its first corner."""
-    sizes = cell_sizes(model.faces)
+    return _fans(model.faces)[0]
+
+
+def _fans(faces: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Every polygon of the flat cell array ``faces`` as a fan from its first corner, in polygon order:
+    vertex indices (T, 3), corner indices (T, 3) (the polygons' corners counted in order) and polygon (T,)."""
+    faces = np.asarray(faces, dtype=np.int64)
+    sizes = cell_sizes(faces)
     starts = cell_starts(sizes)
-    out = [(model.faces[s + 1], model.faces[s + 1 + k], model.faces[s + 2 + k])
-           for n, s in zip(sizes, starts, strict=True) for k in range(1, n - 1)]
-    return np.array(out)
+    fans = sizes - 2
+    tri_f = np.repeat(np.arange(len(sizes)), fans)
+    k = np.arange(len(tri_f)) - np.repeat(np.cumsum(fans) - fans, fans) + 1          # 1 … n − 2 in each polygon
+    first = starts[tri_f] + 1
+    tri_v = np.stack([faces[first], faces[first + k], faces[first + k + 1]], axis=1)
+    corner = (np.cumsum(sizes) - sizes)[tri_f]
+    tri_c = np.stack([corner, corner + k, corner + k + 1], axis=1)
+    return tri_v.reshape(-1, 3), tri_c.reshape(-1, 3), tri_f
 
 
 def vertex_normals(vertices: np.ndarray, triangles: np.ndarray) -> np.ndarray:
