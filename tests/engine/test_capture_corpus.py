@@ -500,15 +500,17 @@ def test_a_point_scale_that_disagrees_with_the_header_yields_to_it(tmp_path):
 @pytest.mark.parametrize("kind", ["device", "fifo"])
 def test_a_device_or_a_pipe_is_refused_unread(tmp_path, kind):
     """/dev/zero would be read without end, a pipe with no writer would block: both are refused at once."""
-    from tests.engine.cli_runner import assert_user_error, run
+    from tests.engine.cli_in_process import run_in_process
+    from tests.engine.cli_runner import assert_user_error
 
     if kind == "device":
         path = Path("/dev/zero")
     else:
         path = tmp_path / "take.tsv"
         os.mkfifo(path)
-    line = assert_user_error(run("mocap", "import", path, "-o", tmp_path / "s.h5"))
+    line = assert_user_error(run_in_process("mocap", "import", path, "-o", tmp_path / "s.h5"))
     assert "not a regular file" in line and str(path) in line
     sample = Path(__file__).parent / "data" / "mocap" / "qtm_sample.tsv"
-    mapping = assert_user_error(run("mocap", "import", sample, "--map", "/dev/zero", "-o", tmp_path / "s.h5"))
+    mapping = assert_user_error(run_in_process("mocap", "import", sample, "--map", "/dev/zero", "-o",
+                                               tmp_path / "s.h5"))
     assert "/dev/zero: not a regular file" in mapping

@@ -32,6 +32,7 @@ from engine.mocap.readers import detect_format, read_marker_file
 from engine.mocap.recording import Recording
 from engine.mocap.session import SESSION_FORMAT, load_session, save_session
 from engine.speech.labels import festival_phones, read_labels
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 
 DATA = Path(__file__).parent / "data" / "mocap"
@@ -777,7 +778,7 @@ def test_cli_subprocess_exit_codes(tmp_path, motion):
     assert "gaps (filled up to 100 ms = 6 frames)" in good.stdout
     lines = path.read_text().splitlines()
     path.write_text("\n".join([*lines[:-1], lines[-1][:30]]) + "\n")
-    line = assert_user_error(run("mocap", "import", path, "-o", tmp_path / "s.h5"))
+    line = assert_user_error(run_in_process("mocap", "import", path, "-o", tmp_path / "s.h5"))
     assert line.startswith(f"error: {path}:{len(lines)}: ")
 
 

@@ -17,6 +17,7 @@ import pytest
 from engine.speech.synthesis import SynthesisError, decode_wav, read_wav, read_wav_layout, wav_layout
 from engine.stimuli import DesignError, load_design
 from tests.engine.capture_stream_files import mediapipe_json
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 
 ENGINE = Path(__file__).parents[2] / "engine"
@@ -93,7 +94,7 @@ COMMANDS = {
 @pytest.mark.parametrize("command", list(COMMANDS))
 def test_every_command_that_reads_a_wav_refuses_it_in_one_line(tmp_path, command, data, message):
     wav = wav_file(tmp_path, data)
-    line = assert_user_error(run(*COMMANDS[command](tmp_path, wav)))
+    line = assert_user_error(run_in_process(*COMMANDS[command](tmp_path, wav)))
     assert line.startswith(f"error: {wav}: not a PCM WAV file: ") and message in line, line
 
 
@@ -110,7 +111,7 @@ def test_a_designs_wav_is_read_with_the_design_and_refused_at_its_line(tmp_path,
         load_design(design)
     line = 2 if factor == "audio" else 4
     assert str(caught.value).startswith(f"{design}:{line}: {factor}: '{factor}' level 'bad.wav': not a PCM WAV")
-    error = assert_user_error(run("stimuli", design, "-o", tmp_path / "out"))
+    error = assert_user_error(run_in_process("stimuli", design, "-o", tmp_path / "out"))
     assert error.startswith(f"error: {design}:{line}: ")
     assert not (tmp_path / "out").exists()
 
