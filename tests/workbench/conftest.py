@@ -1,15 +1,21 @@
 """Fixtures for the workbench tests: the synthetic head on disk, a real main window, leak checks.
 
+``window`` is a new main window for each test (``make_window`` makes more); a module whose tests do not
+depend on a new window's construction overrides ``window`` with ``reused_window``: one window for the module,
+reset before each test (the model read again, an empty undo stack, nothing selected, no tool or animation).
+
 Run under a display server, e.g. ``xvfb-run -a .venv/bin/pytest tests/workbench``.
 """
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import pytest
 
 import engine
+from engine.painting import Brush
 from tests.engine import conftest as engine_fixtures
 from tests.workbench.synthetic_workbench_model import build_synthetic_model
 
@@ -75,7 +81,8 @@ def _no_open_plotters():
     yield
     from pyvista.plotting import _ALL_PLOTTERS
 
-    open_plotters = [p for p in _ALL_PLOTTERS.values() if not getattr(p, "_closed", True)]
+    open_plotters = [p for p in _ALL_PLOTTERS.values()
+                     if not getattr(p, "_closed", True) and id(p) not in _REUSED_PLOTTERS]
     assert not open_plotters, f"plotters left open: {open_plotters}"
 
 
@@ -88,21 +95,14 @@ def make_window(qtbot):
     (That the Python objects are then garbage-collected too is checked by
     ``test_closed_window_is_garbage_collected``; here pytest still holds them.)
     """
-    from workbench.document import ModelDocument
     from workbench.main_window import MainWindow
 
     plotters = []
 
     def make(path, size=(1200, 760)) -> MainWindow:
-        document = ModelDocument(engine.load_model(path), path)
-        window = MainWindow(document)
+        window = _shown_window(path, size)
         # pytest-qt closes its widgets before fixtures tear down: nothing unsaved to ask about then.
         qtbot.addWidget(window, before_close_func=_forget_changes)
-        if size is not None:                 # None: keep the size the window restored from QSettings
-            window.resize(*size)
-        window.show()
-        qtbot.waitExposed(window)
-        window.viewport.set_view("front")  # frame again now that the widget has its real size
         plotters.append(window.viewport.plotter)
         return window
 
@@ -112,7 +112,7 @@ def make_window(qtbot):
     from PySide6.QtWidgets import QApplication
 
     for widget in QApplication.topLevelWidgets():
-        if widget.__class__.__name__ == "MainWindow":
+        if widget.__class__.__name__ == "MainWindow" and id(widget.viewport.plotter) not in _REUSED_PLOTTERS:
             _forget_changes(widget)
             widget.close()  # closeEvent closes the plotter
             widget.deleteLater()
@@ -174,6 +174,115 @@ def unexpected_dialogs(monkeypatch):
 def window(make_window, synthetic_model_path):
     """The main window on the synthetic head."""
     return make_window(synthetic_model_path)
+
+
+# ---------------------------------------------------------------------------
+# One window per test module, reset between its tests (issue 35 item 5)
+# ---------------------------------------------------------------------------
+
+#: ids of the QtInteractors of the windows ``reused_window`` keeps: left open between tests on purpose.
+_REUSED_PLOTTERS: set[int] = set()
+
+
+def _shown_window(path, size=(1200, 760)):
+    """A :class:`MainWindow` on the model at ``path``, shown, exposed and framed from the front."""
+    from PySide6.QtTest import QTest
+
+    from workbench.document import ModelDocument
+    from workbench.main_window import MainWindow
+
+    window = MainWindow(ModelDocument(engine.load_model(path), path))
+    if size is not None:                 # None: keep the size the window restored from QSettings
+        window.resize(*size)
+    window.show()
+    assert QTest.qWaitForWindowExposed(window, 5000), "the window was never shown"    # as qtbot.waitExposed
+    window.viewport.set_view("front")  # frame again now that the widget has its real size
+    return window
+
+
+@pytest.fixture(scope="module")
+def _module_window_slot():
+    """Holds the window ``reused_window`` shares within one test module; closes and checks it at the end."""
+    slot: dict = {}
+    yield slot
+    _dispose_reused(slot.pop("window", None))
+
+
+def _dispose_reused(window) -> None:
+    if window is None:
+        return
+    import shiboken6
+    from PySide6.QtCore import QCoreApplication, QEvent
+
+    plotter = window.viewport.plotter
+    _REUSED_PLOTTERS.discard(id(plotter))
+    if shiboken6.isValid(window):
+        _forget_changes(window)
+        window.close()
+        window.deleteLater()
+    QCoreApplication.sendPostedEvents(None, QEvent.Type.DeferredDelete)
+    assert plotter._closed, "a QtInteractor was left open"
+    assert plotter.render_window is None, "a VTK render window outlived its window"
+    assert not shiboken6.isValid(plotter), "a QtInteractor widget outlived its window"
+
+
+def _reset(window, path) -> None:
+    """Back to what a new window on ``path`` shows: the model read again from its file (parameters at their
+    defaults, an empty clean undo stack), nothing selected, no animation, no tool active, default view."""
+    paint = getattr(window, "paint", None)
+    if paint is not None:                        # the paint tool off, with a new controller's brush
+        paint.set_active(False)
+        paint.set_tool("add")
+        paint.set_brush(**{f.name: getattr(_NEW_BRUSH, f.name) for f in dataclasses.fields(_NEW_BRUSH)})
+        paint.set_hold(False, 1.0)
+    player = getattr(window, "player", None)
+    if player is not None:
+        player.stop()
+        player.unload()
+    view = window.view_state
+    view.select_parameter(None)
+    view.set_wireframe(False)
+    view.set_landmarks(False)
+    view.set_heat_map(True)
+    for part in view.hidden_parts:
+        view.set_part_visible(part, True)
+    window.document.replace_model(engine.load_model(path), path)
+    window.statusBar().clearMessage()
+    window.resize(1200, 760)
+    window.activateWindow()
+    window.viewport.set_view("front")
+
+
+#: The brush a new :class:`workbench.painting.controller.PaintController` starts with.
+_NEW_BRUSH = Brush("add", radius=10.0, strength=0.5, falloff="smooth", front_faces_only=True)
+
+
+@pytest.fixture
+def reused_window(_module_window_slot, synthetic_model_path):
+    """The main window on the synthetic head, shared by the tests of one module and reset before each
+    (:func:`_reset`). For modules whose tests do not depend on a new window's construction; tests of
+    start-up, recovery, settings persistence or closing take ``make_window``. A test that closes the
+    shared window gets a new one for the next test."""
+    import shiboken6
+
+    window = _module_window_slot.get("window")
+    if window is not None and (not shiboken6.isValid(window) or window._closed or not window.isVisible()):
+        _dispose_reused(_module_window_slot.pop("window"))
+        window = None
+    if window is None:
+        from PySide6.QtWidgets import QDockWidget
+
+        window = _shown_window(synthetic_model_path)
+        _module_window_slot["window"] = window
+        _module_window_slot["docks"] = {dock: dock.isVisible() for dock in window.findChildren(QDockWidget)}
+        _REUSED_PLOTTERS.add(id(window.viewport.plotter))
+    else:
+        _reset(window, synthetic_model_path)
+        for dock, visible in _module_window_slot["docks"].items():    # the docks a new window shows
+            dock.setVisible(visible)
+    yield window
+    if shiboken6.isValid(window):
+        _forget_changes(window)
 
 
 @pytest.fixture

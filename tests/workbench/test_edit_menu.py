@@ -3,11 +3,18 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from PySide6.QtCore import Qt
 from PySide6.QtGui import QKeySequence
 
 from tests.workbench.workbench_model_state import model_state
 from workbench.undo_commands import RemoveParameterCommand, RenameParameterCommand, WeightsChangedCommand
+
+
+@pytest.fixture
+def window(reused_window):
+    """One main window for this module's tests, reset before each (``reused_window``, tests/workbench/conftest.py)."""
+    return reused_window
 
 
 def _paint(window, name="jaw_open", weight=1.0, stroke_id=None):

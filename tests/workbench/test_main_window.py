@@ -12,7 +12,14 @@ import engine
 from tests.workbench.synthetic_workbench_model import SYNTHETIC_PARAMETERS, build_synthetic_model
 
 
-def test_window_opens_on_the_model_and_shows_the_mesh(window):
+@pytest.fixture
+def window(reused_window):
+    """One main window for this module's tests, reset before each (``reused_window``, tests/workbench/conftest.py)."""
+    return reused_window
+
+
+def test_window_opens_on_the_model_and_shows_the_mesh(make_window, synthetic_model_path):
+    window = make_window(synthetic_model_path)      # start-up itself: a new window, not the module's
     model = window.document.model
     assert window.windowTitle() == "synthetic-head.xml[*] — Artificial Person"
     assert window.viewport.part_names == ["skin", "eye_left", "eye_right"]

@@ -30,6 +30,12 @@ from engine.painting import (
 from tests.workbench.workbench_model_state import model_state
 
 
+@pytest.fixture
+def window(reused_window):
+    """One main window for this module's tests, reset before each (``reused_window``, tests/workbench/conftest.py)."""
+    return reused_window
+
+
 def dense(window, name):
     return DenseRegion.from_model(window.document.model, name).weights
 

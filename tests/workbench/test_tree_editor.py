@@ -14,6 +14,12 @@ from workbench.tree_editor import TOOL_ID
 from workbench.tree_editor.tree_model import GROUP_TEXT
 
 
+@pytest.fixture
+def window(reused_window):
+    """One main window for this module's tests, reset before each (``reused_window``, tests/workbench/conftest.py)."""
+    return reused_window
+
+
 def _select(window, name):
     """Select ``name`` as a user does: through the tree view's selection."""
     dock = window.tree_editor.dock

@@ -15,6 +15,12 @@ import engine
 from tests.workbench.workbench_model_state import model_state
 from workbench.tree_editor import TOOL_ID
 
+
+@pytest.fixture
+def window(reused_window):
+    """One main window for this module's tests, reset before each (``reused_window``, tests/workbench/conftest.py)."""
+    return reused_window
+
 SCREENSHOT_NAME = "workbench-tree-editor.png"
 
 

@@ -3,9 +3,16 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 from engine.painting import heat_colors
 from workbench.playhead import Playhead
+
+
+@pytest.fixture
+def window(reused_window):
+    """One main window for this module's tests, reset before each (``reused_window``, tests/workbench/conftest.py)."""
+    return reused_window
 
 
 def _painted_parameter(window) -> str:
