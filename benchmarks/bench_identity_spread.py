@@ -177,7 +177,8 @@ def main() -> int:
         pictures.append((describe(person), neutral))
         print(f"{label}: {describe(person).splitlines()[1]}; {len(person.values)} values", flush=True)
     kind = "apart" if args.apart else "in a row"
-    report(f"{args.count} random people (population model 1, seeds from {args.seed}, {kind})", verdicts)
+    report(f"{args.count} random people (population model {people[0].drawn['population'] if people[0].drawn else '?'}, "
+           f"seeds from {args.seed}, {kind})", verdicts)
     if args.sheet:
         contact_sheet(pictures, args.sheet)
         print(f"\ncontact sheet: {args.sheet}")

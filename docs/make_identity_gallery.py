@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Render eight contrasting identities neutral, speaking ``a``, Happy and Surprise, for docs/identity.md.
 
+Each wears hair (docs/hair.md; one bald man), its own skin and iris colour (docs/skin.md).
+
     .venv/bin/python docs/make_identity_gallery.py       (from the project root)
 
 Everything comes from the committed configuration: the default head, the
@@ -21,6 +23,7 @@ sys.path.insert(0, str(ROOT))
 
 from engine.commands import load_library  # noqa: E402
 from engine.identity import Identity, make_identity_head  # noqa: E402
+from engine.identity.hair_style import HairChoice  # noqa: E402
 from engine.outputs.render import render_model  # noqa: E402
 from engine.speech.articulation import load_articulation  # noqa: E402
 from engine.timeline.expressions import gallery_entries  # noqa: E402
@@ -28,15 +31,16 @@ from engine.timeline.expressions import gallery_entries  # noqa: E402
 OUT = ROOT / "docs" / "images" / "identity"
 SIZE = (300, 380)
 ONLY = {"african": 0.0, "asian": 0.0, "caucasian": 0.0}
-PEOPLE = [
-    ("woman 25, African", {**ONLY, "sex": 0.0, "age": 25, "african": 1.0}),
-    ("man 25, African", {**ONLY, "sex": 1.0, "age": 25, "african": 1.0}),
-    ("woman 28, Asian", {**ONLY, "sex": 0.0, "age": 28, "asian": 1.0}),
-    ("man 60, Asian", {**ONLY, "sex": 1.0, "age": 60, "asian": 1.0}),
-    ("woman 70, European", {**ONLY, "sex": 0.0, "age": 70, "caucasian": 1.0}),
-    ("man 30, European", {**ONLY, "sex": 1.0, "age": 30, "caucasian": 1.0, "muscle": 0.8}),
-    ("woman 45, mixed, heavy", {"sex": 0.1, "age": 45, "weight": 0.9}),
-    ("man 80, European, thin", {**ONLY, "sex": 1.0, "age": 80, "caucasian": 1.0, "weight": 0.15}),
+PEOPLE = [      # label, identity values, hair (style, beard, brows; the colour chosen from the person)
+    ("woman 25, African", {**ONLY, "sex": 0.0, "age": 25, "african": 1.0}, ("tied", "none", "medium")),
+    ("man 25, African", {**ONLY, "sex": 1.0, "age": 25, "african": 1.0}, ("short", "stubble", "medium")),
+    ("woman 28, Asian", {**ONLY, "sex": 0.0, "age": 28, "asian": 1.0}, ("long", "none", "thin")),
+    ("man 60, Asian", {**ONLY, "sex": 1.0, "age": 60, "asian": 1.0}, ("short", "moustache", "thick")),
+    ("woman 70, European", {**ONLY, "sex": 0.0, "age": 70, "caucasian": 1.0}, ("short", "none", "thin")),
+    ("man 30, European", {**ONLY, "sex": 1.0, "age": 30, "caucasian": 1.0, "muscle": 0.8}, ("short", "beard", "thick")),
+    ("woman 45, mixed, heavy", {"sex": 0.1, "age": 45, "weight": 0.9}, ("long", "none", "medium")),
+    ("man 80, European, thin", {**ONLY, "sex": 1.0, "age": 80, "caucasian": 1.0, "weight": 0.15},
+     ("none", "none", "medium")),
 ]
 
 
@@ -47,8 +51,8 @@ def main() -> int:
     library = load_library()
     columns = ["neutral", "a", "Happy", "Surprise"]
     rows = []
-    for label, values in PEOPLE:
-        head = make_identity_head(Identity(values))
+    for label, values, (style, beard, brows) in PEOPLE:
+        head = make_identity_head(Identity(values), hair=HairChoice.parse(style=style, beard=beard, brows=brows))
         poses = {e.name: e.pose(head) for e in gallery_entries(library, head) if e.name in ("Happy", "Surprise")}
         tiles = [render_model(head, pose, size=SIZE)
                  for pose in ({}, a_vowel, poses["Happy"], poses["Surprise"])]

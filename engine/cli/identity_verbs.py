@@ -21,11 +21,14 @@ def add_verbs(verbs: Any) -> None:
     p.add_argument("--sex", metavar="female|male", help="with --random: draw a woman or a man")
     p.add_argument("--age", metavar="YEARS|LOW-HIGH", help="with --random: this age, or an age drawn from this "
                                                            "range (default 18-75)")
+    p.add_argument("--population", metavar="VERSION", help="with --random: the population model's version "
+                                                           "(default: the newest, 2; 1 draws an old set again)")
     p.add_argument("--from", dest="source", metavar="A.xml", help="morph: the identity at T = 0 (a model file)")
     p.add_argument("--to", dest="target", metavar="B.xml", help="morph: the identity at T = 1 (a model file)")
     p.add_argument("--at", type=float, default=None, metavar="T", help="morph: where between A and B, 0 … 1")
     p.add_argument("--hair", metavar="STYLE", help="scalp hair: none (bald), short, long or tied (docs/hair.md); "
-                                                  "without hair options the head stays as before: bald, brows painted")
+                                                  "without hair options the head stays as before: bald, brows painted "
+                                                  "(a --random person: the hair drawn with it)")
     p.add_argument("--hair-colour", "--hair-color", dest="hair_colour", metavar="COLOUR",
                    help="black, dark-brown, brown, blond, red, grey or white (default: chosen from age and ancestry)")
     p.add_argument("--beard", metavar="KIND", help="facial hair: none, stubble, moustache or beard")
@@ -65,7 +68,7 @@ def run_identity(args: argparse.Namespace) -> int:
             raise IdentityError("--random draws a new person; it cannot also morph (--from, --to, --at)")
         identity = _random(args)
     else:
-        for option in ("seed", "sex", "age"):
+        for option in ("seed", "sex", "age", "population"):
             if getattr(args, option) is not None:
                 raise IdentityError(f"--{option} chooses what --random draws: give --random too (or --set "
                                     f"{'sex=0' if option == 'sex' else 'age=40' if option == 'age' else 'NAME=VALUE'})")
@@ -74,7 +77,7 @@ def run_identity(args: argparse.Namespace) -> int:
     from engine.formats.model_files import save_model
     from engine.identity import make_identity_head
 
-    head = make_identity_head(identity, hair=_hair(args))
+    head = make_identity_head(identity, hair=_hair(args, identity))
     if identity.drawn is not None:
         head.name = f"random-person-{identity.drawn['seed']}"
     written = save_model(head, args.output)
@@ -91,14 +94,27 @@ def run_identity(args: argparse.Namespace) -> int:
     return 0
 
 
-def _hair(args: argparse.Namespace) -> Any:
-    """The hair ``--hair``, ``--hair-colour``, ``--beard`` and ``--brows`` ask for (None: none of them given)."""
+def _hair(args: argparse.Namespace, identity: Any = None) -> Any:
+    """The hair ``--hair``, ``--hair-colour``, ``--beard`` and ``--brows`` ask for (None: none of them given).
+
+    A random person starts from the hair drawn with it (population.drawn_hair); each option given replaces
+    that part (``--hair none`` a bald scalp, ``--beard none`` a shaven face, ``--brows none`` painted brows).
+    """
     given = [args.hair, args.hair_colour, args.beard, args.brows]
     if all(v is None for v in given):
         return None
     from engine.identity.hair_style import HairChoice
 
-    return HairChoice.parse(style=args.hair, colour=args.hair_colour, beard=args.beard, brows=args.brows)
+    asked = HairChoice.parse(style=args.hair, colour=args.hair_colour, beard=args.beard, brows=args.brows)
+    from engine.identity.population import drawn_hair
+
+    drawn = drawn_hair(identity) if identity is not None else None
+    if drawn is None:
+        return asked
+    from dataclasses import replace
+
+    return replace(drawn, **{field: getattr(asked, field) for field, value in
+                             zip(("style", "colour", "beard", "brows"), given, strict=True) if value is not None})
 
 
 def _random(args: argparse.Namespace) -> Any:
@@ -128,7 +144,17 @@ def _random(args: argparse.Namespace) -> Any:
             fixed["age"] = numbers[0]
         else:
             ages = numbers
-    return draw_identity(int(text), sex=args.sex, ages=ages, fixed=fixed)
+    population = None
+    if args.population is not None:
+        from engine.identity.population import POPULATIONS
+
+        if args.population.strip() not in {str(v) for v in POPULATIONS}:
+            raise IdentityError(f"--population must be one of {', '.join(map(str, POPULATIONS))}, "
+                                f"not '{args.population[:20]}'")
+        population = int(args.population)
+    if population is None:
+        return draw_identity(int(text), sex=args.sex, ages=ages, fixed=fixed)
+    return draw_identity(int(text), sex=args.sex, ages=ages, fixed=fixed, population=population)
 
 
 def _assignments(items: list[str]) -> dict[str, float]:

@@ -1,8 +1,8 @@
 """A population model of the identity space: plausible people drawn at random, the same person from the same seed.
 
 :func:`draw_identity` draws one adult from population model
-:data:`POPULATION` (version 1; docs/population.md says the same in words,
-with the spread measured):
+:data:`POPULATION` (version 2; docs/population.md says the same in words,
+with the spread measured; model 1, drawable still, spread faces less: :data:`SPREADS`):
 
 * **sex** — a woman or a man with probability ½ each (or the one asked
   for); a woman's ``sex`` is ``|N(0, 0.1)|`` (at most 0.3), a man's 1 minus
@@ -46,7 +46,7 @@ per part of the draw (fixing the sex does not change the face drawn).
 
 >>> a, b = draw_identity(7), draw_identity(7)
 >>> a == b, a.drawn["seed"], a.drawn["population"]
-(True, '7', '1')
+(True, '7', '2')
 >>> draw_identity(7, sex="female").value("sex") < 0.5
 True
 """
@@ -64,6 +64,7 @@ from typing import Any
 import numpy as np
 
 from engine.identity.errors import IdentityError
+from engine.identity.hair_style import HairChoice
 from engine.identity.parameters import (
     MACRO,
     RACES,
@@ -73,15 +74,15 @@ from engine.identity.parameters import (
     identity_parameters,
 )
 
-POPULATION = 1
+POPULATION = 2
 """The population model's version: recorded with every identity drawn, so a set can be drawn again."""
-POPULATIONS = (1,)
+POPULATIONS = (1, 2)
 """The versions this program draws from."""
 MAX_SEED = 2**32 - 1
 MAX_COUNT = 1000         # random identities asked for at once
 APART_POOL = 4           # "apart": the people are chosen from this many times as many draws
 ADULT_AGES = (18.0, 75.0)
-SPREAD_MM = 3.0          # a face modifier's 1 σ moves its target's furthest vertex this far
+SPREAD_MM = 4.5          # a face modifier's 1 σ moves its target's furthest vertex this far (model 1: 3.0)
 MAX_SIGMA = 0.4
 DETAIL = 0.5             # the spread of a detail modifier (a bump, a fold, a lip's volume) × that of a proportion
 #: Detail modifiers: local shapes (a bump, a fold, a dimple, one part of the nose's width), drawn at
@@ -97,7 +98,10 @@ LIP_WORDS = ("mouth-angles-", "mouth-scale-vert-", "mouth-scale-depth-", "mouth-
 LIPS = 0.25
 CUT = 2.5                # a face modifier is cut at ±CUT σ
 COHERENCE = 0.8          # the correlation of two modifiers: this × the cosine of their displacement fields
-MAX_FACE_MM = 15.0       # the face modifiers together move no vertex further than this
+MAX_FACE_MM = 22.0       # the face modifiers together move no vertex further than this (model 1: 15.0)
+#: Each population model's (SPREAD_MM, MAX_FACE_MM). Model 1's bound held half its draws back (docs/population.md);
+#: model 2 spreads faces wider. Both draw the same random numbers for a seed: the same person, spread more.
+SPREADS = {1: (3.0, 15.0), 2: (SPREAD_MM, MAX_FACE_MM)}
 #: Modifiers not drawn: they place or turn the whole head, or shape the neck (pose and body, not face).
 #: The lips' own shape: their heights, widths, volumes and bow (on random faces the rig's lip fits let the lips
 #: cross near the corners with these, even at a quarter of the spread; see docs/identity.md).
@@ -292,6 +296,56 @@ def _front(rest: np.ndarray) -> np.ndarray:
     return rest[:, 2] > np.percentile(rest[:, 2], 60)
 
 
+#: Scalp styles (hair_style.STYLES' names) and their chances for a woman and a man; a man's chance of a bald
+#: scalp grows with age (BALD_BY_AGE), taken from his other styles' chances in proportion.
+SCALP_CHANCES = {"female": {"long": 0.5, "tied": 0.33, "short": 0.17},
+                 "male": {"short": 0.8, "long": 0.08, "tied": 0.04, "none": 0.08}}
+#: Facial hair of a man (a woman has none) and the brows' thickness of each sex.
+BEARD_CHANCES = {"none": 0.5, "stubble": 0.22, "moustache": 0.1, "beard": 0.18}
+BROWS_CHANCES = {"female": {"thin": 0.45, "medium": 0.5, "thick": 0.05},
+                 "male": {"thin": 0.05, "medium": 0.55, "thick": 0.4}}
+
+
+def bald_share(age: float) -> float:
+    """How likely a man of ``age`` years is bald on top (the ``none`` scalp): 8 % young, about 40 % by 70."""
+    return float(np.clip(0.08 + (age - 30.0) * 0.008, 0.08, 0.45))
+
+
+def drawn_hair(identity: Identity) -> HairChoice | None:
+    """The hair of a person drawn from the population model: scalp style, beard and brows from the seed, by sex and
+    age; the colour from age and ancestry (:func:`~engine.identity.hair_style.colour_for`). None for an identity
+    not drawn.
+
+    >>> drawn_hair(draw_identity(7)) == drawn_hair(draw_identity(7))
+    True
+    """
+    if identity.drawn is None:
+        return None
+    stream = _Stream(int(identity.drawn["seed"]), "hair")
+    man = identity.value("sex") >= 0.5
+    age = identity.value("age")
+    scalp = dict(SCALP_CHANCES["male" if man else "female"])
+    if man:
+        bald = bald_share(age)
+        rest = 1.0 - scalp.pop("none")
+        scalp = {k: v * (1.0 - bald) / rest for k, v in scalp.items()} | {"none": bald}
+    style, beard, brows = (_pick(stream, table) for table in
+                           (scalp, BEARD_CHANCES, BROWS_CHANCES["male" if man else "female"]))
+    from engine.identity.hair_style import colour_for
+
+    return HairChoice(style=style, beard=beard if man else "none", brows=brows, colour=colour_for(identity))
+
+
+def _pick(stream: _Stream, chances: Mapping[str, float]) -> str:
+    """One of ``chances``' names, with its chance (one uniform number drawn, always)."""
+    u, total = stream.uniform(), 0.0
+    for name, chance in chances.items():
+        total += chance
+        if u < total:
+            return name
+    return next(reversed(list(chances)))
+
+
 def _identity(request: DrawRequest) -> Identity:
     identity = Identity(_draw(request))
     identity.drawn = {"population": str(request.population), "seed": str(request.seed), "given": request.given()}
@@ -309,7 +363,8 @@ class _Stream:
     """Uniform and normal numbers from :meth:`random.Random.random` only (a sequence Python keeps)."""
 
     def __init__(self, seed: int, name: str) -> None:
-        digest = hashlib.sha256(f"artificial-person-population-{POPULATION}/{seed}/{name}".encode()).digest()
+        # "population-1" for every model: models 1 and 2 differ in their spreads, not their random numbers
+        digest = hashlib.sha256(f"artificial-person-population-1/{seed}/{name}".encode()).digest()
         self._random = random.Random(int.from_bytes(digest[:8], "big"))
 
     def uniform(self, low: float = 0.0, high: float = 1.0) -> float:
@@ -336,7 +391,7 @@ def _draw(request: DrawRequest) -> dict[str, float]:
     values["weight"] = _clip(0.5 + 0.15 * body.normal(), 0.15, 0.85)
     values = {k: round(v, 4) if k != "age" else v for k, v in values.items()}
     values.update({k: v for k, v in fixed.items() if k in {p.name for p in MACRO}})
-    face = _face(_Stream(seed, "face"), values, fixed)
+    face = _face(_Stream(seed, "face"), values, fixed, request.population)
     values.update(face)
     values.update(fixed)
     return values
@@ -380,11 +435,12 @@ def _not_drawn() -> set[str]:
 
 
 @cache
-def face_model() -> FaceModel:
-    """The joint distribution of the drawn face modifiers, from the shipped targets."""
+def face_model(population: int = POPULATION) -> FaceModel:
+    """The joint distribution of the drawn face modifiers of population model ``population``, from the shipped
+    targets."""
     from engine.identity.targets import shipped_targets
 
-    spread_mm, coherence = SPREAD_MM, COHERENCE
+    spread_mm, coherence = SPREADS[population][0], COHERENCE
 
     targets = shipped_targets()
     n = len(targets.hm08_vertex)
@@ -412,9 +468,10 @@ def face_model() -> FaceModel:
     return FaceModel(tuple(names), np.array(sigma), correlation, np.array(one_sided))
 
 
-def _face(stream: _Stream, macro: Mapping[str, float], fixed: Mapping[str, float]) -> dict[str, float]:
+def _face(stream: _Stream, macro: Mapping[str, float], fixed: Mapping[str, float],
+          population: int = POPULATION) -> dict[str, float]:
     """The face modifiers: jointly Gaussian, conditioned on the fixed ones, cut and bounded."""
-    model = face_model()
+    model = face_model(population)
     k = len(model.names)
     z = np.array([stream.normal() for _ in range(k)])
     cov = model.correlation * np.outer(model.sigma, model.sigma)
@@ -434,11 +491,13 @@ def _face(stream: _Stream, macro: Mapping[str, float], fixed: Mapping[str, float
     for name, value in values.items():
         p = identity_parameter(name)
         values[name] = _clip(value, p.minimum, p.maximum)
-    return {name: round(value, 4) for name, value in _bounded(values, macro, fixed).items()}
+    bound = SPREADS[population][1]
+    return {name: round(value, 4) for name, value in _bounded(values, macro, fixed, bound).items()}
 
 
-def _bounded(values: dict[str, float], macro: Mapping[str, float], fixed: Mapping[str, float]) -> dict[str, float]:
-    """``values`` scaled down so that with the fixed ones they move no vertex more than :data:`MAX_FACE_MM`."""
+def _bounded(values: dict[str, float], macro: Mapping[str, float], fixed: Mapping[str, float],
+             bound: float = MAX_FACE_MM) -> dict[str, float]:
+    """``values`` scaled down so that with the fixed ones they move no vertex more than ``bound`` mm."""
     from engine.identity.weights import identity_displacement
 
     base = Identity(dict(macro))
@@ -446,7 +505,7 @@ def _bounded(values: dict[str, float], macro: Mapping[str, float], fixed: Mappin
     fixed_face = {k: v for k, v in fixed.items() if k not in macro}
     moved = identity_displacement(base.with_values({**fixed_face, **values})) - macro_only
     furthest = float(np.linalg.norm(moved, axis=1).max())
-    if furthest <= MAX_FACE_MM:
+    if furthest <= bound:
         return values
-    scale = MAX_FACE_MM / furthest
+    scale = bound / furthest
     return {k: v * scale for k, v in values.items()}

@@ -36,6 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from engine.identity.iris import apply_iris
 from engine.identity.parameters import RACES, Identity
 from engine.identity.skin_atlas import skin_atlas
 from engine.identity.skin_detail import detail_heights
@@ -192,3 +193,4 @@ def apply_skin(model: Model, identity: Identity, size: int = ATLAS_SIZE) -> None
     face_image[skin_atlas(model, size).skin_faces] = 0
     model.texture = ModelTexture(texture.corner_uv.copy(), [image], face_image)
     model.changed()
+    apply_iris(model, identity)                    # the eyes' colour too (engine.identity.iris)

@@ -67,7 +67,7 @@ def test_the_same_seed_draws_the_same_values_in_the_same_order():
     a, b = draw_identity(7), draw_identity(7)
     assert list(a.values.items()) == list(b.values.items())
     assert repr(sorted(a.values.items())).encode() == repr(sorted(b.values.items())).encode()
-    assert a.drawn == b.drawn == {"population": "1", "seed": "7", "given": ""}
+    assert a.drawn == b.drawn == {"population": "2", "seed": "7", "given": ""}
     # every value rounded (4 decimals, the age to 0.1 year), so it is written and read back exactly
     for name, value in a.values.items():
         assert value == round(value, 1 if name == "age" else 4), name
@@ -100,16 +100,16 @@ def test_the_cli_writes_the_seed_into_the_model_file_and_draws_the_same_identity
         assert made.returncode == 0, made.stderr
     assert "seed 7" in made.stdout
     assert _identity_block(first) == _identity_block(again)          # byte for byte
-    assert re.search(r'<drawn population="1" seed="7"\s*/>', _identity_block(first))
+    assert re.search(r'<drawn population="2" seed="7"\s*/>', _identity_block(first))
     record = load_model(first).identity
-    assert record.drawn == {"population": "1", "seed": "7", "given": ""}
+    assert record.drawn == {"population": "2", "seed": "7", "given": ""}
     assert record.values == draw_identity(7).values
 
     asked = tmp_path / "woman.xml"
     made = run("identity", "--random", "--seed", "7", "--sex", "female", "--age", "20-30", "-o", asked)
     assert made.returncode == 0, made.stderr
     record = load_model(asked).identity
-    assert record.drawn == {"population": "1", "seed": "7", "given": "sex=female;age=20-30"}
+    assert record.drawn == {"population": "2", "seed": "7", "given": "sex=female;age=20-30"}
     assert record.values["sex"] < 0.5 and 20 <= record.values["age"] <= 30
 
 
@@ -119,9 +119,9 @@ def test_a_design_asking_for_random_people_names_each_persons_seed_in_the_manife
                                 '[output]\nkinds = ["phones"]\n')
     with open(folder / "set" / "manifest.csv", newline="") as f:
         rows = list(csv.DictReader(f))
-    assert [r["identity"] for r in rows] == [f"random=1;seed={s};population=1" for s in (7, 8, 9)]
+    assert [r["identity"] for r in rows] == [f"random=1;seed={s};population=2" for s in (7, 8, 9)]
     # the levels a design asks for are the same people again
-    assert random_levels({"random": 3, "seed": 7}) == [{"random": 1, "seed": s, "population": 1} for s in (7, 8, 9)]
+    assert random_levels({"random": 3, "seed": 7}) == [{"random": 1, "seed": s, "population": 2} for s in (7, 8, 9)]
 
 
 # ----------------------------------------------------------------------------- different seeds, different people
@@ -280,3 +280,82 @@ def test_a_design_asking_for_bad_random_people_is_refused_at_its_line(tmp_path, 
     design.write_text(f'[factors]\ntext = ["Pappa."]\nidentity = {table}\n\n[output]\nkinds = ["phones"]\n')
     line = assert_user_error(run("stimuli", design, "-o", tmp_path / "set", "--dry-run"))
     assert "design.toml:3" in line and words in line
+
+
+# ----------------------------------------------------------------------------- the look drawn with the person
+
+
+def test_random_people_have_hair_drawn_by_sex_and_age(people):
+    from engine.identity.population import drawn_hair
+
+    hair = {p.drawn["seed"]: drawn_hair(p) for p in people}
+    assert all(h is not None and h.colour for h in hair.values())
+    women = [h for p, h in zip(people, hair.values(), strict=True) if p.value("sex") < 0.5]
+    men = [h for p, h in zip(people, hair.values(), strict=True) if p.value("sex") >= 0.5]
+    assert women and men
+    assert all(h.style != "none" and h.beard == "none" and h.brows != "none" for h in women)
+    assert {h.style for h in women} >= {"long", "tied"}
+    assert all(h.brows != "none" for h in men) and {h.beard for h in men} - {"none"}
+    assert any(h.beard == "none" for h in men)                       # sometimes a beard, not always
+    assert len({h.colour for h in hair.values()}) >= 4
+    assert drawn_hair(draw_identity(7)) == hair["7"]                  # the same seed, the same hair
+    assert drawn_hair(Identity({"sex": 1.0})) is None                 # a person not drawn keeps no hair
+
+
+def test_iris_colour_follows_ancestry_and_varies_per_person():
+    from engine.identity.iris import iris_name_and_colour
+
+    def names(ancestry: str) -> list[str]:
+        out = []
+        for age in range(20, 80):
+            chosen = iris_name_and_colour(Identity({**{r: float(r == ancestry) for r in RACES}, "age": float(age)}))
+            assert chosen is not None
+            out.append(chosen[0])
+        return out
+
+    african, european = names("african"), names("caucasian")
+    assert sum(n in ("dark-brown", "brown") for n in african) >= 0.9 * len(african)
+    assert {"blue", "grey", "green"} & set(european) and sum(n == "blue" for n in european) > 5
+    assert iris_name_and_colour(Identity()) is None                  # the default head keeps its own eyes
+
+
+def test_two_seeds_do_not_give_the_same_look(people):
+    from engine.identity.iris import iris_colour_for
+    from engine.identity.population import drawn_hair
+
+    looks = [(drawn_hair(p), tuple(iris_colour_for(p).tolist())) for p in people[:10]]
+    for a, b in itertools.combinations(looks, 2):
+        assert a != b
+
+
+@pytest.mark.slow
+def test_a_random_persons_head_wears_its_hair_and_iris_and_can_be_bald(tmp_path):
+    from engine.identity import make_identity_head
+    from engine.identity.iris import iris_colour_for, iris_colour_of
+    from engine.identity.population import drawn_hair
+
+    person = draw_identity(10)                                       # a man with a beard (drawn_hair)
+    head = make_identity_head(person)
+    assert {"eyebrow_left", "eyebrow_right", "hair", "hair_beard"} <= set(head.parts)
+    assert head.identity.hair == drawn_hair(person)
+    assert np.array_equal(iris_colour_of(head), iris_colour_for(person))
+    assert not np.array_equal(iris_colour_of(head), iris_colour_of(load_model()))
+    bald = tmp_path / "bald.xml"
+    made = run("identity", "--random", "--seed", "10", "--hair", "none", "-o", bald)
+    assert made.returncode == 0, made.stderr
+    kept = load_model(bald)
+    assert "hair" not in kept.parts and "hair_beard" in kept.parts and "eyebrow_left" in kept.parts
+    assert 'style="none"' in _identity_block(bald) and 'beard="beard"' in _identity_block(bald)
+
+
+def test_model_one_is_still_drawn_as_it_was_and_model_two_spreads_the_same_person_wider():
+    from engine.identity.population import SPREADS
+
+    old, new = draw_identity(7, population=1), draw_identity(7)
+    assert old.drawn["population"] == "1" and new.drawn["population"] == "2"
+    assert old.value("age") == new.value("age") and old.value("sex") == new.value("sex")   # the same person
+    assert old.values["nose-scale-horiz-decr-incr"] == -0.2036      # model 1's value for seed 7, as it was drawn
+    assert SPREADS[1] == (3.0, 15.0)
+    spread = [np.mean([abs(v) for k, v in draw_identity(s, population=p).values.items() if "-" in k])
+              for s in range(8) for p in (1, 2)]
+    assert np.mean(spread[1::2]) > 1.1 * np.mean(spread[0::2])
