@@ -159,7 +159,7 @@ def test_console_script_runs(model_path):
 
 
 def test_help_exits_zero():
-    result = run("--help")
+    result = run_in_process("--help")
     assert result.returncode == 0
     for verb in ("workbench", "info", "render", "pose", "import-mesh"):
         assert verb in result.stdout

@@ -15,6 +15,7 @@ import pytest
 from engine.speech.phone_sets import PHONE_SETS, guess_phone_set
 from engine.speech.recorded import LabelFileError, recorded_utterance, speak_recording
 from engine.speech.synthesis import read_wav, write_wav
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.test_festival import needs_festival
 from tests.engine.textgrids import write_textgrid
@@ -155,22 +156,23 @@ def test_video_audio_is_aligned_to_the_sample_and_frames_follow_the_labels(festi
 # ---------------------------------------------------------------------------
 
 def test_a_missing_tier_is_named():
-    line = assert_user_error(run("say", "--audio", MICHAEL_WAV, "--labels", MICHAEL_GRID, "--tier", "segments",
-                                 "-o", "x.xml"))
+    line = assert_user_error(run_in_process("say", "--audio", MICHAEL_WAV, "--labels", MICHAEL_GRID, "--tier",
+                                            "segments", "-o", "x.xml"))
     assert "no interval tier named 'segments'" in line and "'phones'" in line
 
 
 def test_labels_past_the_end_of_the_audio_are_refused(tmp_path):
     labels = tmp_path / "long.lab"
     labels.write_text("0 0.1 m\n0.1 3.0 a\n", encoding="utf-8")
-    line = assert_user_error(run("say", "--audio", MICHAEL_WAV, "--labels", labels, "-o", tmp_path / "x.xml"))
+    line = assert_user_error(run_in_process("say", "--audio", MICHAEL_WAV, "--labels", labels, "-o",
+                                            tmp_path / "x.xml"))
     assert line.startswith(f"error: {labels}:2:") and "past the end of the audio" in line
 
 
 def test_unknown_phones_are_named_with_their_lines_and_a_map_fixes_them(tmp_path, head):
     grid = tmp_path / "odd.TextGrid"
     grid.write_text(MICHAEL_GRID.read_text(encoding="utf-8").replace('"ɚ"', '"R-SCHWA"'), encoding="utf-8")
-    line = assert_user_error(run("say", "--audio", MICHAEL_WAV, "--labels", grid, "--phone-set", "ipa",
+    line = assert_user_error(run_in_process("say", "--audio", MICHAEL_WAV, "--labels", grid, "--phone-set", "ipa",
                                  "-o", tmp_path / "x.xml"))
     number = next(i for i, text in enumerate(grid.read_text(encoding="utf-8").splitlines(), 1) if "R-SCHWA" in text)
     assert line.startswith(f"error: {grid}:{number}:") and "does not know 'R-SCHWA'" in line and "--phone-map" in line
@@ -194,7 +196,7 @@ def test_inline_commands_without_a_word_tier_are_refused(tmp_path, head):
     (["hei", "--prosody", "--seed", "-1", "-o", "x.wav"], "'-1' must be from 0 to 4294967295"),
 ])
 def test_options_that_do_not_go_together(arguments, message):
-    assert message in assert_user_error(run("say", *arguments))
+    assert message in assert_user_error(run_in_process("say", *arguments))
 
 
 def test_recorded_utterance_fills_gaps_with_pauses(tmp_path):
