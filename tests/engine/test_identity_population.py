@@ -253,6 +253,8 @@ def test_bad_requests_say_what_is_wrong(call, words):
     (["--seed", "7", "--age", "95"], "'age' = 95 is outside its range"),
     (["--seed", "7", "--age", "old"], "--age must be YEARS or LOW-HIGH"),
     (["--seed", "7", "--sex", "female", "--set", "sex=0.9"], "contradicts the sex asked for"),
+    (["--seed", "7", "--population", "3"], "--population must be one of 1, 2, not '3'"),
+    (["--seed", "7", "--hair", "mohawk"], "unknown hair style 'mohawk'"),
 ])
 def test_the_cli_refuses_bad_input_in_one_line(tmp_path, args, words):
     out = tmp_path / "p.xml"
