@@ -11,6 +11,7 @@ import pytest
 from engine.stimuli import DesignError, load_design, parse_design
 from engine.stimuli.design import MAX_STIMULI
 from engine.stimuli.design_toml import MAX_NESTING
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.fuzz_support import no_hang
 
@@ -109,10 +110,10 @@ def test_integers_and_nesting_tomllib_cannot_take_are_one_error_at_their_line(te
 def test_the_command_says_so_in_one_line(tmp_path):
     design = tmp_path / "deep.toml"
     design.write_text(f"{TEXT}x = {'[' * 2000}{']' * 2000}\n", encoding="utf-8")
-    assert assert_user_error(run("stimuli", design, "-o", tmp_path / "out")) == \
+    assert assert_user_error(run_in_process("stimuli", design, "-o", tmp_path / "out")) == \
         f"error: {design}:3: arrays and tables nested more than {MAX_NESTING} deep"
     design.write_text(f"{TEXT}x = [{'7' * 10_000}]\n", encoding="utf-8")
-    assert assert_user_error(run("stimuli", design, "-o", tmp_path / "out")) == \
+    assert assert_user_error(run_in_process("stimuli", design, "-o", tmp_path / "out")) == \
         f"error: {design}:3: an integer of more than 4300 digits (no design needs one)"
     assert not (tmp_path / "out").exists()
 
