@@ -95,7 +95,8 @@ def report(cells, commands: list[tuple[str, str]], people: int) -> None:
         print(f"neutral read as neutral: {sum(neutral)} of {len(neutral)}")
     for command, _ in commands:
         got = sum(cells[(p, command)][0] == cells[(p, command)][3] for p in names)
-        print(f"  {command}: {got} of {len(names)}")
+        mean = np.mean([cells[(p, command)][2] for p in names])
+        print(f"  {command}: {got} of {len(names)}, mean probability of the intended class {mean:.2f}")
 
 
 def main() -> int:
