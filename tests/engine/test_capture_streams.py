@@ -25,6 +25,7 @@ from tests.engine.capture_stream_files import (
     mediapipe_json,
     openface_text,
 )
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 
 
@@ -276,13 +277,13 @@ def test_cli_writes_a_video_with_one_frame_per_output_frame(tmp_path):
 def test_cli_bad_files_end_with_one_line_and_status_2(tmp_path, content):
     source = tmp_path / "bad.csv"
     source.write_text(content)
-    line = assert_user_error(run("capture", "animate", source, "-o", tmp_path / "out.csv"))
+    line = assert_user_error(run_in_process("capture", "animate", source, "-o", tmp_path / "out.csv"))
     assert "bad.csv" in line
     assert not (tmp_path / "out.csv").exists()
 
 
 def test_cli_refuses_an_unknown_output_kind(tmp_path):
-    line = assert_user_error(run("capture", "animate", LLF_MOUTH, "-o", tmp_path / "out.gif"))
+    line = assert_user_error(run_in_process("capture", "animate", LLF_MOUTH, "-o", tmp_path / "out.gif"))
     assert "out.gif" in line
 
 
@@ -316,7 +317,8 @@ def test_cli_video_carries_the_audio_given(tmp_path):
 
 
 def test_cli_named_format_that_does_not_fit_is_refused(tmp_path):
-    line = assert_user_error(run("capture", "animate", LLF_MOUTH, "--format", "openface", "-o", tmp_path / "o.csv"))
+    line = assert_user_error(run_in_process("capture", "animate", LLF_MOUTH, "--format", "openface", "-o",
+                                            tmp_path / "o.csv"))
     assert "llf_rom_mouth.csv:1:" in line and "OpenFace" in line
 
 

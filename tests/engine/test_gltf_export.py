@@ -38,6 +38,7 @@ from engine.outputs.gltf_export import (
 from engine.outputs.gltf_skeleton import quaternion, rotation_from_x
 from engine.outputs.part_layout import PartLayout
 from engine.paths import default_model_path, reference_poses_path
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 
 ARKIT_SAMPLE = ("jawOpen", "mouthSmileLeft", "eyeBlinkRight", "browInnerUp", "tongueOut")
@@ -565,7 +566,7 @@ def test_cli_exports_a_selection(tmp_path):
 def test_cli_errors(tmp_path, arguments, message):
     if not default_model_path().exists():
         pytest.skip("the default head is not built")
-    line = assert_user_error(run("export-gltf", *arguments, cwd=tmp_path))
+    line = assert_user_error(run_in_process("export-gltf", *arguments, cwd=tmp_path))
     assert message in line, line
     assert not list(tmp_path.iterdir())
 
@@ -575,7 +576,8 @@ def test_cli_needs_a_poses_file_for_another_model(tmp_path):
     from engine import save_model
 
     save_model(small_model(), tmp_path / "small.xml")
-    line = assert_user_error(run("export-gltf", "-m", tmp_path / "small.xml", "--arkit", "-o", tmp_path / "s.glb"))
+    line = assert_user_error(run_in_process("export-gltf", "-m", tmp_path / "small.xml", "--arkit", "-o",
+                                            tmp_path / "s.glb"))
     assert "the shipped poses fit the shipped head only" in line and "--poses" in line
     result = run("export-gltf", "-m", tmp_path / "small.xml", "-o", tmp_path / "s.glb")
     assert result.returncode == 0, result.stderr

@@ -32,6 +32,7 @@ from engine.study.analysis import analyse
 from engine.study.columns import columns_for
 from engine.study.measures import chance_proportion, hu_table, newcombe, paired_t, unbiased_hit_rate, wilson
 from engine.study.results import ResultsError, read_results, read_results_text
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 
 COLUMNS, _ = columns_for(["intensity", "naturalness"], ["expression"])
@@ -177,7 +178,7 @@ def test_a_trial_given_twice_counts_once_and_two_different_ones_are_refused(tmp_
 # -- bad input: one line naming the file, status 2 ---------------------------------------------------------------
 
 def _analyse(tmp_path: Path, *files: Path, extra: tuple[str, ...] = ()) -> str:
-    return assert_user_error(run("study-analyse", *files, *extra, "-o", tmp_path / "report"))
+    return assert_user_error(run_in_process("study-analyse", *files, *extra, "-o", tmp_path / "report"))
 
 
 def test_results_from_another_study_are_refused(tmp_path):
