@@ -36,6 +36,7 @@ from engine.speech.articulation import DEFAULTS, ArticulationTable, Target, load
 from engine.speech.articulation_writer import articulation_text
 from engine.speech.coarticulation import articulation_tracks
 from engine.speech.synthesis import Segment
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.fuzz_support import FUZZ
 from tests.engine.mocap_samples import TRAINING_PHONES, parse_phones
@@ -176,7 +177,8 @@ def test_bad_inputs_are_refused_in_one_line(capture, tmp_path):
     save_session(foreign, tmp_path / "foreign.h5")
 
     def learn(*args):
-        return run("mocap", "learn", *args, "--articulation", tmp_path / "art.h5", "-o", tmp_path / "x.phones")
+        return run_in_process("mocap", "learn", *args, "--articulation", tmp_path / "art.h5", "-o",
+                              tmp_path / "x.phones")
 
     assert "no phone labels" in assert_user_error(learn(tmp_path / "unlabelled.h5"))
     assert "unlabelled.h5" in assert_user_error(learn(tmp_path / "unlabelled.h5"))
@@ -186,8 +188,8 @@ def test_bad_inputs_are_refused_in_one_line(capture, tmp_path):
     assert "120%" in assert_user_error(learn(tmp_path / "one.h5", "--holdout", "120%"))
     assert "percentage" in assert_user_error(learn(tmp_path / "one.h5", "--holdout", "a lot"))
     assert "cannot hold out" in assert_user_error(learn(tmp_path / "one.h5", "--holdout", "95%"))
-    bad_out = run("mocap", "learn", tmp_path / "one.h5", "--articulation", tmp_path / "art.h5",
-                  "-o", tmp_path / "x.txt")
+    bad_out = run_in_process("mocap", "learn", tmp_path / "one.h5", "--articulation", tmp_path / "art.h5",
+                             "-o", tmp_path / "x.txt")
     assert ".phones" in assert_user_error(bad_out)
     assert not (tmp_path / "x.phones").exists()
 
