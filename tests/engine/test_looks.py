@@ -26,6 +26,7 @@ from engine.outputs.occlusion import model_occlusion
 from engine.outputs.part_layout import PartLayout
 from engine.outputs.render import FrameRenderer, render_model
 from engine.web.site import project, site_camera
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, made_set, run
 from tests.engine.test_festival import needs_festival
 
@@ -254,7 +255,8 @@ def test_render_takes_a_look(head, tmp_path):
     assert result.returncode == 0, result.stderr
     assert np.array_equal(np.asarray(Image.open(out).convert("RGB")), render_model(head, {}, size=(120, 160),
                                                                                   look="flat"))
-    assert "unknown look 'studio'" in assert_user_error(run("render", "--look", "studio", "-o", tmp_path / "x.png"))
+    assert "unknown look 'studio'" in assert_user_error(run_in_process("render", "--look", "studio", "-o",
+                                                                       tmp_path / "x.png"))
 
 
 # -- videos and stimulus sets -------------------------------------------------------------------------------

@@ -16,6 +16,7 @@ from PIL import Image
 
 from engine.validation import EMOTIONS, Intended, judge_file, judge_pixels, summarise, validate, write_tables
 from engine.validation.observers import observers
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, made_set, run
 
 skimage_data = pytest.importorskip("skimage.data")
@@ -116,7 +117,7 @@ def test_bad_files_get_a_row_each_and_the_run_goes_on(tmp_path, astronaut):
 def test_nothing_readable_is_one_error_line_and_status_2(tmp_path):
     text = tmp_path / "notes.txt"
     text.write_text("not a picture\n")
-    line = assert_user_error(run("validate", text, tmp_path / "missing.png", "-o", tmp_path / "v.csv"))
+    line = assert_user_error(run_in_process("validate", text, tmp_path / "missing.png", "-o", tmp_path / "v.csv"))
     assert "no file could be read" in line and "notes.txt" in line
     assert not (tmp_path / "v.csv").exists()
 
@@ -125,10 +126,10 @@ def test_a_bad_intended_table_names_its_file_and_line(tmp_path, astronaut):
     good = _png(tmp_path, "a.png", astronaut)
     table = tmp_path / "intended.csv"
     table.write_text("file,emotion\na.png,happy\na.png,joyful-ish\n")
-    line = assert_user_error(run("validate", good, "--intended", table, "-o", tmp_path / "v.csv"))
+    line = assert_user_error(run_in_process("validate", good, "--intended", table, "-o", tmp_path / "v.csv"))
     assert f"{table}:3:" in line and "joyful-ish" in line
     table.write_text("picture,feeling\na.png,happy\n")
-    line = assert_user_error(run("validate", good, "--intended", table, "-o", tmp_path / "v.csv"))
+    line = assert_user_error(run_in_process("validate", good, "--intended", table, "-o", tmp_path / "v.csv"))
     assert f"{table}:1:" in line
 
 
