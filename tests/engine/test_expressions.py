@@ -142,10 +142,15 @@ def test_anger_lowers_and_draws_the_brows_and_narrows_the_lips(head, library, re
 
 def test_disgust_wrinkles_the_nose_and_raises_the_upper_lip(head, library, rest):
     m = moved(head, rest, at_apex(head, library, "Disgust"))
+    anger = moved(head, rest, at_apex(head, library, "Anger"))
     assert m["9.1"][1] > 2.0 and m["9.2"][1] > 2.0, "nose wings up (AU9)"
     assert m["8.5"][1] > 2.0 and m["8.6"][1] > 2.0, "upper lip up (AU9, AU10)"
-    assert m["8.7"][1] < -1.5 and m["8.8"][1] < -1.5, "lower lip down (AU16)"
-    assert abs(m["4.1"][1]) < 0.5, "the brows left where they are (AU9's nose part only: lowered, they read as anger)"
+    assert m["8.5"][1] > anger["8.5"][1] + 2.0, "more than anger's"
+    assert m["8.7"][1] > 1.0 and m["8.8"][1] > 1.0, "the lower lip pushed up under it (AU17: 9 + 10 + 17)"
+    assert m["4.1"][1] > anger["4.1"][1] + 2.0, "the brows lowered far less than anger's (AU9's pull, no AU4)"
+    lm, angry = (head.landmark_positions(at_apex(head, library, n)) for n in ("Disgust", "Anger"))
+    assert np.linalg.norm(lm["4.1"] - lm["4.2"]) > np.linalg.norm(angry["4.1"] - angry["4.2"]) + 1.0, \
+        "drawn together less than anger's"
 
 
 def test_contempt_is_one_sided(head, library, rest):
