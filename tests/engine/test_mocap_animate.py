@@ -29,6 +29,7 @@ from engine.mocap.session import save_session
 from engine.mocap.synthetic import synthesize_recording
 from engine.model.head_rotation import head_rotation_values
 from engine.outputs.animation_file import shift_audio
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.mocap_samples import TRAINING_PHONES, parse_phones
 
@@ -196,7 +197,7 @@ def test_cli_writes_a_video_with_the_take_s_sound_later_by_the_offset(files):
 def test_cli_refuses_bad_arguments_in_one_line(files, args, words):
     full = ["mocap", "animate", files / "take.h5", "--articulation", files / "art.h5",
             *[files / a if a.startswith("take.") else a for a in args]]
-    result = run(*full)
+    result = run_in_process(*full)
     if words is None:           # another prefix on the default head: components added, it works
         assert result.returncode == 0, result.stderr
         return
@@ -210,6 +211,6 @@ def test_cli_refuses_a_model_with_only_some_components(files, take, tmp_path):
     apply_articulation(head, art)
     head.remove_parameter("pca2")
     save_model(head, tmp_path / "partial.xml")
-    result = run("mocap", "animate", files / "take.h5", "--articulation", files / "art.h5", "-m",
-                 tmp_path / "partial.xml", "-o", tmp_path / "x.csv")
+    result = run_in_process("mocap", "animate", files / "take.h5", "--articulation", files / "art.h5", "-m",
+                            tmp_path / "partial.xml", "-o", tmp_path / "x.csv")
     assert "some of the component parameters" in assert_user_error(result)

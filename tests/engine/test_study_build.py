@@ -20,6 +20,7 @@ from pathlib import Path
 
 import pytest
 
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.test_study_helpers import STUDY_DESIGN, make_study_inputs
 
@@ -146,7 +147,7 @@ def test_building_again_replaces_the_study_and_drops_what_is_gone(study, inputs,
 def test_a_folder_of_other_files_is_refused(inputs, tmp_path):
     (tmp_path / "out").mkdir()
     (tmp_path / "out" / "notes.txt").write_text("mine")
-    line = assert_user_error(run("study", inputs / "study.toml", "-o", tmp_path / "out"))
+    line = assert_user_error(run_in_process("study", inputs / "study.toml", "-o", tmp_path / "out"))
     assert line == f"error: {tmp_path / 'out'}: the folder is not empty and holds no earlier study: choose a new " \
                    "or empty folder"
 
@@ -156,7 +157,7 @@ def _in(inputs: Path, tmp_path: Path, text: str) -> str:
         (tmp_path / name).symlink_to(inputs / name)
     for name in ("actors.csv", "consent.md"):
         shutil.copyfile(inputs / name, tmp_path / name)
-    return assert_user_error(run("study", _design(tmp_path, text), "-o", tmp_path / "out"))
+    return assert_user_error(run_in_process("study", _design(tmp_path, text), "-o", tmp_path / "out"))
 
 
 @pytest.mark.parametrize("changes", [
@@ -204,7 +205,7 @@ def test_a_bad_human_table_is_one_line_naming_its_line(inputs, tmp_path, table, 
         (tmp_path / name).symlink_to(inputs / name)
     shutil.copyfile(inputs / "consent.md", tmp_path / "consent.md")
     (tmp_path / "actors.csv").write_text(table)
-    line = assert_user_error(run("study", _design(tmp_path, STUDY_DESIGN), "-o", tmp_path / "out"))
+    line = assert_user_error(run_in_process("study", _design(tmp_path, STUDY_DESIGN), "-o", tmp_path / "out"))
     assert line.startswith(f"error: {tmp_path / 'actors.csv'}") and expected in line, line
 
 
@@ -214,7 +215,7 @@ def test_a_set_changed_since_it_was_made_is_refused(inputs, tmp_path):
     for name in ("actors.csv", "consent.md"):
         shutil.copyfile(inputs / name, tmp_path / name)
     (tmp_path / "set" / "0002.png").write_bytes((inputs / "set" / "0001.png").read_bytes())
-    line = assert_user_error(run("study", _design(tmp_path, STUDY_DESIGN), "-o", tmp_path / "out"))
+    line = assert_user_error(run_in_process("study", _design(tmp_path, STUDY_DESIGN), "-o", tmp_path / "out"))
     assert line == f"error: {tmp_path / 'set' / 'manifest.csv'}:3: stimulus 0002: 0002.png has changed since the " \
                    "set was made (its SHA-256 is not the manifest's)"
 
@@ -227,7 +228,7 @@ def test_a_set_without_the_files_a_condition_needs_is_refused(inputs, tmp_path):
     keep = [i for i, name in enumerate(header) if name not in ("file_mp4", "sha256_mp4")]
     manifest.write_text("\n".join(",".join(r.split(",")[i] for i in keep) for r in rows) + "\n")
     text = STUDY_DESIGN.replace("[human]\ntable = \"actors.csv\"\n", "").replace("consent = \"consent.md\"", "")
-    line = assert_user_error(run("study", _design(tmp_path, text), "-o", tmp_path / "out"))
+    line = assert_user_error(run_in_process("study", _design(tmp_path, text), "-o", tmp_path / "out"))
     assert line == f"error: {manifest}:1: the dynamic condition needs each stimulus's video: make the set with " \
                    "\"mp4\" among [output] kinds (or dynamic = \"live\" with tracks and wav)"
 
@@ -246,8 +247,8 @@ def test_a_study_of_a_set_design_makes_the_set_first(tmp_path):
     again = run("study", design, "-o", tmp_path / "study", "--workers", "1")            # the set is kept
     assert again.returncode == 0 and "the set made in" not in again.stdout
     (tmp_path / "faces.toml").write_text("name = \"other\"\n" + (tmp_path / "faces.toml").read_text())
-    line = assert_user_error(run("study", design, "-o", tmp_path / "study"))
+    line = assert_user_error(run_in_process("study", design, "-o", tmp_path / "study"))
     assert "this set was made from another design" in line
     design.write_text(design.read_text().replace('["static"]', '["static", "dynamic"]'))
-    line = assert_user_error(run("study", design, "-o", tmp_path / "elsewhere"))
+    line = assert_user_error(run_in_process("study", design, "-o", tmp_path / "elsewhere"))
     assert line == f"error: {tmp_path / 'faces.toml'}: the dynamic condition needs mp4 among the set's [output] kinds"

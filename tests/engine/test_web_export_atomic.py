@@ -22,6 +22,7 @@ import pytest
 from engine.errors import UserError
 from engine.speech.synthesis import wav_bytes
 from engine.web.site import MARKER, check_folder, write_folder, write_site
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, made_set, run
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -95,7 +96,7 @@ def test_the_cli_refuses_a_linked_folder_in_one_line(head, tmp_path):
     assert run("web-export", "--stimuli", set_folder / "set", "-o", out).returncode == 0
     os.rename(out / "stimuli", tmp_path / "old-stimuli")
     (out / "stimuli").symlink_to(tmp_path)
-    line = assert_user_error(run("web-export", "--stimuli", set_folder / "set", "-o", out))
+    line = assert_user_error(run_in_process("web-export", "--stimuli", set_folder / "set", "-o", out))
     assert line.startswith(f"error: {out / 'stimuli'}: ") and "symbolic link" in line, line
 
 
