@@ -22,6 +22,7 @@ import pytest
 
 from engine.stimuli import DesignError, load_design, make_set, parse_design
 from engine.stimuli.make import RECORDS, sha256_of
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, run
 from tests.engine.test_festival import needs_festival
 
@@ -78,7 +79,7 @@ def test_crossing_lists_and_blocks():
 def test_a_bad_design_names_file_line_and_key(tmp_path, text, line, message):
     design = tmp_path / "bad.toml"
     design.write_text(text, encoding="utf-8")
-    error = assert_user_error(run("stimuli", design, "-o", tmp_path / "out"))
+    error = assert_user_error(run_in_process("stimuli", design, "-o", tmp_path / "out"))
     assert error.startswith(f"error: {design}:{line}: ") and message in error, error
     assert not (tmp_path / "out").exists()                               # nothing is written
 
@@ -351,7 +352,7 @@ kinds = ["wav"]
 def test_a_stimulus_that_fails_first_leaves_no_empty_set_folder(tmp_path):
     """'Pappa.' has no i to align at: found only when the stimulus is made, before anything is finished."""
     (tmp_path / "d.toml").write_text(_FAILS_AT.format(texts='"Pappa."'))
-    line = assert_user_error(run("stimuli", tmp_path / "d.toml", "-o", tmp_path / "set", "--workers", "1"))
+    line = assert_user_error(run_in_process("stimuli", tmp_path / "d.toml", "-o", tmp_path / "set", "--workers", "1"))
     assert "stimulus 0001: 'Pappa.' has no 'i'" in line
     assert not (tmp_path / "set").exists()
 
@@ -377,7 +378,7 @@ def test_a_failing_stimulus_leaves_a_folder_the_user_made_in_place(tmp_path):
     out = tmp_path / "mine"
     out.mkdir()
     (tmp_path / "d.toml").write_text(_FAILS_AT.format(texts='"Pappa."'))
-    assert_user_error(run("stimuli", tmp_path / "d.toml", "-o", out, "--workers", "1"))
+    assert_user_error(run_in_process("stimuli", tmp_path / "d.toml", "-o", out, "--workers", "1"))
     assert out.is_dir()
 
 

@@ -20,6 +20,7 @@ from engine.web.animation import dequantised
 from engine.web.player_bundle import IMPORT
 from engine.web.site import SITE_FILES, write_speech_site
 from engine.web.web_model import QUANTISATION, dequantised_target, web_glb, web_gltf_document
+from tests.engine.cli_in_process import run_in_process
 from tests.engine.cli_runner import assert_user_error, made_set, run
 
 SENTENCE = "Pappa osti mummolle paljon omenoita."
@@ -150,7 +151,7 @@ def test_a_broken_tracks_file_is_named_with_its_line(tmp_path):
     tracks = tmp_path / "t.csv"
     tracks.write_text("time_ms,jaw_open\n0,0.1\n33.3,lots\n")
     (tmp_path / "a.wav").write_bytes(_silent_wav())
-    line = assert_user_error(run("web-export", "--tracks", tracks, "--audio", tmp_path / "a.wav", "-o",
+    line = assert_user_error(run_in_process("web-export", "--tracks", tracks, "--audio", tmp_path / "a.wav", "-o",
                                  tmp_path / "site"))
     assert line.startswith(f"error: {tracks}:3:"), line
     assert not (tmp_path / "site").exists()
@@ -161,7 +162,8 @@ def test_an_audio_file_that_is_not_a_wav_is_named(tmp_path):
     tracks.write_text("time_ms,jaw_open\n0,0.1\n33.3,0.2\n")
     audio = tmp_path / "a.wav"
     audio.write_bytes(b"ID3\x03 not a wave at all")
-    line = assert_user_error(run("web-export", "--tracks", tracks, "--audio", audio, "-o", tmp_path / "site"))
+    line = assert_user_error(run_in_process("web-export", "--tracks", tracks, "--audio", audio, "-o",
+                                            tmp_path / "site"))
     assert f"{audio}" in line, line
 
 
@@ -173,14 +175,14 @@ def test_an_audio_file_that_is_not_a_wav_is_named(tmp_path):
     (("--say", "Hei.", "--design", "d.toml"), "--design goes with --stimuli"),
 ])
 def test_options_that_do_not_go_together_are_refused(tmp_path, args, says):
-    line = assert_user_error(run("web-export", *args, "-o", tmp_path / "site", cwd=tmp_path))
+    line = assert_user_error(run_in_process("web-export", *args, "-o", tmp_path / "site", cwd=tmp_path))
     assert says in line, line
 
 
 def test_a_folder_holding_other_files_is_not_overwritten(tmp_path):
     keep = tmp_path / "mine.txt"
     keep.write_text("my notes")
-    line = assert_user_error(run("web-export", "--say", "Hei.", "-o", tmp_path))
+    line = assert_user_error(run_in_process("web-export", "--say", "Hei.", "-o", tmp_path))
     assert line.startswith(f"error: {tmp_path}:") and "not empty" in line, line
     assert keep.read_text() == "my notes" and not (tmp_path / "index.html").exists()
 
@@ -263,7 +265,7 @@ def test_a_set_without_tracks_is_refused_by_its_manifest(stimulus_set, tmp_path)
         return out.getvalue()
 
     copy = _edited_set(stimulus_set, tmp_path, without_tracks)
-    line = assert_user_error(run("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
+    line = assert_user_error(run_in_process("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
     assert line.startswith(f"error: {copy / 'manifest.csv'}:1:") and '"tracks"' in line, line
 
 
@@ -273,7 +275,7 @@ def test_a_set_of_several_heads_needs_its_design_and_is_refused_with_the_row(sti
         return "\n".join([lines[0] + ",model"] + [line + ",other-head.xml" for line in lines[1:]]) + "\n"
 
     copy = _edited_set(stimulus_set, tmp_path, with_models)
-    line = assert_user_error(run("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
+    line = assert_user_error(run_in_process("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
     assert line.startswith(f"error: {copy / 'manifest.csv'}:2:") and "'model'" in line and "--design" in line, line
 
 
@@ -298,7 +300,7 @@ def test_a_set_of_identities_becomes_one_site_with_each_head(identity_set, tmp_p
     from engine.stimuli.heads import stimulus_head
 
     site = tmp_path / "site"
-    refused = assert_user_error(run("web-export", "--stimuli", identity_set / "set", "-o", site))
+    refused = assert_user_error(run_in_process("web-export", "--stimuli", identity_set / "set", "-o", site))
     assert "factor 'identity'" in refused and "--design" in refused, refused
     result = run("web-export", "--stimuli", identity_set / "set", "--design", identity_set / "design.toml", "-o", site)
     assert result.returncode == 0, result.stderr
@@ -326,10 +328,10 @@ def test_a_set_of_identities_becomes_one_site_with_each_head(identity_set, tmp_p
 def test_a_design_the_set_was_not_made_from_is_refused(identity_set, tmp_path):
     other = tmp_path / "other.toml"
     other.write_text(IDENTITIES.replace("age = 60", "age = 61"))
-    line = assert_user_error(run("web-export", "--stimuli", identity_set / "set", "--design", other,
+    line = assert_user_error(run_in_process("web-export", "--stimuli", identity_set / "set", "--design", other,
                                  "-o", tmp_path / "site"))
     assert line.startswith(f"error: {other}:") and "not the design this set was made from" in line, line
-    line = assert_user_error(run("web-export", "--stimuli", identity_set / "set", "--design",
+    line = assert_user_error(run_in_process("web-export", "--stimuli", identity_set / "set", "--design",
                                  identity_set / "design.toml", "-m", "x.xml", "-o", tmp_path / "site"))
     assert "-m does not go with --design" in line, line
     assert not (tmp_path / "site").exists()
@@ -338,13 +340,13 @@ def test_a_design_the_set_was_not_made_from_is_refused(identity_set, tmp_path):
 def test_a_missing_stimulus_file_is_named_with_its_row(stimulus_set, tmp_path):
     copy = _edited_set(stimulus_set, tmp_path, lambda text: text)
     (copy / "0003.wav").unlink()
-    line = assert_user_error(run("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
+    line = assert_user_error(run_in_process("web-export", "--stimuli", copy, "-o", tmp_path / "site"))
     assert line.startswith(f"error: {copy / 'manifest.csv'}:4:") and "0003.wav" in line, line
     assert not (tmp_path / "site").exists()
 
 
 def test_a_folder_that_is_no_set_is_refused(tmp_path):
-    line = assert_user_error(run("web-export", "--stimuli", tmp_path, "-o", tmp_path / "site"))
+    line = assert_user_error(run_in_process("web-export", "--stimuli", tmp_path, "-o", tmp_path / "site"))
     assert line.startswith(f"error: {tmp_path / 'manifest.csv'}:") and "no manifest.csv" in line, line
 
 
@@ -384,5 +386,5 @@ def test_a_text_file_is_spoken_like_the_same_text(tmp_path):
     assert a["channels"] == b["channels"] and a["words"] == b["words"]
     broken = tmp_path / "latin1.txt"
     broken.write_bytes("Hyvää päivää".encode("latin-1"))
-    line = assert_user_error(run("web-export", "--file", broken, "-o", tmp_path / "c"))
+    line = assert_user_error(run_in_process("web-export", "--file", broken, "-o", tmp_path / "c"))
     assert line.startswith(f"error: {broken}"), line
