@@ -32,15 +32,26 @@ HEAD_FACTORS = ("model", "identity", "identity_b", "identity_morph")
 
 def stimulus_head(design: Design, levels: dict[str, Any]) -> Model:
     """The stimulus's head: its ``model`` file, or the head of its ``identity`` (at ``identity_morph`` % of the
-    way to ``identity_b``), made on the ``model`` (default: the default head)."""
+    way to ``identity_b``), made on the ``model`` (default: the default head), with the hair its level asks
+    for or, for a random person, the hair drawn with it."""
     base = str(design.extra_files[levels["model"]]) if "model" in levels else ""
     if "identity" not in levels and "identity_b" not in levels:
         return _model(base)
     ends = [_identity_values(design, levels.get(key, {})) for key in ("identity", "identity_b")]
     share = float(levels.get("identity_morph", 0.0)) / 100.0
-    from engine.identity.hair_style import hair_from_level
+    return _identity_head(base, ends[0], ends[1], share, _hair(levels.get("identity")))
 
-    return _identity_head(base, ends[0], ends[1], share, hair_from_level(levels.get("identity")))
+
+def _hair(level: Any) -> HairChoice | None:
+    """The hair of an identity level: what it asks for, else a random person's hair drawn with it (as
+    ``identity --random`` gives it), else none. A continuum keeps its first person's hair at every step."""
+    from engine.identity.hair_style import hair_from_level
+    from engine.identity.population import drawn_hair, is_random_level, level_identity
+
+    asked = hair_from_level(level)
+    if asked is None and is_random_level(level):
+        return drawn_hair(level_identity(level))
+    return asked
 
 
 def head_key(levels: dict[str, Any]) -> str:

@@ -361,3 +361,22 @@ def test_model_one_is_still_drawn_as_it_was_and_model_two_spreads_the_same_perso
     spread = [np.mean([abs(v) for k, v in draw_identity(s, population=p).values.items() if "-" in k])
               for s in range(8) for p in (1, 2)]
     assert np.mean(spread[1::2]) > 1.1 * np.mean(spread[0::2])
+
+
+@pytest.mark.slow
+def test_a_designs_random_person_wears_the_hair_drawn_with_it():
+    """A stimulus design's random person is the person `identity --random` makes, hair and all; hair the
+    level asks for replaces it."""
+    from engine.identity.hair import pieces_for
+    from engine.identity.population import drawn_hair, level_identity
+    from engine.stimuli import parse_design
+    from engine.stimuli.heads import stimulus_head
+
+    design = parse_design('[factors]\ntext = ["Moi."]\nidentity = {random = 1, seed = 7}\n'
+                          '[output]\nkinds = ["phones"]\n', "d.toml")
+    levels = design.stimuli[0].levels
+    hair = drawn_hair(level_identity(levels["identity"]))
+    assert hair is not None
+    head = stimulus_head(design, levels)
+    assert set(pieces_for(hair)) and set(pieces_for(hair)) <= set(head.parts)
+    assert head.identity is not None and head.identity.values == level_identity(levels["identity"]).values
