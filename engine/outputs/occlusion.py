@@ -38,6 +38,7 @@ in an open mouth and closed lips do not show a dark band where they meet.
 from __future__ import annotations
 
 import weakref
+from collections import OrderedDict
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -46,8 +47,8 @@ if TYPE_CHECKING:
     from engine.model import Model
     from engine.outputs.part_layout import PartLayout
 
-__all__ = ["DIRECTIONS", "VOXEL_MM", "mesh_occlusion", "model_occlusion", "part_vertex_occlusion",
-           "settings"]
+__all__ = ["DIRECTIONS", "VOXEL_MM", "forget_computed", "mesh_occlusion", "model_occlusion",
+           "part_vertex_occlusion", "settings"]
 
 DIRECTIONS = 40                  # rays per point
 VOXEL_MM = 1.5                   # the grid the surface is marked in
@@ -57,6 +58,10 @@ _FIRST = 1.5                     # and take their first sample this many cells f
 _STEPS = 14                      # samples along each ray
 _CHUNK = 512                     # points marched at once (memory: CHUNK × DIRECTIONS × steps)
 _cache: weakref.WeakKeyDictionary[Model, tuple[tuple[str, float], np.ndarray]] = weakref.WeakKeyDictionary()
+#: Values by what they are computed from (the posed meshes and the layout), for another model object of the
+#: same head: a file loaded again, a workbench window's model replaced by the same file. At most this many.
+_BY_CONTENT_SIZE = 8
+_by_content: OrderedDict[str, np.ndarray] = OrderedDict()
 
 
 def settings() -> dict[str, object]:
@@ -70,7 +75,9 @@ def model_occlusion(model: Model, radius_mm: float = 30.0, layout: PartLayout | 
     """Each point's open sky (0..1) in ``layout``'s stacked order (``PartLayout(model)`` if not given).
 
     Kept per model and radius until the model's mesh or rig changes: a stimulus set or a video computes
-    it once, and a forked render helper inherits it.
+    it once, and a forked render helper inherits it. Kept too by what it is computed from (the rest and
+    jaw-open positions, the layout, the radius), so another model object of the same head (the file
+    loaded again, a workbench window's model replaced by the same file) takes the same values at once.
     """
     from engine.outputs.part_layout import PartLayout
 
@@ -79,16 +86,45 @@ def model_occlusion(model: Model, radius_mm: float = 30.0, layout: PartLayout | 
     if cached is not None and cached[0] == key:
         return cached[1]
     layout = layout if layout is not None else PartLayout(model)
-    rest = model.deform()
-    values = _layout_occlusion(layout, rest, radius_mm)
+    poses = [model.deform()]
     if _JAW in model.parameters:
         jaw = model.parameters[_JAW]
-        opened = _layout_occlusion(layout, model.deform({_JAW: jaw.default + _JAW_SHARE * (jaw.maximum - jaw.default)}),
-                                   radius_mm)
-        np.maximum(values, opened, out=values)
-    values.setflags(write=False)
+        poses.append(model.deform({_JAW: jaw.default + _JAW_SHARE * (jaw.maximum - jaw.default)}))
+    content = _content_key(layout, poses, radius_mm)
+    values = _by_content.get(content)
+    if values is None:
+        values = _layout_occlusion(layout, poses[0], radius_mm)
+        for opened in poses[1:]:
+            np.maximum(values, _layout_occlusion(layout, opened, radius_mm), out=values)
+        values.setflags(write=False)
+        _by_content[content] = values
+        while len(_by_content) > _BY_CONTENT_SIZE:
+            _by_content.popitem(last=False)
+    else:
+        _by_content.move_to_end(content)
     _cache[model] = (key, values)
     return values
+
+
+def forget_computed() -> None:
+    """Drop every value kept, so the next call computes afresh (to check that it gives the same)."""
+    _cache.clear()
+    _by_content.clear()
+
+
+def _content_key(layout: PartLayout, poses: list[np.ndarray], radius_mm: float) -> str:
+    """Everything the values are computed from: the positions of each pose, the parts' meshes as laid
+    out (points, polygons), the radius and the method's settings."""
+    import hashlib
+
+    digest = hashlib.sha1(usedforsecurity=False)
+    for positions in poses:
+        digest.update(np.ascontiguousarray(positions, dtype=float).tobytes())
+    digest.update(np.ascontiguousarray(layout.gather).tobytes())
+    for k in range(len(layout.parts)):
+        digest.update(np.ascontiguousarray(layout.cells[k]).tobytes())
+    digest.update(repr((list(layout.parts), list(layout.slices), float(radius_mm), settings())).encode())
+    return digest.hexdigest()
 
 
 def part_vertex_occlusion(model: Model, radius_mm: float = 30.0) -> dict[str, np.ndarray]:
