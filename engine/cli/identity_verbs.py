@@ -97,7 +97,7 @@ def run_identity(args: argparse.Namespace) -> int:
 def _hair(args: argparse.Namespace, identity: Any = None) -> Any:
     """The hair ``--hair``, ``--hair-colour``, ``--beard`` and ``--brows`` ask for (None: none of them given).
 
-    A random person starts from the hair drawn with it (population.drawn_hair); each option given replaces
+    A random person starts from the hair drawn with it (population_hair.drawn_hair); each option given replaces
     that part (``--hair none`` a bald scalp, ``--beard none`` a shaven face, ``--brows none`` painted brows).
     """
     given = [args.hair, args.hair_colour, args.beard, args.brows]
@@ -106,7 +106,7 @@ def _hair(args: argparse.Namespace, identity: Any = None) -> Any:
     from engine.identity.hair_style import HairChoice
 
     asked = HairChoice.parse(style=args.hair, colour=args.hair_colour, beard=args.beard, brows=args.brows)
-    from engine.identity.population import drawn_hair
+    from engine.identity.population_hair import drawn_hair
 
     drawn = drawn_hair(identity) if identity is not None else None
     if drawn is None:

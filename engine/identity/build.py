@@ -138,7 +138,7 @@ def make_identity_head(identity: Identity, base: Model | None = None,
     ``identity`` and is named after it. ``between_stages()`` is called before each of the
     build's stages; an exception it raises ends the build (how a photo fit is stopped part-way).
     ``hair`` (:mod:`engine.identity.hair`): brows, scalp and facial hair grown on the finished head; a
-    random person's (``identity.drawn``) is the hair drawn with it (population.drawn_hair) unless given.
+    random person's (``identity.drawn``) is the hair drawn with it (population_hair.drawn_hair) unless given.
     """
     checkpoint = between_stages if between_stages is not None else (lambda: None)
     base = base if base is not None else _default_head()
@@ -159,7 +159,7 @@ def make_identity_head(identity: Identity, base: Model | None = None,
     head.description = (f"{base.description} Identity: "
                         + (", ".join(f"{k}={v:g}" for k, v in identity.values.items()) or "the default head") + ".")
     if hair is None and identity.drawn is not None:     # a random person has the hair it was drawn with
-        from engine.identity.population import drawn_hair
+        from engine.identity.population_hair import drawn_hair
 
         hair = drawn_hair(identity)
     if hair is not None:

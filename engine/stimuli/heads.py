@@ -46,7 +46,8 @@ def _hair(level: Any) -> HairChoice | None:
     """The hair of an identity level: what it asks for, else a random person's hair drawn with it (as
     ``identity --random`` gives it), else none. A continuum keeps its first person's hair at every step."""
     from engine.identity.hair_style import hair_from_level
-    from engine.identity.population import drawn_hair, is_random_level, level_identity
+    from engine.identity.population import is_random_level, level_identity
+    from engine.identity.population_hair import drawn_hair
 
     asked = hair_from_level(level)
     if asked is None and is_random_level(level):

@@ -288,7 +288,7 @@ def test_a_design_asking_for_bad_random_people_is_refused_at_its_line(tmp_path, 
 
 
 def test_random_people_have_hair_drawn_by_sex_and_age(people):
-    from engine.identity.population import drawn_hair
+    from engine.identity.population_hair import drawn_hair
 
     hair = {p.drawn["seed"]: drawn_hair(p) for p in people}
     assert all(h is not None and h.colour for h in hair.values())
@@ -323,7 +323,7 @@ def test_iris_colour_follows_ancestry_and_varies_per_person():
 
 def test_two_seeds_do_not_give_the_same_look(people):
     from engine.identity.iris import iris_colour_for
-    from engine.identity.population import drawn_hair
+    from engine.identity.population_hair import drawn_hair
 
     looks = [(drawn_hair(p), tuple(iris_colour_for(p).tolist())) for p in people[:10]]
     for a, b in itertools.combinations(looks, 2):
@@ -334,7 +334,7 @@ def test_two_seeds_do_not_give_the_same_look(people):
 def test_a_random_persons_head_wears_its_hair_and_iris_and_can_be_bald(tmp_path):
     from engine.identity import make_identity_head
     from engine.identity.iris import iris_colour_for, iris_colour_of
-    from engine.identity.population import drawn_hair
+    from engine.identity.population_hair import drawn_hair
 
     person = draw_identity(10)                                       # a man with a beard (drawn_hair)
     head = make_identity_head(person)
@@ -368,7 +368,8 @@ def test_a_designs_random_person_wears_the_hair_drawn_with_it():
     """A stimulus design's random person is the person `identity --random` makes, hair and all; hair the
     level asks for replaces it."""
     from engine.identity.hair import pieces_for
-    from engine.identity.population import drawn_hair, level_identity
+    from engine.identity.population import level_identity
+    from engine.identity.population_hair import drawn_hair
     from engine.stimuli import parse_design
     from engine.stimuli.heads import stimulus_head
 
