@@ -38,7 +38,8 @@ import numpy as np
 
 from engine.identity.iris import apply_iris
 from engine.identity.parameters import RACES, Identity
-from engine.identity.skin_atlas import skin_atlas
+from engine.identity.skin_atlas import skin_atlas, skin_faces
+from engine.identity.skin_cache import cached_skin_pixels, skin_key
 from engine.identity.skin_detail import detail_heights
 from engine.identity.skin_optics import linear_to_srgb, skin_albedo, skin_albedo_fast
 from engine.model import Model
@@ -180,7 +181,8 @@ def apply_skin(model: Model, identity: Identity, size: int = ATLAS_SIZE) -> None
     """Give ``model`` (a head on the default head's texture coordinates) the skin of ``identity``, in place.
 
     A head whose texture already shows images (photographs) keeps them; a model without texture
-    coordinates, a skin part or the feature points the regions need is left as it is.
+    coordinates, a skin part or the feature points the regions need is left as it is. The image is
+    taken from the disk cache when it was worked out before (:mod:`engine.identity.skin_cache`).
     """
     texture = model.texture
     needed = ("3.7", "3.8", "3.11", "3.12", "8.1", "8.2", "8.3", "8.4", "9.1", "9.2", "9.3", "9.15", "4.3")
@@ -188,9 +190,10 @@ def apply_skin(model: Model, identity: Identity, size: int = ATLAS_SIZE) -> None
         return
     if any(image.name != SKIN_IMAGE for image in texture.images):
         return
-    image = skin_texture(model, identity, size)
+    pixels = cached_skin_pixels(skin_key(model, identity, size), lambda: skin_texture(model, identity, size).pixels)
+    image = TextureImage(SKIN_IMAGE, pixels)
     face_image = np.full(len(texture.face_image), -1, dtype=np.int64)
-    face_image[skin_atlas(model, size).skin_faces] = 0
+    face_image[skin_faces(model)] = 0
     model.texture = ModelTexture(texture.corner_uv.copy(), [image], face_image)
     model.changed()
     apply_iris(model, identity)                    # the eyes' colour too (engine.identity.iris)

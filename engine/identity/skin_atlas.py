@@ -81,6 +81,21 @@ def skin_atlas(model: Model, size: int) -> SkinAtlas:
     return _CACHE[key]
 
 
+def skin_faces(model: Model) -> np.ndarray:
+    """The polygons that show the skin image: the skin part's, with every corner's (u, v) inside the image
+    (the ones :func:`skin_atlas` draws), found without drawing the atlas."""
+    assert model.texture is not None, "the head must have texture coordinates"
+    counts = cell_sizes(model.faces)
+    starts = cell_starts(counts)
+    skin = model.vertex_part[model.faces[starts + 1]] == model.parts.index("skin")
+    uv = model.texture.corner_uv
+    outside = np.any((uv < 0) | (uv > 1), axis=1)
+    corner_face = np.repeat(np.arange(len(counts)), counts)
+    bad = np.zeros(len(counts), dtype=bool)
+    bad[corner_face[outside]] = True
+    return np.flatnonzero(skin & ~bad & (counts >= 3))
+
+
 def _draw(model: Model, skin: int, size: int) -> SkinAtlas:
     assert model.texture is not None
     counts = cell_sizes(model.faces)
