@@ -184,8 +184,8 @@ def main(argv=None) -> int:
 
     app = QApplication.instance() or QApplication([])
     app.setOrganizationName("Artificial Person Benchmarks")
-    from workbench.document import ModelDocument
-    from workbench.main_window import MainWindow
+    from workbench.document.model_document import ModelDocument
+    from workbench.window.main_window import MainWindow
 
     t0 = time.perf_counter()
     model = engine.load_model()

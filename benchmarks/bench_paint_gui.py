@@ -148,8 +148,8 @@ def main(argv=None):
     QSettings.setDefaultFormat(QSettings.Format.IniFormat)
     QSettings.setPath(QSettings.Format.IniFormat, QSettings.Scope.UserScope, tempfile.mkdtemp(prefix="ap-bench-"))
     from workbench import features
-    from workbench.document import ModelDocument
-    from workbench.main_window import MainWindow
+    from workbench.document.model_document import ModelDocument
+    from workbench.window.main_window import MainWindow
 
     features.INSTALLERS[:] = ["painting:install"]
     head = engine.load_model()

@@ -80,9 +80,9 @@ BREAKAGES = {
     "a cycle inside a package": ("engine/commands/interpolation.py",
                                  "def f():\n    import engine.commands.translator",
                                  "No import cycles", ".interpolation -> .translator"),
-    "a workbench widget draws with pyvista": ("workbench/parameter_slider.py", "import pyvista",
+    "a workbench widget draws with pyvista": ("workbench/parameter_panel/slider.py", "import pyvista",
                                               "only in the viewport and the drawing modules",
-                                              "workbench.parameter_slider -> pyvista"),
+                                              "workbench.parameter_panel.slider -> pyvista"),
 }
 
 

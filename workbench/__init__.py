@@ -1,7 +1,7 @@
 """Artificial Person workbench: the Qt GUI over the engine.
 
 The model lives in :mod:`engine`; the workbench is a view over it.
-:class:`~workbench.document.ModelDocument` holds the open model and pose and
+:class:`~workbench.document.model_document.ModelDocument` holds the open model and pose and
 announces changes; each widget (viewport, parameter panel, parts menu,
 status bar) is one module that listens. Importing this package loads no Qt;
 :func:`main` does. It does arrange for ``matplotlib.pyplot``, which pyvista

@@ -11,9 +11,9 @@ from PySide6.QtWidgets import QApplication, QMessageBox
 import engine
 
 from . import testing_hooks
-from .document import ModelDocument
+from .document.model_document import ModelDocument
 from .icons import APP_ICON, icon
-from .main_window import TITLE, MainWindow
+from .window.main_window import TITLE, MainWindow
 
 EXIT_USER_ERROR = 2  # errors in user input exit with status 2, as on the command line
 

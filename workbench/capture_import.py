@@ -22,10 +22,10 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 from engine.errors import UserError
 
 from . import settings
-from .actions import ActionSpec, create_actions
+from .window.actions import ActionSpec, create_actions
 
 if TYPE_CHECKING:
-    from .main_window import MainWindow
+    from .window.main_window import MainWindow
 
 FILE_FILTER = ("Capture streams (*.csv *.json);;Live Link Face / OpenFace / MediaPipe CSV (*.csv);;"
                "MediaPipe JSON (*.json);;All files (*)")

@@ -3,8 +3,8 @@
 A tool (the parameter-tree editor, weight painting, the library editor, the
 timeline, the script panel, the motion-capture wizard, …) lives in its own
 module and exposes ``install(window) -> None``: it adds its docks, its
-tool-options page (:meth:`~workbench.tool_options.ToolOptionsDock.add_page`)
-and its actions (:func:`workbench.actions.add_actions`). The main window
+tool-options page (:meth:`~workbench.window.tool_options.ToolOptionsDock.add_page`)
+and its actions (:func:`workbench.window.actions.add_actions`). The main window
 calls every installer listed here, in order, once its own pieces are up.
 
 Adding a tool is adding one line to :data:`INSTALLERS`.
@@ -16,7 +16,7 @@ from importlib import import_module
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from .main_window import MainWindow
+    from .window.main_window import MainWindow
 
 INSTALLERS: list[str] = [
     # "module:function", relative to the workbench package

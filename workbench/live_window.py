@@ -9,7 +9,7 @@ the swap to finish (``glFinish``) and tells the server the moment, so every
 event of that frame — and of any frame skipped before it — leaves stamped with
 ``presented_t``. An utterance's sound starts in the frame that shows its first
 sample (from the right sample when that frame is late), through PortAudio
-(:mod:`workbench.audio_output`); ``audio_t`` is the moment PortAudio says the
+(:mod:`workbench.playback.audio_output`); ``audio_t`` is the moment PortAudio says the
 first sample reaches the output, or ``None`` where the computer has no sound
 output.
 
@@ -47,9 +47,9 @@ from PySide6.QtWidgets import QApplication, QVBoxLayout, QWidget
 from engine.errors import UserError
 from engine.live.presentation import Sound, SoundKey
 from engine.model.model import Model
-from workbench.audio_output import AudioClip, AudioOutput
-from workbench.layouts import FRESH_MARGIN
-from workbench.viewport_keys import keep_keys_from_vtk
+from workbench.playback.audio_output import AudioClip, AudioOutput
+from workbench.viewport.keys import keep_keys_from_vtk
+from workbench.window.layouts import FRESH_MARGIN
 
 VIEW = "front"
 SIGNAL_POLL_MS = 200         # how often Python gets the chance to run a SIGINT/SIGTERM handler

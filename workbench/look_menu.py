@@ -12,7 +12,7 @@ from PySide6.QtWidgets import QMenu
 from engine.outputs.looks import DEFAULT_LOOK, LOOKS
 
 if TYPE_CHECKING:
-    from .main_window import MainWindow
+    from .window.main_window import MainWindow
 
 SETTING = "view/look"
 WORKBENCH = "workbench"          # the viewport's own shading (pyvista's light kit), not a look of the renderer

@@ -26,10 +26,10 @@ from PySide6.QtWidgets import QMessageBox
 
 from engine.formats.atomic import atomic_write_text
 
-from .undo_commands import WeightsChangedCommand
+from .document.undo_commands import WeightsChangedCommand
 
 if TYPE_CHECKING:
-    from .main_window import MainWindow
+    from .window.main_window import MainWindow
 
 EDIT = "AP_WORKBENCH_TEST_EDIT"
 RECOVERY = "AP_WORKBENCH_TEST_RECOVERY"

@@ -95,7 +95,7 @@ def make_window(qtbot):
     (That the Python objects are then garbage-collected too is checked by
     ``test_closed_window_is_garbage_collected``; here pytest still holds them.)
     """
-    from workbench.main_window import MainWindow
+    from workbench.window.main_window import MainWindow
 
     plotters = []
 
@@ -188,8 +188,8 @@ def _shown_window(path, size=(1200, 760)):
     """A :class:`MainWindow` on the model at ``path``, shown, exposed and framed from the front."""
     from PySide6.QtTest import QTest
 
-    from workbench.document import ModelDocument
-    from workbench.main_window import MainWindow
+    from workbench.document.model_document import ModelDocument
+    from workbench.window.main_window import MainWindow
 
     window = MainWindow(ModelDocument(engine.load_model(path), path))
     if size is not None:                 # None: keep the size the window restored from QSettings

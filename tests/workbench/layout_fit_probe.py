@@ -19,8 +19,8 @@ from PySide6.QtTest import QTest
 from PySide6.QtWidgets import QApplication, QDockWidget
 
 import engine
-from workbench.document import ModelDocument
-from workbench.main_window import MainWindow
+from workbench.document.model_document import ModelDocument
+from workbench.window.main_window import MainWindow
 
 TOOL_ACTIONS = ("library.editor", "library.gallery", "mocap.plot", "mocap.pca")
 

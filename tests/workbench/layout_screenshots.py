@@ -25,9 +25,9 @@ from PySide6.QtWidgets import QApplication
 import engine
 from engine.mocap.importer import import_marker_file
 from engine.mocap.sample_files import write_sample_recording
-from workbench.document import ModelDocument
-from workbench.main_window import MainWindow
-from workbench.mocap.worker import running_jobs
+from workbench.background import running_jobs
+from workbench.document.model_document import ModelDocument
+from workbench.window.main_window import MainWindow
 
 ROOT = Path(__file__).resolve().parents[2]
 SENTENCE = "Hyvää <Happy/> huomenta! Mitä kuuluu?"

@@ -26,7 +26,7 @@ from PySide6.QtWidgets import QApplication, QMessageBox
 
 from workbench import app
 from workbench.library_editor import LibraryEditor
-from workbench.main_window import MainWindow
+from workbench.window.main_window import MainWindow
 
 Button = QMessageBox.StandardButton
 ANSWERS = {"recover": Button.Yes, "discard": Button.Discard}

@@ -11,7 +11,7 @@ from PySide6.QtWidgets import QApplication, QMessageBox
 
 import workbench
 import workbench.app
-from workbench.main_window import MainWindow
+from workbench.window.main_window import MainWindow
 
 
 def test_unloadable_model_gives_a_dialog_and_status_2(broken_model_path, monkeypatch, capsys):

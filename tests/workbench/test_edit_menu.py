@@ -8,7 +8,7 @@ from PySide6.QtCore import Qt
 from PySide6.QtGui import QKeySequence
 
 from tests.workbench.workbench_model_state import model_state
-from workbench.undo_commands import RemoveParameterCommand, RenameParameterCommand, WeightsChangedCommand
+from workbench.document.undo_commands import RemoveParameterCommand, RenameParameterCommand, WeightsChangedCommand
 
 
 @pytest.fixture

@@ -13,9 +13,9 @@ from engine.outputs.configuration_export import export_configuration
 from tests.workbench.synthetic_workbench_model import build_synthetic_model
 from tests.workbench.workbench_model_state import model_state
 from workbench import settings
-from workbench.export_folder_dialog import ExportFolderDialog
-from workbench.tool_options import NO_TOOL
-from workbench.undo_commands import WeightsChangedCommand
+from workbench.document.undo_commands import WeightsChangedCommand
+from workbench.window.export_folder_dialog import ExportFolderDialog
+from workbench.window.tool_options import NO_TOOL
 
 Button = QMessageBox.StandardButton
 MY_JAW = """# A user's own JawOpen: wider.

@@ -15,9 +15,9 @@ from engine.formats.mesh_io import write_mesh
 from tests.workbench.synthetic_workbench_model import build_synthetic_model
 from tests.workbench.workbench_model_state import model_state
 from workbench import settings
-from workbench.file_controller import is_shipped
-from workbench.recent_files import add_recent_file, recent_files
-from workbench.undo_commands import AddParameterCommand, RenameParameterCommand, WeightsChangedCommand
+from workbench.document.undo_commands import AddParameterCommand, RenameParameterCommand, WeightsChangedCommand
+from workbench.window.file_controller import is_shipped
+from workbench.window.recent_files import add_recent_file, recent_files
 
 Button = QMessageBox.StandardButton
 

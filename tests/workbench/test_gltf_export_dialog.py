@@ -9,7 +9,7 @@ import pytest
 from PySide6.QtWidgets import QDialogButtonBox, QMessageBox, QPushButton
 
 import engine
-import workbench.gltf_exporter as gltf_exporter
+import workbench.gltf_export.exporter as gltf_exporter
 from engine.formats.gltf_read import METRES_PER_MM, read_gltf
 from engine.paths import default_model_path
 

@@ -19,8 +19,8 @@ from PySide6.QtWidgets import QFileDialog, QStyle, QStyleOptionSlider
 
 import engine
 from engine.identity import Identity, identity_vertices
-from workbench.layouts import fresh_window_size
-from workbench.undo_commands import ReplaceModelCommand, WeightsChangedCommand
+from workbench.document.undo_commands import ReplaceModelCommand, WeightsChangedCommand
+from workbench.window.layouts import fresh_window_size
 
 LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))
 HEAD_TIMEOUT_MS = 240_000         # a head on a loaded 2-core machine; normally under 2 s
@@ -334,7 +334,7 @@ def test_undoing_past_an_identity_change_undoes_earlier_edits_on_the_model_they_
     """The document keeps its undo stack across a replaced model: each command edits ``document.model``,
     which undo has put back by the time an earlier command is undone."""
     from engine.identity import make_identity_head
-    from workbench.document import ModelDocument
+    from workbench.document.model_document import ModelDocument
 
     default = head.copy()
     document = ModelDocument(default)

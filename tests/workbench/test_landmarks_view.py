@@ -15,7 +15,7 @@ import numpy as np
 from PySide6.QtGui import QColor, QImage
 
 import engine
-from workbench.landmark_overlay import LANDMARK_COLOR, LIFT_MM
+from workbench.viewport.landmark_overlay import LANDMARK_COLOR, LIFT_MM
 
 
 def _landmark_pixels(window) -> int:

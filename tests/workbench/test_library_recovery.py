@@ -20,7 +20,7 @@ import engine
 from tests.workbench.test_library_editor import GOOD, forget_library_edits, type_text
 from tests.workbench.test_recovery import PROJECT_ROOT, _files, _orphan, _wait_for
 from workbench import settings
-from workbench.recovery import RecoverySession, orphaned_entries, orphaned_library_copies
+from workbench.window.recovery import RecoverySession, orphaned_entries, orphaned_library_copies
 
 Button = QMessageBox.StandardButton
 TYPED = "# typed before the crash\n$command = Shrug\n$mandatory = at\nbrow_raise = 0,0; 100,1; 300,0\n$proc = once"

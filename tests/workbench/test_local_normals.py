@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from tests.workbench.normals import whole_mesh_normals
-from workbench.local_normals import LocalNormals
+from workbench.viewport.local_normals import LocalNormals
 
 
 @pytest.mark.parametrize("seed", range(4))

@@ -29,7 +29,7 @@ def test_a_slow_mesh_read_keeps_the_window_alive(window, qtbot, monkeypatch, tmp
     from PySide6.QtCore import QTimer
     from PySide6.QtWidgets import QProgressDialog
 
-    import workbench.file_controller as files
+    import workbench.window.file_controller as files
     from engine.formats.mesh_io import import_mesh
 
     cube = tmp_path / "cube.obj"

@@ -30,9 +30,9 @@ from engine.mocap.readers import read_marker_file
 from engine.mocap.sample_files import write_sample_recording
 from engine.mocap.session import load_session
 from tests.workbench.test_mocap_tool import read_into_dialog, wait_jobs
-from workbench.layouts import fresh_window_size
 from workbench.mocap.import_dialog import POINT
-from workbench.recent_files import add_recent_file
+from workbench.window.layouts import fresh_window_size
+from workbench.window.recent_files import add_recent_file
 
 FACIAL_SING = Path(__file__).parents[1] / "engine" / "data" / "capture" / "Facial-Sing-200-frames.c3d"
 STEM = FACIAL_SING.stem

@@ -25,9 +25,9 @@ from engine.mocap.naming import write_mapping
 from engine.mocap.pca import multistage_pca
 from engine.mocap.sample_files import write_sample_recording
 from engine.mocap.session import load_session
+from workbench.background import running_jobs
 from workbench.mocap.import_dialog import EXCLUDED, FILLED, GAPS, LONGEST, MISSING, POINT
 from workbench.mocap.marker_overlay import MARKER_COLOR, error_colors
-from workbench.mocap.worker import running_jobs
 
 TEXT = "Papu ja kala. Hyvää päivää, mitä kuuluu? Öljyä ja syötävää."
 FILE_LABELS = {"2.1": "FP2_1", "8.1": "fp8.1", "8.2": "MPEG4_8.2", "11.1": "FP11_1"}   # auto-suggested back

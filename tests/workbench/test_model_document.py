@@ -11,9 +11,9 @@ import pytest
 import engine
 import workbench
 from tests.workbench.synthetic_workbench_model import build_synthetic_model
-from workbench.colors import EYE, EYELASHES, SKIN, TEETH, TONGUE, default_part_color, part_color
-from workbench.document import ModelDocument
-from workbench.view_state import ViewState
+from workbench.document.model_document import ModelDocument
+from workbench.document.view_state import ViewState
+from workbench.viewport.colors import EYE, EYELASHES, SKIN, TEETH, TONGUE, default_part_color, part_color
 
 
 @pytest.fixture
@@ -89,15 +89,15 @@ def test_model_colours_win_over_defaults():
 
 
 def test_only_the_viewport_imports_pyvista():
-    """Among the workbench's top-level modules, only the viewport's (its parts, picking and point overlays), and the
-    plain window of ``serve --window`` (one VTK view in Qt, no workbench)."""
+    """Among the workbench's modules, only the viewport's (its parts, picking and point overlays), the tools'
+    named drawing modules, and the plain window of ``serve --window`` (one VTK view in Qt, no workbench)."""
     package = Path(workbench.__file__).parent
     importers = set()
-    for path in package.glob("*.py"):
+    for path in package.rglob("*.py"):
         for node in ast.walk(ast.parse(path.read_text())):
             names = ([a.name for a in node.names] if isinstance(node, ast.Import)
                      else [node.module or ""] if isinstance(node, ast.ImportFrom) else [])
             if any(n.split(".")[0] in ("pyvista", "pyvistaqt", "vtk", "vtkmodules") for n in names):
-                importers.add(path.name)
-    assert importers == {"viewport.py", "viewport_parts.py", "viewport_picking.py", "viewport_points.py",
-                         "live_window.py"}
+                importers.add(path.relative_to(package).as_posix())
+    assert importers == {"viewport/view.py", "viewport/parts.py", "viewport/picking.py", "viewport/points.py",
+                         "painting/cursor.py", "tree_editor/gizmo.py", "mocap/marker_overlay.py", "live_window.py"}

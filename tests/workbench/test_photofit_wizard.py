@@ -26,9 +26,9 @@ from engine.photofit.face_points import point_vertices
 from engine.photofit.initial_points import visible_landmarks
 from tests.engine.test_photofit import project
 from workbench.jobs import running_jobs, wait_for_all
-from workbench.layouts import fresh_window_size
-from workbench.photofit_wizard import SCREEN_MARGIN, UNDO_TEXT, PhotoFitWizard, size_for
-from workbench.photofit_wizard_fit import FitStopped
+from workbench.photofit_wizard.fit import FitStopped
+from workbench.photofit_wizard.wizard import SCREEN_MARGIN, UNDO_TEXT, PhotoFitWizard, size_for
+from workbench.window.layouts import fresh_window_size
 
 LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))
 PHOTO_SIZE = (450, 600)
@@ -285,7 +285,7 @@ def test_the_wizard_fits_a_laptop_screen(head_window, qtbot):
 def test_place_the_rest_puts_the_unmoved_points_near_their_places(head_window, photographs, qtbot):
     """After the six required points are on their pixels, Place the rest brings the others close: one undo step."""
     from engine.photofit.points import REQUIRED_FRONT
-    from workbench.photofit_wizard_landmarks import MoveMarker
+    from workbench.photofit_wizard.landmarks import MoveMarker
 
     wizard = open_wizard(head_window, qtbot)
     assert wizard.photos_page.choose("front", photographs / "front.png")
@@ -323,7 +323,7 @@ def test_place_the_rest_puts_the_unmoved_points_near_their_places(head_window, p
 
 def test_a_model_of_another_mesh_gets_the_default_heads_landmarks(window, photographs, qtbot):
     """The synthetic head has none of the default head's landmarks: the wizard places the default head's."""
-    from workbench.identity_panel_heads import default_head
+    from workbench.identity_panel.heads import default_head
 
     wizard = open_wizard(window, qtbot)
     assert wizard.session.landmark_head() is default_head()

@@ -145,8 +145,8 @@ def test_a_head_from_the_shipped_head_is_proposed_in_the_file_dialogs_folder(mak
     from PySide6.QtCore import QSettings
 
     from workbench import settings
-    from workbench.photofit_wizard import suggested_path
-    from workbench.photofit_wizard_session import PhotoFitSession
+    from workbench.photofit_wizard.session import PhotoFitSession
+    from workbench.photofit_wizard.wizard import suggested_path
 
     window = make_window(engine.default_model_path())
     QSettings().setValue(settings.LAST_DIR, str(tmp_path))

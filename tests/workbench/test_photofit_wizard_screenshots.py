@@ -26,8 +26,8 @@ from engine.photofit.points import REQUIRED_FRONT
 from tests.workbench.test_photofit_wizard import FIT_TIMEOUT_MS, open_wizard, photographs  # noqa: F401
 from tests.workbench.test_photofit_wizard_speaking import mouth_gap, open_vowel_ms
 from workbench.jobs import wait_for_all
-from workbench.layouts import fresh_window_size
-from workbench.photofit_wizard_landmarks import MoveMarker
+from workbench.photofit_wizard.landmarks import MoveMarker
+from workbench.window.layouts import fresh_window_size
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "images" / "photofit"
 LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))

@@ -3,7 +3,7 @@
 Real window, real fit on the wizard's worker thread, real Festival, real
 pyvista rendering under Xvfb. Stop is pressed while the fit is in its
 slowest step (the texture) on two 2-megapixel photographs; the fit's own
-record (:class:`~workbench.photofit_wizard_fit.FitTrace`) shows where it
+record (:class:`~workbench.photofit_wizard.fit.FitTrace`) shows where it
 stopped: inside that step, at the first question after Stop, no later step
 begun. No assertion reads a clock.
 """
@@ -27,7 +27,7 @@ from tests.workbench.test_photofit_wizard import (  # noqa: F401  (fixtures)
     wait_for_jobs,
     write_photographs,
 )
-from workbench.photofit_wizard_fit import FitStopped
+from workbench.photofit_wizard.fit import FitStopped
 
 TWO_MEGAPIXELS = (1224, 1632)            # width, height: 2.0 million pixels
 QUESTIONS_BEFORE_STOP = 10               # the texture step asks hundreds of times on these photographs

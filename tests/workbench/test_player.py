@@ -25,7 +25,7 @@ def timeline_of(text: str, model) -> Timeline:
 @pytest.fixture
 def no_sound_device(monkeypatch):
     """Play as on a machine without an audio output, whatever this one has."""
-    from workbench.audio_output import AudioOutput
+    from workbench.playback.audio_output import AudioOutput
 
     monkeypatch.setattr(AudioOutput, "available", staticmethod(lambda: False))
 
@@ -76,7 +76,7 @@ class FakeClock:
 
 def test_the_playhead_follows_the_clock_not_the_ticks(window, monkeypatch, no_sound_device):
     """A late tick drops frames instead of slowing the animation down; speed scales the clock."""
-    import workbench.player as player_module
+    import workbench.playback.player as player_module
 
     clock = FakeClock()
     monkeypatch.setattr(player_module, "_time", clock)
@@ -181,7 +181,7 @@ def test_speed_is_clamped_and_scrubbing_while_playing_goes_on_from_there(window,
 
 def test_on_a_machine_without_output_the_real_audio_path_is_silent(tmp_path):
     """No monkeypatching: PortAudio itself finds no output device here (CI, servers)."""
-    from workbench.audio_output import AudioOutput, load_clip, output_available
+    from workbench.playback.audio_output import AudioOutput, load_clip, output_available
 
     if output_available():
         pytest.skip("this machine has an audio output")

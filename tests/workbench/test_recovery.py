@@ -19,9 +19,9 @@ import engine
 from tests.workbench.synthetic_workbench_model import build_synthetic_model
 from tests.workbench.workbench_model_state import model_state
 from workbench import settings
-from workbench.document import ModelDocument
-from workbench.recovery import RecoverySession, orphaned_entries
-from workbench.undo_commands import WeightsChangedCommand
+from workbench.document.model_document import ModelDocument
+from workbench.document.undo_commands import WeightsChangedCommand
+from workbench.window.recovery import RecoverySession, orphaned_entries
 
 Button = QMessageBox.StandardButton
 PROJECT_ROOT = Path(__file__).resolve().parents[2]

@@ -1,6 +1,6 @@
 """kill -9 in the middle of an autosave: the orphaned copy is the previous autosave or the new one, whole.
 
-A real process writes autosaves through :class:`workbench.recovery.RecoverySession`
+A real process writes autosaves through :class:`workbench.window.recovery.RecoverySession`
 and is killed (SIGKILL) at chosen steps of the model's save (the points of
 tests/engine/save_kill_worker.py). Listing the orphans afterwards finishes the
 save, removes what the killed process left, and offers a model that loads.
@@ -19,7 +19,7 @@ import pytest
 import engine
 from tests.engine.save_kill_worker import models
 from tests.engine.test_save_kill import fingerprint
-from workbench.recovery import orphaned_entries
+from workbench.window.recovery import orphaned_entries
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -29,7 +29,7 @@ from pathlib import Path
 from types import SimpleNamespace
 import engine
 from tests.engine.save_kill_worker import arm, models
-from workbench.recovery import RecoverySession
+from workbench.window.recovery import RecoverySession
 
 folder, point = Path(sys.argv[1]), sys.argv[2]
 a, b = models()

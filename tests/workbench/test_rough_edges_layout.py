@@ -14,7 +14,7 @@ import engine
 from tests.workbench.test_rough_edges_gallery import CTRL, SHIFT, choose_layout, press
 from tests.workbench.test_task_layouts import LAPTOP, in_front
 from workbench import settings
-from workbench.layouts import STATE_VERSION
+from workbench.window.layouts import STATE_VERSION
 
 DEFAULT_HEAD = engine.default_model_path()
 pytestmark = pytest.mark.skipif(not DEFAULT_HEAD.exists(), reason="the default head is not built")

@@ -31,7 +31,7 @@ def test_screenshot_of_the_main_window(make_window, synthetic_model_path, qtbot,
             row = panel.row(name)
             row.slider.setValue(row.position_of(row.parameter.maximum * fraction))
     # An unsaved edit, so the picture shows the Edit menu's state: Undo enabled, the title marked.
-    from workbench.undo_commands import WeightsChangedCommand
+    from workbench.document.undo_commands import WeightsChangedCommand
 
     document = window.document
     name = "jaw_open"

@@ -14,9 +14,9 @@ from PySide6.QtWidgets import QWidget
 
 import engine
 from workbench import settings
-from workbench.layouts import fresh_window_size
-from workbench.task_layouts import LAYOUTS
 from workbench.tree_editor import TOOL_ID
+from workbench.window.layouts import fresh_window_size
+from workbench.window.task_layouts import LAYOUTS
 
 LAPTOP = fresh_window_size(QRect(0, 0, 1366, 768))
 DESKTOP = fresh_window_size(QRect(0, 0, 1600, 1000))

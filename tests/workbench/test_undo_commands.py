@@ -9,8 +9,8 @@ import engine
 from engine.model.weight_changes import WeightChange
 from tests.workbench.synthetic_workbench_model import build_synthetic_model
 from tests.workbench.workbench_model_state import model_state
-from workbench.document import ModelDocument
-from workbench.undo_commands import (
+from workbench.document.model_document import ModelDocument
+from workbench.document.undo_commands import (
     AddParameterCommand,
     MoveParameterCommand,
     RemoveParameterCommand,

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from engine.painting import heat_colors
-from workbench.playhead import Playhead
+from workbench.document.playhead import Playhead
 
 
 @pytest.fixture

@@ -112,9 +112,9 @@ def test_a_key_the_view_does_not_use_goes_on_to_the_window_around_it(qtbot):
     from PySide6.QtWidgets import QVBoxLayout, QWidget
 
     import engine
-    from workbench.document import ModelDocument
-    from workbench.view_state import ViewState
-    from workbench.viewport import Viewport
+    from workbench.document.model_document import ModelDocument
+    from workbench.document.view_state import ViewState
+    from workbench.viewport.view import Viewport
 
     seen: list[int] = []
 
@@ -170,4 +170,4 @@ def test_every_vtk_view_the_workbench_makes_keeps_the_keys_from_vtk():
     makers = re.compile(r"\b(QtInteractor|BackgroundPlotter|MultiPlotter|QVTKRenderWindowInteractor)\(")
     found = {path.relative_to(workbench).as_posix(): "keep_keys_from_vtk(" in path.read_text(encoding="utf-8")
              for path in workbench.rglob("*.py") if makers.search(path.read_text(encoding="utf-8"))}
-    assert found == {"viewport.py": True, "live_window.py": True}
+    assert found == {"viewport/view.py": True, "live_window.py": True}

@@ -9,8 +9,8 @@ import shiboken6
 from PySide6.QtCore import QCoreApplication, QEvent
 
 import engine
-from workbench.document import ModelDocument
-from workbench.main_window import MainWindow
+from workbench.document.model_document import ModelDocument
+from workbench.window.main_window import MainWindow
 
 
 def _open_and_close(path, qtbot):

@@ -290,7 +290,7 @@ class ExpressionGallery(QWidget):
 
     # -- Qt overrides: render pictures only while the gallery is on screen; tabs when too low ----
     def minimumSizeHint(self) -> QSize:
-        # the tabbed gallery's: a dock lower than that scrolls the gallery (workbench.dock_scroller)
+        # the tabbed gallery's: a dock lower than that scrolls the gallery (workbench.window.dock_scroller)
         return QSize(super().minimumSizeHint().width(), self.height_for(tabbed=True))
 
     def resizeEvent(self, event: QResizeEvent) -> None:

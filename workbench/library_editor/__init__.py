@@ -13,8 +13,8 @@ from __future__ import annotations
 from PySide6.QtCore import QEvent, QObject, QSize, Qt
 from PySide6.QtWidgets import QDockWidget
 
-from ..actions import ActionSpec, add_actions
 from ..icons import icon
+from ..window.actions import ActionSpec, add_actions
 from .editor import LibraryEditor
 from .folders import LibrarySources
 

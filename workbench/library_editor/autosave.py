@@ -1,7 +1,7 @@
 """Autosave and crash recovery for the library editor's unsaved text, alongside the model's.
 
 The text goes into the window's recovery session
-(``window.autosaver.session``, :class:`workbench.recovery.RecoverySession`)
+(``window.autosaver.session``, :class:`workbench.window.recovery.RecoverySession`)
 as ``<id>.library.json``, with the library file it belongs to (or none, for a
 new file). It is written every autosave interval (the model's:
 ``autosave/interval_seconds``) while the text has unsaved edits and differs
@@ -25,7 +25,7 @@ from PySide6.QtWidgets import QMessageBox
 from engine.errors import UserError
 
 from .. import settings
-from ..recovery import LibraryCopy, RecoverySession, orphaned_library_copies
+from ..window.recovery import LibraryCopy, RecoverySession, orphaned_library_copies
 
 if TYPE_CHECKING:
     from .editor import LibraryEditor

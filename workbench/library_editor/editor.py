@@ -43,7 +43,7 @@ from engine.formats.atomic import atomic_write_text
 from engine.timeline.command_curves import CommandCurves, command_curves
 
 from ..icons import icon
-from ..recovery import LibraryCopy
+from ..window.recovery import LibraryCopy
 from .arguments_form import ArgumentsForm
 from .autosave import LibraryAutosaver, recovery_question
 from .code_editor import CodeEditor

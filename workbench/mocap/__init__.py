@@ -28,7 +28,8 @@ from PySide6.QtWidgets import QFileDialog
 from engine.mocap.marker_assignment import is_feature_point, marker_labels, session_mapping
 from engine.mocap.session import load_session, save_session
 
-from ..actions import ActionSpec, add_actions
+from ..background import run_in_background, show_error
+from ..window.actions import ActionSpec, add_actions
 from .assignment_panel import AssignmentPanel
 from .import_dialog import ImportDialog
 from .marker_overlay import HIGHLIGHT_COLOR, MarkerOverlay, default_colors, error_colors, marker_to_model_transform
@@ -38,7 +39,6 @@ from .plot_dock import MarkerPlotDock
 from .recording_playback import RecordingPlayback
 from .session_files import default_session_path, project_folder
 from .state import MocapState
-from .worker import run_in_background, show_error
 
 MENU = "&Motion capture"
 SESSION_FILES = "Capture sessions (*.h5);;All files (*)"

@@ -4,7 +4,7 @@
 the background; the parameters and influence regions it made are then added
 to the open model by :class:`AddArticulationCommand`, in one engine edit
 (:func:`engine.model.edits.add_parameters`, all or none, through
-:meth:`~workbench.document.ModelDocument.apply_add_parameters`). Undo
+:meth:`~workbench.document.model_document.ModelDocument.apply_add_parameters`). Undo
 restores the tree the edit returned, exactly.
 
 >>> document.push(AddArticulationCommand(document, [(parameter, region), ...]))   # doctest: +SKIP
@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from engine.model.edits import TreeState
 
-from ..undo_commands import TreeEditCommand
+from ..document.undo_commands import TreeEditCommand
 
 
 class AddArticulationCommand(TreeEditCommand):

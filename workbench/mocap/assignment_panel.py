@@ -48,8 +48,8 @@ from engine.mocap.marker_assignment import (
 )
 from engine.mocap.naming import read_mapping, write_mapping
 
+from ..background import show_error
 from .state import MocapState
-from .worker import show_error
 
 TITLE = "Marker names"
 MAP_FILES = "Marker maps (*.map *.txt);;All files (*)"

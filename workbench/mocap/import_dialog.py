@@ -57,7 +57,7 @@ from engine.mocap.naming import DROP, default_reference, normalise_label, read_m
 from engine.mocap.readers import FORMAT_NAMES, read_marker_file
 from engine.mocap.session import save_session
 
-from .worker import run_in_background, show_error
+from ..background import run_in_background, show_error
 
 MARKER_FILES = "Marker files (*.tsv *.c3d *.trc *.csv *.txt);;All files (*)"
 LABEL_FILES = "Phone labels (*.TextGrid *.lab *.txt *.csv);;All files (*)"

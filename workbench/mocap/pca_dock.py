@@ -47,12 +47,12 @@ from engine.mocap.articulation_file import save_articulation_file
 from engine.mocap.held_out import reconstruct_held_out
 from engine.mocap.pca import DEFAULT_STAGES, Stage, multistage_pca
 
-from ..dock_scroller import DockScroller
+from ..background import run_in_background, show_error
+from ..window.dock_scroller import DockScroller
 from .apply_command import AddArticulationCommand
 from .marker_overlay import error_colors
 from .state import MocapState
 from .variance_chart import VarianceChart
-from .worker import run_in_background, show_error
 
 TITLE = "Multistage PCA"
 AMPLITUDE_SD = 2.0

@@ -33,12 +33,12 @@ from engine.mocap.errors import MocapError
 from engine.mocap.frame_selection import select_frames
 from engine.speech.labels import festival_phones, read_labels
 
-from ..dock_scroller import DockScroller
+from ..background import run_in_background, show_error
 from ..flow_layout import FlowLayout
+from ..window.dock_scroller import DockScroller
 from .coordinate_plot import CoordinatePlot
 from .import_dialog import LABEL_FILES
 from .state import MocapState
-from .worker import run_in_background, show_error
 
 AXES = ("x", "y", "z")
 TITLE = "Marker coordinates"

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from engine.paths import DATA_DIR
 
-from ..recent_files import recent_files
+from ..window.recent_files import recent_files
 
 
 def _shipped(path: str | Path) -> bool:

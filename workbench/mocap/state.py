@@ -1,7 +1,7 @@
 """The motion-capture tool's shared state: the session, the selected frames, the PCA result.
 
 :class:`MocapState` is to the mocap widgets what
-:class:`~workbench.document.ModelDocument` is to the model widgets: one
+:class:`~workbench.document.model_document.ModelDocument` is to the model widgets: one
 object that holds the data and announces each change; the import dialog,
 the marker overlay, the coordinate plot and the PCA dock listen to it and
 never talk to each other.

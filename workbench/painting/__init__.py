@@ -15,7 +15,7 @@ User documentation: ``docs/workbench-painting.md``.
 
 from __future__ import annotations
 
-from ..actions import ActionSpec, add_actions
+from ..window.actions import ActionSpec, add_actions
 from . import launch_probe, operations
 from .controller import PaintController
 from .options_page import PaintOptionsPage

@@ -17,11 +17,11 @@ pick on the drawn mesh is mapped to the rest mesh
 This module only recolours the changed vertices (and moves them, with the
 live preview), draws the cursor, and on release pushes the stroke's
 :class:`~engine.model.WeightChange` as one
-:class:`~workbench.undo_commands.WeightsChangedCommand`.
+:class:`~workbench.document.undo_commands.WeightsChangedCommand`.
 
 While paint mode is on the viewport shows the tool's own heat map
 (:func:`~workbench.painting.shading.shaded_heat_colors`, through
-:meth:`Viewport.show_colors <workbench.viewport.Viewport.show_colors>`) on
+:meth:`Viewport.show_colors <workbench.viewport.view.Viewport.show_colors>`) on
 the mesh as it is posed — the held parameter's deformation stays readable
 — and a legend of it (:class:`~workbench.painting.cursor.WeightLegend`).
 
@@ -54,7 +54,7 @@ from engine.painting import (
     sample_weight,
 )
 
-from ..undo_commands import WeightsChangedCommand
+from ..document.undo_commands import WeightsChangedCommand
 from .cursor import BrushCursor, WeightLegend
 from .shading import shaded_heat_colors
 

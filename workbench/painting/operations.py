@@ -3,9 +3,9 @@
 Each operation calls one engine function of :mod:`engine.painting` on the
 painted parameter's dense weights and pushes the difference, as the model's
 :class:`~engine.model.WeightChange` (:func:`~engine.painting.weight_change_from_dense`),
-in a :class:`~workbench.undo_commands.WeightsChangedCommand`; normalising group 1
+in a :class:`~workbench.document.undo_commands.WeightsChangedCommand`; normalising group 1
 changes several regions and is one macro of
-:class:`~workbench.undo_commands.SetRegionCommand`. Invert, clear, smooth,
+:class:`~workbench.document.undo_commands.SetRegionCommand`. Invert, clear, smooth,
 grow and shrink keep to the part chosen in the tool options ("All parts":
 everywhere).
 
@@ -36,7 +36,7 @@ from engine.painting import (
     weight_change_from_dense,
 )
 
-from ..undo_commands import SetRegionCommand, WeightsChangedCommand
+from ..document.undo_commands import SetRegionCommand, WeightsChangedCommand
 from .controller import NO_PARAMETER
 
 SMOOTH_ITERATIONS = 3

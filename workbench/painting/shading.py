@@ -23,7 +23,7 @@ import numpy.typing as npt
 
 from engine.painting import heat_colors
 
-from ..colors import SKIN, hex_to_rgb
+from ..viewport.colors import SKIN, hex_to_rgb
 
 LUMA = np.array([0.299, 0.587, 0.114])
 SKIN_LUMA = float(np.dot(hex_to_rgb(SKIN), LUMA))

@@ -15,7 +15,7 @@ import re
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialog, QDockWidget, QMessageBox
 
-from ..actions import ActionSpec, add_actions
+from ..window.actions import ActionSpec, add_actions
 from .export_dialog import ExportSpeechDialog, SpeechExporter
 from .panel import ScriptPanel
 

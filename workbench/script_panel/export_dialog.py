@@ -39,8 +39,8 @@ from engine.errors import UserError
 from engine.outputs.speech_files import KINDS, ExportCancelled, ExportPlan, export_speech
 
 from .. import settings
-from ..file_controller import is_shipped
 from ..jobs import Job
+from ..window.file_controller import is_shipped
 
 PREFIX = "script_panel/export/"
 FOLDER_FOR = PREFIX + "folder_for"      # the model file whose speech was last exported (to PREFIX + "folder")

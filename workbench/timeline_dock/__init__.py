@@ -1,6 +1,6 @@
 """The timeline dock and the player: play, scrub and look at an animation.
 
-``install(window)`` creates :attr:`window.player <workbench.player.Player>`
+``install(window)`` creates :attr:`window.player <workbench.playback.player.Player>`
 (first: other tools play through it), the "Timeline" dock at the bottom
 (``window.timeline_dock``) and the "&Animation" menu with *Open animation…*
 (a command file or a tracks CSV), play/pause, stop, frame steps and loop.
@@ -22,13 +22,13 @@ from engine.errors import UserError
 from engine.timeline.animation_files import load_animation
 
 from .. import settings
-from ..actions import ActionSpec, add_actions
-from ..player import Player
-from ..playhead import DEFAULT_FPS
+from ..document.playhead import DEFAULT_FPS
+from ..playback.player import Player
+from ..window.actions import ActionSpec, add_actions
 from .dock import TimelineDock
 
 if TYPE_CHECKING:
-    from ..main_window import MainWindow
+    from ..window.main_window import MainWindow
 
 MENU = "&Animation"
 FILE_FILTER = "Animations (*.xml *.csv);;Command files (*.xml);;Tracks tables (*.csv);;All files (*)"

@@ -1,6 +1,6 @@
 """The track view: a time ruler, one curve per driven parameter, the phones, the current time.
 
-A custom QPainter widget over the :class:`~workbench.player.Player`:
+A custom QPainter widget over the :class:`~workbench.playback.player.Player`:
 
 * the ruler at the top, seconds with ticks at a step that keeps labels apart;
 * one row per parameter the loaded animation drives, its curve sampled at

@@ -20,14 +20,14 @@ from typing import TYPE_CHECKING
 
 from PySide6.QtCore import Qt
 
-from ..actions import ActionSpec, add_actions
+from ..window.actions import ActionSpec, add_actions
 from .dock import ParameterTreeDock
 from .editor import TreeEditor
 from .gizmo import ParameterGizmo
 from .property_sheet import TOOL_ID, PropertySheet
 
 if TYPE_CHECKING:
-    from ..main_window import MainWindow
+    from ..window.main_window import MainWindow
 
 __all__ = ["TOOL_ID", "TreeEditor", "install"]
 

@@ -4,7 +4,7 @@ The view shows :class:`~workbench.tree_editor.tree_model.ParameterTreeModel`;
 names are renamed in place (double-click or F2), rows are dragged onto
 another row to move them under it, or onto the empty space below the rows to
 make them roots. Selecting a row selects the parameter in the shared
-:class:`~workbench.view_state.ViewState` (the viewport then shows its
+:class:`~workbench.document.view_state.ViewState` (the viewport then shows its
 influence region as a heat map), and a selection made elsewhere is shown here.
 """
 
@@ -18,8 +18,8 @@ from PySide6.QtWidgets import QAbstractItemView, QDockWidget, QHeaderView, QTree
 
 import engine
 
-from ..document import ModelDocument
-from ..view_state import ViewState
+from ..document.model_document import ModelDocument
+from ..document.view_state import ViewState
 from .tree_model import ParameterTreeModel
 
 

@@ -23,7 +23,7 @@ from PySide6.QtWidgets import QMessageBox
 import engine
 from engine.model.edits import subtree, unique_name
 
-from ..undo_commands import (
+from ..document.undo_commands import (
     AddParameterCommand,
     ModelEditCommand,
     MoveParameterCommand,
@@ -32,7 +32,7 @@ from ..undo_commands import (
 )
 
 if TYPE_CHECKING:
-    from ..main_window import MainWindow
+    from ..window.main_window import MainWindow
 
 TITLE = "Parameter tree"
 MESSAGE_MS = 4000

@@ -4,7 +4,7 @@ Type (rotation / translation), axis, degrees per unit and pivot for a
 rotation (the pivot typed in mm or picked on the mesh), direction (mm per
 unit) for a translation, the value range, the default and a description.
 Each finished edit of one property is one undo step
-(:class:`~workbench.undo_commands.ReplaceParameterCommand`); a value the engine
+(:class:`~workbench.document.undo_commands.ReplaceParameterCommand`); a value the engine
 refuses (minimum above maximum, a zero axis, a default outside the range,
 text that is not a number) is explained in a message and the field goes back
 to what the model holds.
@@ -24,8 +24,8 @@ from PySide6.QtWidgets import QComboBox, QFormLayout, QHBoxLayout, QLabel, QLine
 
 import engine
 
+from ..document.undo_commands import ReplaceParameterCommand
 from ..icons import icon
-from ..undo_commands import ReplaceParameterCommand
 from .fields import ScalarField, VectorField
 from .pivot_picker import PivotPicker
 from .tree_model import GROUP_TEXT, type_text
