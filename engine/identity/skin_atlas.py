@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.ndimage import distance_transform_edt
 
+from engine.formats.default_head_skin import skin_polygons
 from engine.model import Model
 from engine.model.cells import cell_sizes, cell_starts
 
@@ -64,46 +65,37 @@ class SkinAtlas:
         return out.reshape(self.size, self.size, channels)
 
 
-_CACHE: dict[tuple[str, int], SkinAtlas] = {}
+_CACHE: dict[tuple[str, int, tuple[int, ...]], SkinAtlas] = {}
 
 
-def skin_atlas(model: Model, size: int) -> SkinAtlas:
-    """The skin polygons of ``model`` drawn into a ``size`` × ``size`` atlas by their texture coordinates."""
+def skin_atlas(model: Model, size: int, parts: tuple[str, ...] = ("skin",)) -> SkinAtlas:
+    """The polygons of ``parts`` (the skin) of ``model`` drawn into a ``size`` × ``size`` atlas by their
+    texture coordinates (parts the model lacks are left out)."""
     assert model.texture is not None, "the head must have texture coordinates"
-    skin = model.parts.index("skin")
+    indices = tuple(model.parts.index(p) for p in parts if p in model.parts)
     digest = hashlib.sha256(model.texture.corner_uv.tobytes() + model.faces.tobytes()
                             + model.vertex_part.tobytes()).hexdigest()
-    key = (digest, size)
+    key = (digest, size, indices)
     if key not in _CACHE:
-        if len(_CACHE) > 4:
+        if len(_CACHE) > 6:
             _CACHE.clear()
-        _CACHE[key] = _draw(model, skin, size)
+        _CACHE[key] = _draw(model, indices, size)
     return _CACHE[key]
 
 
 def skin_faces(model: Model) -> np.ndarray:
-    """The polygons that show the skin image: the skin part's, with every corner's (u, v) inside the image
-    (the ones :func:`skin_atlas` draws), found without drawing the atlas."""
-    assert model.texture is not None, "the head must have texture coordinates"
-    counts = cell_sizes(model.faces)
-    starts = cell_starts(counts)
-    skin = model.vertex_part[model.faces[starts + 1]] == model.parts.index("skin")
-    uv = model.texture.corner_uv
-    outside = np.any((uv < 0) | (uv > 1), axis=1)
-    corner_face = np.repeat(np.arange(len(counts)), counts)
-    bad = np.zeros(len(counts), dtype=bool)
-    bad[corner_face[outside]] = True
-    return np.flatnonzero(skin & ~bad & (counts >= 3))
+    """The polygons that show the skin image (the ones :func:`skin_atlas` draws), found without drawing it."""
+    return skin_polygons(model)
 
 
-def _draw(model: Model, skin: int, size: int) -> SkinAtlas:
+def _draw(model: Model, parts: tuple[int, ...], size: int) -> SkinAtlas:
     assert model.texture is not None
     counts = cell_sizes(model.faces)
     starts = cell_starts(counts)
     corner_start = np.concatenate([[0], np.cumsum(counts)[:-1]])
     uv = model.texture.corner_uv
     tris, tri_uv, tri_face = [], [], []
-    for f in np.flatnonzero(model.vertex_part[model.faces[starts + 1]] == skin):
+    for f in np.flatnonzero(np.isin(model.vertex_part[model.faces[starts + 1]], parts)):
         n = int(counts[f])
         idx = model.faces[starts[f] + 1:starts[f] + 1 + n]
         c = uv[corner_start[f]:corner_start[f] + n]
