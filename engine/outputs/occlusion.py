@@ -27,6 +27,18 @@ open of its values at rest and with the jaw half open (``jaw_open`` at 60 % of
 its range, where the model has one), so the teeth and the tongue are not black
 in an open mouth and closed lips do not show a dark band where they meet.
 
+The teeth (issue 32): MakeHuman's dentition has three rows of vertices up an
+incisor, and the upper ones lie behind the upper lip at rest and half-way
+through the jaw's opening, so between lips parted with the jaw nearly closed
+(AU10, Disgust, Anger) the incisors' faces were shut in and drew as a grey
+slab. A tooth's face turned to the front is seen only through the lips'
+opening, which is where the front lights come from too, so it keeps at least
+:data:`TEETH_FRONT_OPEN`. And since nothing here casts the key light's shadow,
+a tooth's value then falls with its depth behind the front teeth
+(:data:`TEETH_SHADE_MM`, down to :data:`TEETH_DEEPEST` of it): the side teeth
+lie in the mouth's shadow (the buccal corridor) instead of shining at its
+corners like two fangs.
+
 >>> from engine import load_model
 >>> from engine.outputs.part_layout import PartLayout
 >>> head = load_model()
@@ -53,6 +65,9 @@ __all__ = ["DIRECTIONS", "VOXEL_MM", "forget_computed", "mesh_occlusion", "model
 DIRECTIONS = 40                  # rays per point
 VOXEL_MM = 1.5                   # the grid the surface is marked in
 _JAW, _JAW_SHARE = "jaw_open", 0.6
+TEETH_FRONT_OPEN = 1.0          # the least a tooth's face turned to the front keeps (it is seen only when lit)
+TEETH_SHADE_MM = (8.0, 12.0)     # a tooth's light falls from this depth behind the front teeth, over this far
+TEETH_DEEPEST = 0.25
 _LIFT = 2.0                      # rays start this many cells above the surface (clear of its own cells)
 _FIRST = 1.5                     # and take their first sample this many cells further
 _STEPS = 14                      # samples along each ray
@@ -68,7 +83,8 @@ def settings() -> dict[str, object]:
     """How the occlusion is computed (the radius is the look's): a stimulus set's provenance records it."""
     return {"method": "rays marched through the surface marked in a grid; each point the more open of the rest "
                       "pose and the jaw half open", "directions": DIRECTIONS, "voxel_mm": VOXEL_MM, "steps": _STEPS,
-            "falloff": "1 - (t / radius)^2", "jaw_open_share": _JAW_SHARE}
+            "falloff": "1 - (t / radius)^2", "jaw_open_share": _JAW_SHARE,
+            "teeth": {"front_open": TEETH_FRONT_OPEN, "shade_mm": list(TEETH_SHADE_MM), "deepest": TEETH_DEEPEST}}
 
 
 def model_occlusion(model: Model, radius_mm: float = 30.0, layout: PartLayout | None = None) -> np.ndarray:
@@ -90,12 +106,15 @@ def model_occlusion(model: Model, radius_mm: float = 30.0, layout: PartLayout | 
     if _JAW in model.parameters:
         jaw = model.parameters[_JAW]
         poses.append(model.deform({_JAW: jaw.default + _JAW_SHARE * (jaw.maximum - jaw.default)}))
+    teeth = _teeth_points(layout)
     content = _content_key(layout, poses, radius_mm)
     values = _by_content.get(content)
     if values is None:
         values = _layout_occlusion(layout, poses[0], radius_mm)
         for opened in poses[1:]:
             np.maximum(values, _layout_occlusion(layout, opened, radius_mm), out=values)
+        if len(teeth):
+            values[teeth] = _teeth_light(layout, poses[0], teeth, values[teeth])
         values.setflags(write=False)
         _by_content[content] = values
         while len(_by_content) > _BY_CONTENT_SIZE:
@@ -104,6 +123,24 @@ def model_occlusion(model: Model, radius_mm: float = 30.0, layout: PartLayout | 
         _by_content.move_to_end(content)
     _cache[model] = (key, values)
     return values
+
+
+def _teeth_points(layout: PartLayout) -> np.ndarray:
+    """The layout's points that belong to a teeth part (``teeth…``, ``tooth…``)."""
+    ranges = [np.arange(*layout.slices[k]) for k, part in enumerate(layout.parts)
+              if part.lower().startswith(("teeth", "tooth"))]
+    return np.concatenate(ranges) if ranges else np.zeros(0, dtype=np.int64)
+
+
+def _teeth_light(layout: PartLayout, positions: np.ndarray, teeth: np.ndarray, values: np.ndarray) -> np.ndarray:
+    """The teeth points' values: at least :data:`TEETH_FRONT_OPEN` where a tooth faces the front, then
+    falling with the depth (mm, +Z forward) behind the front-most tooth (see the module's docstring)."""
+    _, normals = layout.points_and_normals(positions)
+    facing = np.clip((normals[teeth, 2] - 0.1) / 0.4, 0.0, 1.0)
+    z = positions[layout.gather[teeth], 2]
+    t = np.clip((float(z.max()) - z - TEETH_SHADE_MM[0]) / TEETH_SHADE_MM[1], 0.0, 1.0)
+    shade = 1.0 - (1.0 - TEETH_DEEPEST) * t * t * (3 - 2 * t)
+    return np.asarray(np.maximum(values, TEETH_FRONT_OPEN * facing * facing * (3 - 2 * facing)) * shade)
 
 
 def forget_computed() -> None:
