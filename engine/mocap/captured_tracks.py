@@ -49,7 +49,8 @@ class MarkerModel:
     """The model reduced to the marker vertices, driven by a few of its parameters (values (F, P) → (F, m, 3))."""
 
     def __init__(self, model: Model, markers: Sequence[str], parameters: Sequence[str]) -> None:
-        from engine.mocap.synthetic import marker_vertices, model_at_vertices
+        from engine.mocap.synthetic import marker_vertices
+        from engine.model.vertex_subset import model_at_vertices
 
         places = marker_vertices(model, markers)
         self.markers = list(markers)

@@ -111,7 +111,7 @@ class FrameFit:
 def fit_frames(model: Model, applied: AppliedArticulation, target: np.ndarray) -> FrameFit:
     """Fit the applied parameters frame by frame to ``target`` ((F, m, 3) model mm, the columns of
     :attr:`AppliedArticulation.markers`, NaN where missing), from the markers each frame has."""
-    from engine.mocap.synthetic import model_at_landmarks
+    from engine.model.vertex_subset import model_at_landmarks
 
     sub = model_at_landmarks(model, applied.markers)                        # exact at these vertices, fast
     rest = sub.vertices

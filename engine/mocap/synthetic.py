@@ -39,15 +39,15 @@ Lengths are mm, times ms; frame ``i`` is at ``i · 1000 / rate_hz`` ms.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 import numpy as np
-import numpy.typing as npt
 
 from engine.errors import UserError
 from engine.mocap.frame_selection import Phones
+from engine.model.vertex_subset import model_at_vertices
 from engine.script.timed_labels import TimedLabel
 
 if TYPE_CHECKING:
@@ -268,42 +268,6 @@ def _place(model: Model, x: float, base: tuple[str, ...], above: float, marker: 
     if not len(near):
         raise UserError(f"cannot place marker {marker}: no skin near x = {x:g}, y = {y:.0f} mm")
     return int(near[np.argmax(v[near, 2])])
-
-
-def model_at_landmarks(model: Model, keys: Iterable[str]) -> Model:
-    """A copy of ``model`` reduced to the vertices of the landmarks ``keys`` (in that order).
-
-    It deforms exactly like the full model at those vertices, in microseconds
-    instead of milliseconds: every influence region is cut down to them and
-    the parameter tree is kept whole. Its landmarks are ``keys`` → 0, 1, ….
-    """
-    keys = [str(k) for k in keys]
-    missing = [k for k in keys if k not in model.landmarks]
-    if missing:
-        raise UserError(f"the model has no landmark {', '.join(missing)}")
-    vertices = np.array([model.landmarks[k] for k in keys], dtype=np.int64)
-    return model_at_vertices(model, vertices, landmarks={k: i for i, k in enumerate(keys)})
-
-
-def model_at_vertices(model: Model, vertices: npt.ArrayLike, landmarks: Mapping[str, int] | None = None) -> Model:
-    """A copy of ``model`` reduced to the given vertex indices (no faces); see :func:`model_at_landmarks`.
-
-    A vertex listed twice appears twice, with the same weights.
-    """
-    from engine.model.model import InfluenceRegion, Model
-
-    vertices = np.asarray(vertices, dtype=np.int64).reshape(-1)
-    regions = {}
-    for name, region in model.regions.items():
-        pos = np.searchsorted(region.indices, vertices)        # region indices are sorted
-        inside = pos < len(region.indices)
-        inside[inside] = region.indices[pos[inside]] == vertices[inside]
-        new_index, old = np.flatnonzero(inside), pos[inside]
-        displacements = None if region.displacements is None else region.displacements[old].reshape(-1, 3)
-        regions[name] = InfluenceRegion(new_index, region.weights[old] if len(old) else np.zeros(0), displacements)
-    return Model(model.vertices[vertices], np.zeros(0, dtype=np.int64), list(model.parts),
-                 model.vertex_part[vertices], model.parameters.copy(), regions, landmarks or {},
-                 name=f"{model.name} (markers)")
 
 
 # -- the pieces -----------------------------------------------------------------------

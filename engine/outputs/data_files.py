@@ -29,6 +29,7 @@ import numpy as np
 
 from engine.commands.command_files import format_number, low_level_xml
 from engine.model.landmarks import landmark_sort_key
+from engine.model.vertex_subset import model_at_landmarks
 from engine.speech.synthesis import Utterance, phones_csv, read_wav_bytes, wav_bytes
 from engine.timeline.tracks import tracks_csv_text
 
@@ -125,11 +126,12 @@ def landmarks_csv(model: Model, times: np.ndarray, values: np.ndarray) -> str:
         raise ValueError(f"expected {len(times)} frames × {len(model.parameters)} parameters of values, "
                          f"got shape {values.shape}")
     ids = sorted(model.landmarks, key=landmark_sort_key)
-    vertices = [model.landmarks[i] for i in ids]
     header = ["frame", "time_ms"] + [f"{i}_{axis}" for i in ids for axis in "xyz"]
     lines = [",".join(header)]
-    deformer = model.deformer()
+    # the landmarks' own vertices, moved as the whole mesh would move them (the same numbers): the mesh
+    # itself is deformed once per frame, by the video that shows it, not again for this table
+    deformer = model_at_landmarks(model, ids).deformer()
     for n, (t, row) in enumerate(zip(times, values, strict=True)):
-        points = deformer.deform(row)[vertices]
+        points = deformer.deform(row)
         lines.append(",".join([str(n), format_number(t)] + [format_number(c) for c in points.ravel()]))
     return "\n".join(lines) + "\n"

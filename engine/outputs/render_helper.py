@@ -61,20 +61,26 @@ def helper_wanted(frames: int) -> bool:
 class RenderHelper:
     """Frames ``offset, offset + step, …`` of ``request``, drawn by a forked copy of this process."""
 
-    def __init__(self, request: VideoRequest, antialias: bool, offset: int = 1, step: int = 2) -> None:
+    def __init__(self, request: VideoRequest, antialias: bool, offset: int = 1, step: int = 2,
+                 positions: bool = False) -> None:
         width, height = request.size
         self.frame_bytes = width * height * 3
         self.shape = (height, width, 3)
         self.offset, self.step = offset, step
+        # with ``positions``, each frame's picture is followed by the vertex positions it was drawn from
+        self.positions_shape = (request.model.n_vertices, 3) if positions else None
+        self.positions_bytes = request.model.n_vertices * 3 * 8 if positions else 0
+        self.positions: np.ndarray | None = None
+        """The vertex positions (mm, float64) of the frame :meth:`frame` returned last, when asked for."""
         read_end, write_end = os.pipe()
         with contextlib.suppress(OSError):            # a larger pipe lets the helper draw ahead
             import fcntl
 
-            fcntl.fcntl(write_end, _F_SETPIPE_SZ, min(_PIPE_BYTES, 4 * self.frame_bytes))
+            fcntl.fcntl(write_end, _F_SETPIPE_SZ, min(_PIPE_BYTES, 4 * (self.frame_bytes + self.positions_bytes)))
         self.pid = os.fork()
         if self.pid == 0:                             # the helper: draw, write, leave
             os.close(read_end)
-            _draw_frames(request, antialias, offset, step, write_end)
+            _draw_frames(request, antialias, offset, step, write_end, positions)
         os.close(write_end)
         self._pipe = os.fdopen(read_end, "rb")
         self.alive = True
@@ -84,11 +90,14 @@ class RenderHelper:
         if not self.alive:
             return None
         assert (n - self.offset) % self.step == 0, "not one of the helper's frames"
-        data = self._pipe.read(self.frame_bytes)
-        if data is None or len(data) < self.frame_bytes:
+        data = self._pipe.read(self.frame_bytes + self.positions_bytes)
+        if data is None or len(data) < self.frame_bytes + self.positions_bytes:
             self.close()
             return None
-        return np.frombuffer(data, dtype=np.uint8).reshape(self.shape)
+        if self.positions_shape is not None:
+            self.positions = np.frombuffer(data, dtype=np.float64, offset=self.frame_bytes).reshape(
+                self.positions_shape)
+        return np.frombuffer(data, dtype=np.uint8, count=self.frame_bytes).reshape(self.shape)
 
     def owns(self, n: int) -> bool:
         """Whether frame ``n`` is the helper's to draw (while it is alive)."""
@@ -112,8 +121,10 @@ class RenderHelper:
             self.close()
 
 
-def _draw_frames(request: VideoRequest, antialias: bool, offset: int, step: int, pipe: int) -> None:
-    """In the forked helper: draw the frames and write them to ``pipe``; never returns."""
+def _draw_frames(request: VideoRequest, antialias: bool, offset: int, step: int, pipe: int,
+                 positions: bool = False) -> None:
+    """In the forked helper: draw the frames and write them to ``pipe`` (each followed by its vertex
+    positions when ``positions``); never returns."""
     code = 1
     try:
         from engine.outputs.render import FrameRenderer
@@ -125,11 +136,14 @@ def _draw_frames(request: VideoRequest, antialias: bool, offset: int, step: int,
                            look=request.look) as renderer, \
                 os.fdopen(pipe, "wb", buffering=0) as out:
             for n in range(offset, request.frames, step):
-                image = renderer.render(deformer.deform(request.values[n]))
-                view = memoryview(np.ascontiguousarray(image).data).cast("B")
-                while view:
-                    written = out.write(view)
-                    view = view[written:]
+                moved = deformer.deform(request.values[n])
+                image = renderer.render(moved)
+                parts = [image] + ([np.asarray(moved, dtype=np.float64)] if positions else [])
+                for part in parts:
+                    view = memoryview(np.ascontiguousarray(part).data).cast("B")
+                    while view:
+                        written = out.write(view)
+                        view = view[written:]
         code = 0
     except BaseException:                              # the parent draws what is missing
         code = 1

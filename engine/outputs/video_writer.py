@@ -222,7 +222,8 @@ def check_video(path: str | Path, model: Model, times_ms: ArrayLike, values: Arr
 
 def encode_video(request: VideoRequest, destination: str | Path, progress: Progress | None = None,
                  antialias: bool | None = None,
-                 on_frame: Callable[[int, np.ndarray], None] | None = None) -> VideoStats:
+                 on_frame: Callable[[int, np.ndarray], None] | None = None,
+                 on_positions: Callable[[int, np.ndarray], None] | None = None) -> VideoStats:
     """Render and encode ``request`` into ``destination`` as it is: no temporary file, no rename.
 
     For writers that make the file atomic themselves (as :func:`write_video`
@@ -231,7 +232,10 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
     temporary file; errors name ``request.path``. ``progress`` and
     ``antialias`` as in :func:`write_video`. If anything goes wrong (Ctrl-C
     included), ffmpeg is stopped before the exception leaves. ``on_frame(n, image)``, when given, sees
-    every frame's picture as drawn (height × width × 3), so a caller needing one picture draws it no more.
+    every frame's picture as drawn (height × width × 3), so a caller needing one picture draws it no more;
+    ``on_positions(n, positions)`` sees the vertex positions (N × 3, mm) every frame was drawn from, in
+    frame order, so a caller measuring the face's motion deforms no frame again (issue 35: each result
+    computed once).
     """
     started = time.perf_counter()
     ffmpeg = find_tool("ffmpeg")
@@ -260,7 +264,7 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                     command += ["-ar", str(next((r for r in AAC_RATES if r >= rate), AAC_RATES[-1]))]
             command += [*request.encoding.ffmpeg_args(), "-movflags", "+faststart", "-f", "mp4", str(destination)]
             if helper_wanted(count):              # forked before our renderer and ffmpeg exist
-                helper = RenderHelper(request, antialias)
+                helper = RenderHelper(request, antialias, positions=on_positions is not None)
             with FrameRenderer(request.model, size=(width, height), view=request.view,
                                antialias=antialias, look=request.look) as renderer:
                 cpu_before = _children_cpu()
@@ -274,6 +278,7 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                 for n in range(count):
                     t0 = time.perf_counter()
                     image = helper.frame(n) if helper is not None and helper.owns(n) else None
+                    positions = helper.positions if image is not None and helper is not None else None
                     t1 = time.perf_counter()
                     if image is None:
                         positions = deformer.deform(request.values[n])
@@ -282,6 +287,8 @@ def encode_video(request: VideoRequest, destination: str | Path, progress: Progr
                     t2 = time.perf_counter()
                     if on_frame is not None:
                         on_frame(n, image)
+                    if on_positions is not None and positions is not None:
+                        on_positions(n, positions)
                     if not writer.put(image):
                         break                               # ffmpeg stopped taking frames: report below
                     t3 = time.perf_counter()

@@ -131,11 +131,14 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
     files_sound = replace(utterance, samples=audio, sample_rate=rate, source_wav=None,
                           phones=_shifted(utterance.phones, layout.audio_start_ms))
     data = FrameData(timeline.parameters, frame_times, values, files_sound, model)
+    # the motion check's face motion, from the very positions the video is drawn from
+    motion = MotionMeter(count) if drawn is not None and count >= 25 else None
     with atomic_files(paths.values()) as temporary:
         for kind, path in sorted(paths.items(), key=lambda item: item[0] in ("silent-mp4", "png")):   # after the mp4
             destination = temporary[path]
             if kind in requests:
-                encode_video(requests[kind], destination, on_frame=keep_still if reuse else None)
+                encode_video(requests[kind], destination, on_frame=keep_still if reuse else None,
+                             on_positions=motion)
             elif kind == "silent-mp4":                   # the mp4, written just before, without its sound
                 copy_without_audio(temporary[paths["mp4"]], destination, path)
             elif kind == "png" and still_frame in kept:
@@ -150,8 +153,8 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
                                   layout.audio_start_ms, float(levels["snr_db"]) if "snr_db" in levels else None,
                                   gain)
         frames = _decoded_frames(paths, count)
-        video_check = (_check_video(paths, vertex_motion(model, values), fps, layout.video_start_ms, frames)
-                       if drawn is not None and count >= 25 else {})    # no video to check: no motion to deform
+        video_check = (_check_video(paths, _face_motion(motion, model, values), fps, layout.video_start_ms,
+                                    frames) if motion is not None else {})   # no video to check: no motion
         check = audio_check.result()
     check.update(video_check)
     if check.get("video_ok") is False:
@@ -234,13 +237,33 @@ def vertex_motion(model: Model, values: np.ndarray) -> np.ndarray:
     the mean distance its vertices travel from the frame before (mm; 0 for the first frame). What a camera
     sees move, unlike a parameter's value (the tongue behind closed lips moves no pixel)."""
     deformer = model.deformer()
-    previous, motion = None, np.zeros(len(values))
+    meter = MotionMeter(len(values))
     for n, row in enumerate(values):
-        positions = deformer.deform(row)
-        if previous is not None:
-            motion[n] = float(np.linalg.norm(positions - previous, axis=1).mean())
-        previous = positions
-    return motion
+        meter(n, deformer.deform(row))
+    return meter.motion
+
+
+def _face_motion(meter: MotionMeter, model: Model, values: np.ndarray) -> np.ndarray:
+    """The meter's figures once it has seen every frame (it has, unless the video was cut short)."""
+    return meter.motion if meter.seen == len(values) else vertex_motion(model, values)
+
+
+class MotionMeter:
+    """:func:`vertex_motion` gathered frame by frame from positions already deformed (the video's own:
+    :func:`~engine.outputs.video_writer.encode_video`'s ``on_positions``), so no frame is deformed again."""
+
+    def __init__(self, frames: int) -> None:
+        self.motion = np.zeros(frames)
+        self.seen = 0
+        self._previous: np.ndarray | None = None
+
+    def __call__(self, n: int, positions: np.ndarray) -> None:
+        if n != self.seen:
+            raise ValueError(f"frame {n} came after frame {self.seen - 1}: the frames must come in order")
+        if self._previous is not None:
+            self.motion[n] = float(np.linalg.norm(positions - self._previous, axis=1).mean())
+        self._previous = positions
+        self.seen += 1
 
 
 def _decoded_frames(paths: dict[str, Path], count: int) -> np.ndarray | None:

@@ -26,6 +26,7 @@ import numpy as np
 from engine.errors import UserError
 from engine.formats.csv_tables import read_table
 from engine.model import Model
+from engine.model.vertex_subset import model_at_landmarks
 from engine.validation.measures import CLOSED_APERTURE
 
 UPPER, LOWER = "2.2", "2.3"
@@ -83,9 +84,8 @@ def lip_track(model: Model, times: np.ndarray, values: np.ndarray) -> LipTrack:
     """The intended lip gap of ``model`` at ``values`` (frames × parameters, tree order) at ``times``."""
     if UPPER not in model.landmarks or LOWER not in model.landmarks:
         raise UserError(f"the model names no inner lip landmarks {UPPER} and {LOWER}")
-    vertices = [model.landmarks[UPPER], model.landmarks[LOWER]]
-    deformer = model.deformer()
-    gaps = [float(np.linalg.norm(np.subtract(*deformer.deform(row)[vertices]))) for row in values]
+    deformer = model_at_landmarks(model, [UPPER, LOWER]).deformer()   # the two lips alone, moved exactly
+    gaps = [float(np.linalg.norm(np.subtract(*deformer.deform(row)))) for row in values]
     return LipTrack(np.asarray(times, dtype=float), np.asarray(gaps))
 
 
