@@ -181,7 +181,7 @@ def provenance(design: Design, records: list[dict[str, Any]]) -> dict[str, Any]:
             libraries[name] = None
     made = {
         "format_version": PROVENANCE_VERSION,
-        "toolkit": {"version": _toolkit_version(), "git_commit": _git_commit()},
+        "toolkit": {"version": _toolkit_version(), "git_commit": git_commit()},
         "design": {"file": design.path.name, "sha256": design.sha256, "seed": design.seed,
                    "stimuli": len(records)},
         "files": {name: _file_hash(path) for name, path in sorted(design.extra_files.items())},
@@ -291,14 +291,24 @@ def _toolkit_version() -> str | None:
     return None
 
 
-def _git_commit() -> str | None:
-    top = Path(__file__).resolve().parents[2]
+def git_commit(top: Path | None = None) -> str | None:
+    """The commit of the toolkit's own checkout (``top``: the folder holding ``engine/``), or ``None``.
+
+    ``None`` too when the toolkit is installed as a package: a venv's ``site-packages`` inside a lab's
+    own repository would otherwise give that repository's commit, which says nothing of the toolkit. So
+    the checkout counts only when its top level is ``top`` itself.
+    """
+    top = (top or Path(__file__).resolve().parents[2]).resolve()
     try:
-        done = subprocess.run(with_parent_death_signal(["git", "-C", str(top), "rev-parse", "HEAD"]),
+        done = subprocess.run(with_parent_death_signal(["git", "-C", str(top), "rev-parse", "--show-toplevel",
+                                                        "HEAD"]),
                               capture_output=True, text=True, timeout=10, check=False)
     except (OSError, subprocess.TimeoutExpired):
         return None
-    return done.stdout.strip() or None if done.returncode == 0 else None
+    lines = done.stdout.split()
+    if done.returncode != 0 or len(lines) != 2 or Path(lines[0]).resolve() != top:
+        return None
+    return lines[1]
 
 
 def _festival_version() -> str | None:
