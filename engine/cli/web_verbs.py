@@ -107,9 +107,7 @@ def run_web_export(args: argparse.Namespace) -> int:
             print(f"warning: {warning}", file=sys.stderr)
         sizes = write_speech_site(speech, model, out, fps=args.fps, size=args.size, look=look)
     total = sum(sizes.values())
-    print(f"wrote {out}/: index.html, player.js, three.js, head.glb ({sizes['head.glb'] / 1e3:.0f} kB), "
-          f"animation.json ({sizes['animation.json'] / 1e3:.0f} kB), speech.wav ({sizes['speech.wav'] / 1e3:.0f} kB);"
-          f" {total / 1e6:.2f} MB in all")
+    print(f"wrote {out}/: {site_files_text(sizes)}; {total / 1e6:.2f} MB in all")
     return 0
 
 
@@ -119,3 +117,14 @@ def _text(args: argparse.Namespace) -> tuple[str, str]:
     if args.file is None:
         raise UserError("nothing to play: give --say TEXT, --file F, --tracks CSV --audio WAV or --stimuli OUTDIR")
     return read_text_file(args.file), args.file
+
+
+def site_files_text(sizes: dict[str, int]) -> str:
+    """The files a site was written with and their sizes, as the verb reports them (the player bundles
+    three.js; its licence is three-LICENSE.txt).
+
+    >>> site_files_text({"index.html": 900, "player.js": 700_000, "head.glb": 1_500})
+    'index.html (1 kB), player.js (700 kB), head.glb (2 kB)'
+    """
+    return ", ".join(f"{name} ({size / 1e3:.0f} kB)" for name, size in sizes.items())
+

@@ -44,6 +44,9 @@ def test_a_sentence_becomes_a_small_offline_site(tmp_path):
     total = sum(f.stat().st_size for f in site.rglob("*") if f.is_file())
     assert total < SIZE_LIMIT, f"the site is {total / 1e6:.2f} MB"
     assert "MB in all" in result.stdout
+    reported = result.stdout.split(": ", 1)[1]
+    assert all(f"{name} (" in reported for name in SITE_FILES)    # every file written, and only those:
+    assert "three.js" not in reported                               # three.js is inside player.js
     page = (site / "index.html").read_text()
     assert "importmap" not in page and 'from "./player.js"' in page   # the bundle needs no import map
     assert IMPORT.search((site / "player.js").read_text()) is None      # and imports nothing itself
