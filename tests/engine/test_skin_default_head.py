@@ -59,13 +59,18 @@ def test_only_the_shipped_file_is_given_it_and_a_saved_copy_keeps_its_own(tmp_pa
     copy = load_model(path)
     put_on_shipped_skin(copy, path)
     assert copy.texture is not None and int(copy.texture.images[0].pixels.max()) == 90
-    plain = load_model()
-    put_on_shipped_skin(plain, path)                  # another file's name: left as it is
-    assert plain.texture is not None and plain.texture.images == []
+    bare = load_model(path)
+    assert bare.texture is not None
+    bare.texture = type(bare.texture)(bare.texture.corner_uv, [], bare.texture.face_image * 0 - 1)
+    put_on_shipped_skin(bare, path)                   # another file's name: left as it is
+    assert bare.texture.images == []
 
 
 def test_the_render_shows_the_skin():
     head, plain = skinned_default_head(), load_model()
+    assert plain.texture is not None
+    plain.texture.face_image[:] = -1                 # the part colours, as before the skin
+    plain.changed()
     a = render_model(head, {}, size=(150, 200)).astype(float)
     b = render_model(plain, {}, size=(150, 200)).astype(float)
     forehead = (slice(40, 60), slice(60, 90))
