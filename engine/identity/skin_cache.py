@@ -20,12 +20,14 @@ the user's cache folder:
   made by ``default_skin.py`` beside it) and is taken from there while its key is current.
 
 >>> import numpy as np, os, tempfile
+>>> before = os.environ.get("ARTIFICIAL_PERSON_CACHE")
 >>> os.environ["ARTIFICIAL_PERSON_CACHE"] = tempfile.mkdtemp()
 >>> made = cached_skin_pixels("0" * 64, lambda: np.full((4, 4, 3), 7, dtype=np.uint8))
 >>> again = cached_skin_pixels("0" * 64, lambda: np.zeros((4, 4, 3), dtype=np.uint8))
 >>> int(again[0, 0, 0])                                  # the kept image, not computed again
 7
->>> del os.environ["ARTIFICIAL_PERSON_CACHE"]
+>>> if before is None: del os.environ["ARTIFICIAL_PERSON_CACHE"]
+... else: os.environ["ARTIFICIAL_PERSON_CACHE"] = before
 """
 
 from __future__ import annotations
