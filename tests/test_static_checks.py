@@ -83,6 +83,9 @@ BREAKAGES = {
     "a workbench widget draws with pyvista": ("workbench/parameter_panel/slider.py", "import pyvista",
                                               "only in the viewport and the drawing modules",
                                               "workbench.parameter_panel.slider -> pyvista"),
+    "a workbench tool imports another": ("workbench/look_menu.py", "def f():\n    import workbench.painting",
+                                         "tools import none of each other",
+                                         "workbench.look_menu -> workbench.painting"),
 }
 
 

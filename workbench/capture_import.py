@@ -22,6 +22,7 @@ from PySide6.QtWidgets import QFileDialog, QMessageBox
 from engine.errors import UserError
 
 from . import settings
+from .tools import ToolContext
 from .window.actions import ActionSpec, create_actions
 
 if TYPE_CHECKING:
@@ -40,38 +41,39 @@ IMPORT_CAPTURE = ActionSpec(
         "jaw, lids, head and eyes")
 
 
-def install(window: MainWindow) -> None:
+def install(context: ToolContext) -> None:
     """Put *Import capture stream…* in the File menu, above Quit."""
-    actions = create_actions(window, (IMPORT_CAPTURE,))
-    menu = window.menus["&File"]
-    quit_action = window.actions_by_id.get("file.quit")
+    actions = create_actions(context.window, (IMPORT_CAPTURE,))
+    menu = context.menus["&File"]
+    quit_action = context.actions.get("file.quit")
     if quit_action is not None and quit_action in menu.actions():
         menu.insertAction(quit_action, actions[IMPORT_CAPTURE.id])
     else:
         menu.addAction(actions[IMPORT_CAPTURE.id])
-    window.actions_by_id.update(actions)
+    context.actions.update(actions)
 
 
 def import_capture_stream(window: MainWindow, path: str | Path, format: str = "auto") -> bool:
     """Map the take at ``path`` onto the window's model and load it into the player."""
     from engine.capture.animate import capture_table
 
+    context = window.tools
     try:
-        table, stream, mapped, fps = capture_table(path, window.document.model, format)
+        table, stream, mapped, fps = capture_table(path, context.document.model, format)
     except UserError as error:
         QMessageBox.warning(window, TITLE, f"Cannot import this capture stream:\n\n{error}")
         return False
     name = Path(path).stem
-    window.player.load(table, title=name, fps=fps)
-    window.timeline_dock.show()
+    context.player.load(table, title=name, fps=fps)
+    context.show_dock("dock:timeline")           # the timeline tool's dock, where there is one
     said = [*stream.notes, *mapped.warnings]
     said += [f"clamped {n} in {c.frames} frame(s) (mapped {c.lowest:.3g} … {c.highest:.3g})"
              for n, c in mapped.clamped.items()]
     if said:
         QMessageBox.information(window, TITLE, f"{name}: {stream.format}, {stream.frames} frames.\n\n"
                                 + "\n".join(said))
-    window.statusBar().showMessage(f"Capture {name}: {len(mapped.parameters)} parameters, "
-                                   f"{window.playhead.duration:.3f} s — Space plays", MESSAGE_MS)
+    context.status.showMessage(f"Capture {name}: {len(mapped.parameters)} parameters, "
+                               f"{context.playhead.duration:.3f} s — Space plays", MESSAGE_MS)
     return True
 
 

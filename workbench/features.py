@@ -2,10 +2,12 @@
 
 A tool (the parameter-tree editor, weight painting, the library editor, the
 timeline, the script panel, the motion-capture wizard, …) lives in its own
-module and exposes ``install(window) -> None``: it adds its docks, its
-tool-options page (:meth:`~workbench.window.tool_options.ToolOptionsDock.add_page`)
-and its actions (:func:`workbench.window.actions.add_actions`). The main window
-calls every installer listed here, in order, once its own pieces are up.
+module and exposes ``install(context) -> None``, taking the window's
+:class:`~workbench.tools.ToolContext`: it adds its docks, its tool-options page
+(:meth:`~workbench.window.tool_options.ToolOptionsDock.add_page`) and its actions
+(:meth:`~workbench.tools.ToolContext.add_actions`). The main window makes the
+context (the player among it) and calls every installer listed here, in order,
+once its own pieces are up; no tool needs another installed first.
 
 Adding a tool is adding one line to :data:`INSTALLERS`.
 """
@@ -16,11 +18,11 @@ from importlib import import_module
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
-    from .window.main_window import MainWindow
+    from .tools import ToolContext
 
 INSTALLERS: list[str] = [
     # "module:function", relative to the workbench package
-    "timeline_dock:install",        # first: creates window.player, which other tools play through
+    "timeline_dock:install",
     "tree_editor:install",
     "painting:install",
     "library_editor:install",
@@ -32,9 +34,9 @@ INSTALLERS: list[str] = [
 ]
 
 
-def install_all(window: MainWindow) -> None:
-    """Run every installer in :data:`INSTALLERS` on ``window``."""
+def install_all(context: ToolContext) -> None:
+    """Run every installer in :data:`INSTALLERS` with the window's ``context``."""
     for entry in INSTALLERS:
         module_name, _, function = entry.partition(":")
         module = import_module(f".{module_name}", __package__)
-        getattr(module, function or "install")(window)
+        getattr(module, function or "install")(context)

@@ -12,7 +12,7 @@ from PySide6.QtWidgets import QMenu
 from engine.outputs.looks import DEFAULT_LOOK, LOOKS
 
 if TYPE_CHECKING:
-    from .window.main_window import MainWindow
+    from .tools import ToolContext
 
 SETTING = "view/look"
 WORKBENCH = "workbench"          # the viewport's own shading (pyvista's light kit), not a look of the renderer
@@ -23,10 +23,10 @@ TITLES = {"portrait": "&Portrait (three-point light)", "flat": "&Flat (even ligh
 class LookMenu(QMenu):
     """One checkable action per look; choosing one redraws the viewport in it and stores the choice."""
 
-    def __init__(self, window: MainWindow) -> None:
-        super().__init__("&Look", window)
+    def __init__(self, context: ToolContext) -> None:
+        super().__init__("&Look", context.window)
         self.setObjectName("menu:look")
-        self._viewport = window.viewport
+        self._viewport = context.viewport
         self.look_actions: dict[str, QAction] = {}
         group = QActionGroup(self)
         group.setExclusive(True)
@@ -52,8 +52,8 @@ class LookMenu(QMenu):
             QSettings().setValue(SETTING, name)
 
 
-def install(window: MainWindow) -> None:
-    """Add View → Look to ``window``."""
-    view = window.menus["&View"]
-    window.look_menu = LookMenu(window)
-    view.addMenu(window.look_menu)
+def install(context: ToolContext) -> None:
+    """Add View → Look to the context's window (``window.look_menu``)."""
+    menu = LookMenu(context)
+    context.window.look_menu = menu
+    context.menus["&View"].addMenu(menu)

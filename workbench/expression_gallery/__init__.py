@@ -5,7 +5,7 @@ opened) as ``window.expression_gallery``. **Library → Expression gallery**
 (Ctrl+G, ``actions_by_id["library.gallery"]``) always shows it in front,
 never hides it; **View → Expression gallery** (the dock's own checkable
 entry, ``"view.gallery"``, also on the toolbar) opens and closes it.
-Clicking a face plays it through ``window.player`` with its onset, apex and
+Clicking a face plays it through the context's ``player`` with its onset, apex and
 offset; the intensity slider scales it (``amplitude`` in percent). What is
 listed comes from :mod:`engine.timeline.expressions`; the pictures from :mod:`.thumbnails`.
 
@@ -42,7 +42,7 @@ from engine.errors import UserError
 from engine.timeline.expressions import GalleryEntry, gallery_entries
 
 from ..icons import icon
-from ..library_editor import library_sources
+from ..tools import ToolContext
 from .thumbnails import THUMBNAIL_SIZE, ThumbnailCache
 
 DOCK_NAME = "dock:expression-gallery"
@@ -80,15 +80,15 @@ class NameUnderFace(QStyledItemDelegate):
 class ExpressionGallery(QWidget):
     """Thumbnails of ``gallery_entries(library, model)`` in two lists, an intensity slider, previews."""
 
-    def __init__(self, window, parent: QWidget | None = None):
+    def __init__(self, context: ToolContext, parent: QWidget | None = None):
         super().__init__(parent)
-        self.window_ = window
-        self.sources = library_sources(window)
+        self.context = context
+        self.sources = context.library_sources
         self.entries: dict[str, GalleryEntry] = {}
         self.items: dict[str, QListWidgetItem] = {}
         self.last_preview: str | None = None
         self.problems: list[UserError] = []
-        self.thumbnails = ThumbnailCache(lambda: window.document.model, self)
+        self.thumbnails = ThumbnailCache(lambda: context.document.model, self)
         self.thumbnails.ready.connect(self._thumbnail_ready)
 
         self.intensity = QSlider(Qt.Orientation.Horizontal)
@@ -137,7 +137,7 @@ class ExpressionGallery(QWidget):
         self.header_layout = header
         self._intensity_changed(self.intensity.value())
 
-        document = window.document
+        document = context.document
         document.model_replaced.connect(self.rebuild)
         document.parameters_changed.connect(self.rebuild)
         document.regions_changed.connect(self._regions_changed)
@@ -227,26 +227,26 @@ class ExpressionGallery(QWidget):
 
         name = name or self.last_preview
         if name not in self.entries:
-            self.window_.statusBar().showMessage("Click a face first: Validate judges the face last played", 6000)
+            self.context.status.showMessage("Click a face first: Validate judges the face last played", 6000)
             return None
         entry, intensity = self.entries[name], float(self.intensity.value())
-        model = self.window_.document.model
+        model = self.context.document.model
         try:
             values = entry.timeline(model, intensity).values_at(entry.apex_time)
         except UserError as exc:
-            self.window_.statusBar().showMessage(f"Cannot validate {name}: {exc}", 6000)
+            self.context.status.showMessage(f"Cannot validate {name}: {exc}", 6000)
             return None
         frames = render_frames(model, [model.deform(values)], STILL_SIZE, self)
         meant = intended_emotion(name, intensity) if entry.kind == "expression" else None
         intended = Intended(emotion=meant, expression=f"{name} {intensity:g} %")
-        self.window_.statusBar().showMessage(f"Judging {name}… (the observers take a few seconds to load)", 6000)
+        self.context.status.showMessage(f"Judging {name}… (the observers take a few seconds to load)", 6000)
         self.validation_job = judge_in_background(frames, intended, None, f"{name} at {intensity:g} %", self)
         return self.validation_job
 
     def rebuild(self, *_args) -> None:
         """List what the library and the model offer now; pictures come as they are rendered."""
         library, self.problems = self.sources.load()
-        model = self.window_.document.model
+        model = self.context.document.model
         entries = gallery_entries(library, model)
         self.entries = {e.name: e for e in entries}
         self.items = {}
@@ -314,15 +314,12 @@ class ExpressionGallery(QWidget):
         self.show_list_of(name)
         intensity = self.intensity.value() if intensity is None else intensity
         try:
-            timeline = entry.timeline(self.window_.document.model, intensity)
+            timeline = entry.timeline(self.context.document.model, intensity)
         except UserError as exc:
-            self.window_.statusBar().showMessage(f"Cannot play {name}: {exc}", 6000)
+            self.context.status.showMessage(f"Cannot play {name}: {exc}", 6000)
             return None
         self.last_preview = name
-        player = getattr(self.window_, "player", None)
-        if player is None:
-            self.window_.document.set_values(timeline.values_at(entry.apex_time))
-            return timeline
+        player = self.context.player
         player.load(timeline, title=f"{name} at {intensity:g} %")
         player.play()
         return timeline
@@ -347,25 +344,20 @@ def _placeholder() -> QIcon:
     return QIcon(pixmap)
 
 
-def show_gallery(window) -> None:
+def show_gallery(context: ToolContext, dock: QDockWidget, gallery: ExpressionGallery) -> None:
     """Library → Expression gallery (Ctrl+G): the gallery in front, at a useful size, its faces focused.
 
     Never hides it (View → Expression gallery does that): a user pressing Ctrl+G wants to see it.
     """
-    dock = window.expression_gallery_dock
-    layouts = getattr(window, "layouts", None)
-    if layouts is not None:
-        layouts.reveal(dock)
-    else:
-        dock.show()
-        dock.raise_()
-    gallery = window.expression_gallery
+    context.reveal(dock)
     (gallery.units_list if gallery.tabbed and gallery.tabs.currentIndex() == UNITS
      else gallery.expressions_list).setFocus(Qt.FocusReason.ShortcutFocusReason)
 
 
-def install(window) -> None:
-    gallery = ExpressionGallery(window)
+def install(context: ToolContext) -> None:
+    """Add the gallery's dock (hidden), Library → Expression gallery and its toolbar toggle."""
+    window = context.window
+    gallery = ExpressionGallery(context)
     dock = QDockWidget("Expression gallery", window)
     dock.setObjectName(DOCK_NAME)
     dock.setWidget(gallery)
@@ -385,12 +377,12 @@ def install(window) -> None:
     show.setShortcut("Ctrl+G")
     show.setToolTip(f"{tip}; shows it in front, whether it was open or not")
     show.setStatusTip(show.toolTip())
-    show.triggered.connect(lambda _checked=False: show_gallery(window))
-    menu = window.menus.get("&Library")
+    show.triggered.connect(lambda _checked=False: show_gallery(context, dock, gallery))
+    menu = context.menus.get("&Library")
     if menu is None:
-        menu = window.menus["&Library"] = window.menuBar().addMenu("&Library")
+        menu = context.menus["&Library"] = window.menuBar().addMenu("&Library")
     actions = menu.actions()
     menu.insertAction(actions[1] if len(actions) > 1 else None, show)     # after "Library editor"
-    window.toolbar.addAction(toggle)
-    window.actions_by_id["library.gallery"] = show
-    window.actions_by_id["view.gallery"] = toggle
+    context.toolbar.addAction(toggle)
+    context.actions["library.gallery"] = show
+    context.actions["view.gallery"] = toggle

@@ -4,8 +4,8 @@
 Library editor, Ctrl+L), the Library menu's commands, and a guard that asks
 about unsaved library edits before the window closes. The editor is
 ``window.library_editor`` (a :class:`LibraryEditor`); the library folders and
-the "library changed" signal are ``window.library_sources``
-(:class:`LibrarySources`), shared with the expression gallery.
+the "library changed" signal are the context's ``library_sources``
+(:class:`~workbench.library_sources.LibrarySources`), shared with the expression gallery.
 """
 
 from __future__ import annotations
@@ -14,23 +14,16 @@ from PySide6.QtCore import QEvent, QObject, QSize, Qt
 from PySide6.QtWidgets import QDockWidget
 
 from ..icons import icon
-from ..window.actions import ActionSpec, add_actions
+from ..library_sources import LibrarySources
+from ..tools import ToolContext
+from ..window.actions import ActionSpec
 from .editor import LibraryEditor
-from .folders import LibrarySources
 
 DOCK_NAME = "dock:library-editor"
 USEFUL_SIZE = QSize(760, 320)
 MENU = "&Library"
 
-__all__ = ["DOCK_NAME", "LibraryEditor", "LibrarySources", "install", "library_sources"]
-
-
-def library_sources(window) -> LibrarySources:
-    """The window's :class:`LibrarySources`, made on first use (the gallery may be installed alone)."""
-    sources = getattr(window, "library_sources", None)
-    if sources is None:
-        sources = window.library_sources = LibrarySources(window)
-    return sources
+__all__ = ["DOCK_NAME", "LibraryEditor", "LibrarySources", "install"]
 
 
 class _CloseGuard(QObject):
@@ -52,14 +45,15 @@ class _CloseGuard(QObject):
         return False
 
 
-def _show(window) -> None:
-    window.layouts.reveal(window.library_editor_dock)
-    window.library_editor.text.setFocus()
+def _show(context: ToolContext, dock: QDockWidget, editor: LibraryEditor) -> None:
+    context.reveal(dock)
+    editor.text.setFocus()
 
 
-def install(window) -> None:
-    sources = library_sources(window)
-    editor = LibraryEditor(window, sources)
+def install(context: ToolContext) -> None:
+    """Add the library editor's dock, the Library menu's commands and the close guard."""
+    window = context.window
+    editor = LibraryEditor(context)
     dock = QDockWidget("Library editor", window)
     dock.setObjectName(DOCK_NAME)
     dock.setWidget(editor)
@@ -78,20 +72,20 @@ def install(window) -> None:
     toggle.setText("Library &editor")
     toggle.setShortcut("Ctrl+L")
     toggle.setToolTip("Write and try command library files (§2.3)")
-    add_actions(window, (
+    context.add_actions((
         ActionSpec("library.new_command", "&New command from template…", MENU,
-                   triggered=lambda w: (_show(w), w.library_editor.new_dialog()), icon="library-new",
+                   triggered=lambda _w: (_show(context, dock, editor), editor.new_dialog()), icon="library-new",
                    tip="Start a library file from a template"),
         ActionSpec("library.open", "&Open library file…", MENU,
-                   triggered=lambda w: (_show(w), w.library_editor.open_dialog()),
+                   triggered=lambda _w: (_show(context, dock, editor), editor.open_dialog()),
                    icon="library-open", tip="Open a command library file (.lib) in the library editor"),
         ActionSpec("library.folders", "Library &folders…", MENU,
-                   triggered=lambda w: w.library_editor.folders_dialog(), icon="library-folders",
+                   triggered=lambda _w: editor.folders_dialog(), icon="library-folders",
                    tip="Choose the folders your own library files are read from"),
     ))
-    menu = window.menus[MENU]
+    menu = context.menus[MENU]
     menu.insertAction(menu.actions()[0], toggle)
     menu.insertSeparator(menu.actions()[1])
-    window.toolbar.addSeparator()
-    window.toolbar.addAction(toggle)
-    window.actions_by_id["library.editor"] = toggle
+    context.toolbar.addSeparator()
+    context.toolbar.addAction(toggle)
+    context.actions["library.editor"] = toggle

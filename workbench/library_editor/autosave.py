@@ -1,7 +1,7 @@
 """Autosave and crash recovery for the library editor's unsaved text, alongside the model's.
 
 The text goes into the window's recovery session
-(``window.autosaver.session``, :class:`workbench.window.recovery.RecoverySession`)
+(``context.autosaver().session``, :class:`workbench.window.recovery.RecoverySession`)
 as ``<id>.library.json``, with the library file it belongs to (or none, for a
 new file). It is written every autosave interval (the model's:
 ``autosave/interval_seconds``) while the text has unsaved edits and differs
@@ -62,7 +62,7 @@ class LibraryAutosaver(QObject):
 
     @property
     def session(self) -> RecoverySession | None:
-        autosaver = getattr(self._editor.window_, "autosaver", None)
+        autosaver = self._editor.context.autosaver()
         return autosaver.session if autosaver is not None else None
 
     def autosave_now(self) -> bool:
@@ -119,13 +119,13 @@ class LibraryAutosaver(QObject):
         editor.set_text(copy.text, copy.original, modified=True)
         self.autosave_now()               # our own copy first, then drop the orphan
         copy.remove()
-        dock = getattr(editor.window_, "library_editor_dock", None)
+        dock = getattr(editor.window_, "library_editor_dock", None)     # this tool's own dock
         if dock is not None:
             toggle = dock.toggleViewAction()
             if not toggle.isChecked():
                 toggle.trigger()          # as Library → Library editor does: the window's layout makes room
             dock.raise_()
-        editor.window_.statusBar().showMessage(
+        editor.context.status.showMessage(
             f"Recovered unsaved edits to {copy.display_name()}; save them to keep them", MESSAGE_MS)
         return True
 
@@ -140,7 +140,7 @@ class LibraryAutosaver(QObject):
 
     def _interval_ms(self) -> int:
         """The model autosaver's interval (the window may override the setting), else the setting's."""
-        autosaver = getattr(self._editor.window_, "autosaver", None)
+        autosaver = self._editor.context.autosaver()
         if autosaver is not None:
             return autosaver.timer.interval()
         return max(1, round(settings.autosave_interval_seconds() * 1000))

@@ -15,7 +15,7 @@ from PySide6.QtWidgets import QTreeWidget, QTreeWidgetItem, QWidget
 from engine.commands.library_format import load_library_file
 from engine.errors import UserError
 
-from .folders import LibrarySources, library_files
+from ..library_sources import LibrarySources, library_files
 
 PATH_ROLE = Qt.ItemDataRole.UserRole
 LINE_ROLE = Qt.ItemDataRole.UserRole + 1

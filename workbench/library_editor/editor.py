@@ -10,7 +10,7 @@ curves (:class:`CurvePlot`).
 bound to the open model; problems are underlined at their line and listed in
 the status line, and the chosen command is translated with the form's
 arguments and plotted. Preview plays the same translation through
-``window.player``. Blank text is not an error: the editor shows what to type
+``context.player``. Blank text is not an error: the editor shows what to type
 (an example in the empty text, links to a template and to a file in the
 status line) until there is text to check.
 
@@ -43,6 +43,7 @@ from engine.formats.atomic import atomic_write_text
 from engine.timeline.command_curves import CommandCurves, command_curves
 
 from ..icons import icon
+from ..tools import ToolContext
 from ..window.recovery import LibraryCopy
 from .arguments_form import ArgumentsForm
 from .autosave import LibraryAutosaver, recovery_question
@@ -50,7 +51,7 @@ from .code_editor import CodeEditor
 from .command_list import CommandList
 from .curve_plot import CurvePlot
 from .dialogs import LibraryFoldersDialog, NewCommandDialog
-from .folders import LAST_DIR, LAST_FILE, LibrarySources, is_shipped, recall, remember
+from .folders import LAST_DIR, LAST_FILE, is_shipped, recall, remember
 from .templates import example_text, template_text
 
 CHECK_DELAY_MS = 300
@@ -62,7 +63,7 @@ Button = QMessageBox.StandardButton
 
 
 class LibraryEditor(QWidget):
-    """Edits one library file for ``window`` (its document, its player, its library sources).
+    """Edits one library file for the window of ``context`` (its document, its player, its library sources).
 
     Signals: ``checked(list[Problem])`` after every check; ``title_changed(str)``.
     """
@@ -70,9 +71,11 @@ class LibraryEditor(QWidget):
     checked = Signal(list)
     title_changed = Signal(str)
 
-    def __init__(self, window, sources: LibrarySources, parent: QWidget | None = None):
+    def __init__(self, context: ToolContext, parent: QWidget | None = None):
         super().__init__(parent)
-        self.window_ = window
+        self.context = context
+        self.window_ = context.window     # the parent of its dialogs
+        sources = context.library_sources
         self.sources = sources
         self.path: Path | None = None
         self.result = CheckResult()
@@ -142,7 +145,7 @@ class LibraryEditor(QWidget):
         self.autosaver = LibraryAutosaver(self)
         self.autosaver.autosaved.connect(self._autosaved)
         self.autosaver.failed.connect(self._autosave_failed)
-        document = window.document
+        document = context.document
         document.model_replaced.connect(self._model_changed)
         document.parameters_changed.connect(self._model_changed)
         sources.changed.connect(self.command_list.reload)
@@ -196,7 +199,7 @@ class LibraryEditor(QWidget):
             self.result = CheckResult()
         else:
             self.result = check_library_text(self.text.toPlainText(), self.display_name(),
-                                             self.window_.document.model)
+                                             self.context.document.model)
         self.text.set_problems({p.line or 1: p.message for p in self.result.problems})
         self._show_status(self.result.problems)
         names = [d.name for d in self.result.definitions]
@@ -218,7 +221,7 @@ class LibraryEditor(QWidget):
         if not problems:
             count = len(self.result.definitions)
             self.status.setText(f"✓ {count} command{'s' if count != 1 else ''}, fits the model "
-                                f"'{self.window_.document.model.name}'")
+                                f"'{self.context.document.model.name}'")
             self.status.setStyleSheet("color: #26734d")
             return
         lines = [f"<a href='{p.line or 1}'>line {p.line}</a>: {_escape(p.message)}" if p.line
@@ -241,7 +244,7 @@ class LibraryEditor(QWidget):
                                   if self.result.problems else "No command")
         else:
             try:
-                self.curves = command_curves(definition, self.window_.document.model, self.form.values())
+                self.curves = command_curves(definition, self.context.document.model, self.form.values())
             except UserError as exc:
                 self.plot.set_message(f"Cannot plot {definition.name}: {exc.message}")
             else:
@@ -250,18 +253,18 @@ class LibraryEditor(QWidget):
         return self.curves
 
     def _model_changed(self, *_args) -> None:
-        self.text.setPlaceholderText(example_text(self.window_.document.model.parameters.names))
+        self.text.setPlaceholderText(example_text(self.context.document.model.parameters.names))
         self.check_now()
 
     # -- preview ------------------------------------------------------------------
     def preview(self) -> bool:
-        """Play the chosen command (``at = 0``, the form's arguments) through ``window.player``."""
+        """Play the chosen command (``at = 0``, the form's arguments) through ``context.player``."""
         curves = self.refresh_plot()
-        player = getattr(self.window_, "player", None)
+        player = self.context.player
         if curves is None:
             return False
         if player is None:
-            self.window_.statusBar().showMessage("Preview needs the timeline player, which is not installed", 4000)
+            self.context.status.showMessage("Preview needs the timeline player, which is not installed", 4000)
             return False
         player.load(curves.timeline, title=f"{self.definition().name} (library editor preview)")
         player.play()
@@ -340,7 +343,7 @@ class LibraryEditor(QWidget):
         remember(LAST_DIR, str(path.parent))
         self.check_now()
         self.title_changed.emit(self.title())
-        self.window_.statusBar().showMessage(f"Saved {path}", 4000)
+        self.context.status.showMessage(f"Saved {path}", 4000)
         self.sources.notify_saved(path)
         return True
 
@@ -367,8 +370,8 @@ class LibraryEditor(QWidget):
         return True
 
     def new_dialog(self) -> bool:
-        model = self.window_.document.model
-        dialog = NewCommandDialog(model.parameters.names, self.window_.view_state.selected_parameter, self)
+        model = self.context.document.model
+        dialog = NewCommandDialog(model.parameters.names, self.context.view_state.selected_parameter, self)
         if not dialog.exec():
             return False
         return self.new_from_template(*dialog.choice())
@@ -400,11 +403,11 @@ class LibraryEditor(QWidget):
         self.title_changed.emit(self.title())
 
     def _autosaved(self, _path: str) -> None:
-        self.window_.statusBar().showMessage(
+        self.context.status.showMessage(
             f"Autosaved the library text of {self.display_name()}: a crash would not lose its edits", 4000)
 
     def _autosave_failed(self, message: str) -> None:
-        self.window_.statusBar().showMessage(f"Autosave of the library file failed: {message}", 4000)
+        self.context.status.showMessage(f"Autosave of the library file failed: {message}", 4000)
 
 
 def _escape(text: str) -> str:

@@ -29,7 +29,8 @@ from engine.mocap.marker_assignment import is_feature_point, marker_labels, sess
 from engine.mocap.session import load_session, save_session
 
 from ..background import run_in_background, show_error
-from ..window.actions import ActionSpec, add_actions
+from ..tools import ToolContext
+from ..window.actions import ActionSpec
 from .assignment_panel import AssignmentPanel
 from .import_dialog import ImportDialog
 from .marker_overlay import HIGHLIGHT_COLOR, MarkerOverlay, default_colors, error_colors, marker_to_model_transform
@@ -47,29 +48,31 @@ SESSION_FILES = "Capture sessions (*.h5);;All files (*)"
 class MocapTool(QObject):
     """Connects the mocap state to the window: menu actions, docks, the markers in the viewport."""
 
-    def __init__(self, window):
+    def __init__(self, context: ToolContext):
+        window = context.window
         super().__init__(window)
-        self.window = window
+        self.context = context
+        self.window = window              # the parent of its docks and dialogs
         self.state = MocapState(self)
-        self.overlay = MarkerOverlay(window.viewport)
+        self.overlay = MarkerOverlay(context.viewport)
         self.import_dialog: ImportDialog | None = None
         self.preview = None                 # (markers, points) of a PCA component being shown, or None
         self.errors: dict[str, float] | None = None
         self.job = None
-        self.plot_dock = MarkerPlotDock(self.state, window.playhead, window)
-        self.pca_dock = PcaDock(self.state, window.document, window)
+        self.plot_dock = MarkerPlotDock(self.state, context.playhead, window)
+        self.pca_dock = PcaDock(self.state, context.document, window)
         window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, self.plot_dock)   # the task layouts
         window.addDockWidget(Qt.DockWidgetArea.RightDockWidgetArea, self.pca_dock)     # give them their places
         self.plot_dock.hide()
         self.pca_dock.hide()
-        self.names_panel = AssignmentPanel(self.state, window.document, self.project_folder, self.plot_dock)
+        self.names_panel = AssignmentPanel(self.state, context.document, self.project_folder, self.plot_dock)
         self.plot_dock.add_side_panel(self.names_panel)
-        self.picker = MarkerPicker(window, self.overlay, self)
+        self.picker = MarkerPicker(context, self.overlay, self)
         self._texts: dict[str, str] = {}      # marker → the text drawn beside it
 
         self.state.session_changed.connect(self._on_session)
         self.state.markers_renamed.connect(self._on_renamed)
-        window.playhead.time_changed.connect(self._redraw)
+        context.playhead.time_changed.connect(self._redraw)
         self.plot_dock.marker_combo.currentTextChanged.connect(self._on_marker_shown)
         self.picker.picked.connect(self._on_picked)
         self.names_panel.marker_selected.connect(self.select_marker)
@@ -77,7 +80,7 @@ class MocapTool(QObject):
         self.pca_dock.preview_changed.connect(self._on_preview)
         self.pca_dock.errors_changed.connect(self._on_errors)
         # a bound method, not a lambda: a lambda in the document's connection list would keep the window alive
-        window.document.model_replaced.connect(self._on_model_replaced)
+        context.document.model_replaced.connect(self._on_model_replaced)
         self.playback = RecordingPlayback(self)     # the session on the player; markers only while it plays
 
     # -- sessions --------------------------------------------------------------------
@@ -112,7 +115,7 @@ class MocapTool(QObject):
 
     def project_folder(self) -> Path:
         """Where sessions and marker maps are suggested: beside the open model (:mod:`.session_files`)."""
-        return project_folder(self.window.document)
+        return project_folder(self.context.document)
 
     def _open_dialog(self) -> None:
         path, _ = QFileDialog.getOpenFileName(self.window, "Open capture session", "", SESSION_FILES)
@@ -122,7 +125,7 @@ class MocapTool(QObject):
     def _save_dialog(self) -> None:
         if self.state.session is None:
             return
-        default = str(self.state.session_path or default_session_path(self.window.document,
+        default = str(self.state.session_path or default_session_path(self.context.document,
                                                                       self.state.session.source))
         path, _ = QFileDialog.getSaveFileName(self.window, "Save capture session", default, SESSION_FILES)
         if path:
@@ -138,10 +141,10 @@ class MocapTool(QObject):
         if any(not is_feature_point(m) for m in session.markers):
             self.plot_dock.names_button.setChecked(True)      # markers to name: the list opens beside the plot
         self.playback.show_session()
-        self.window.layouts.reveal(self.plot_dock, task="mocap")    # a recording to analyse: the window turns
-        self.window.layouts.reveal(self.pca_dock)                   # to that task
+        self.context.reveal(self.plot_dock, task="mocap")    # a recording to analyse: the window turns
+        self.context.reveal(self.pca_dock)                   # to that task
         self._place_markers()
-        self.window.statusBar().showMessage(f"Capture session: {session.source}, {session.n_frames} frames, "
+        self.context.status.showMessage(f"Capture session: {session.source}, {session.n_frames} frames, "
                                             f"{session.n_markers} markers", 4000)
 
     # -- naming markers ---------------------------------------------------------------------------
@@ -186,14 +189,14 @@ class MocapTool(QObject):
         session = self.state.session
         if session is None:
             return
-        scale, rotation, translation, _pairs = marker_to_model_transform(self.window.document.model,
+        scale, rotation, translation, _pairs = marker_to_model_transform(self.context.document.model,
                                                                          session.markers, session.positions)
         self.overlay.set_transform(scale, rotation, translation)
         self._redraw()
 
     def current_frame(self) -> int:
         session = self.state.session
-        return int(np.clip(round(self.window.playhead.time * session.rate_hz), 0, session.n_frames - 1))
+        return int(np.clip(round(self.context.playhead.time * session.rate_hz), 0, session.n_frames - 1))
 
     def _redraw(self, *_args) -> None:
         session = self.state.session
@@ -221,10 +224,10 @@ class MocapTool(QObject):
         self._redraw()
 
 
-def install(window) -> None:
-    """Add the Motion capture menu and docks to ``window`` (``window.mocap`` is the tool)."""
-    tool = window.mocap = MocapTool(window)
-    add_actions(window, (
+def install(context: ToolContext) -> MocapTool:
+    """Add the Motion capture menu and docks to the context's window (``window.mocap`` is the tool)."""
+    tool = context.window.mocap = MocapTool(context)
+    context.add_actions((
         ActionSpec("mocap.import", "&Import marker file…", MENU, triggered=lambda w: w.mocap.import_dialog_for(),
                    icon="mocap-import", shortcut="Ctrl+Shift+M",
                    tip="Read a QTM TSV, C3D, TRC or CSV marker file into a capture session"),
@@ -236,13 +239,13 @@ def install(window) -> None:
                    icon="mocap-show",
                    tip="Put the capture session back on the player: its markers show and Space plays them"),
         ActionSpec("mocap.plot", "Marker &coordinates", MENU, separator_before=True,
-                   triggered=lambda w: w.layouts.reveal(w.mocap.plot_dock, task="mocap"), icon="marker-plot",
+                   triggered=lambda _w: context.reveal(tool.plot_dock, task="mocap"), icon="marker-plot",
                    tip="Plot a marker coordinate over time and select frames"),
         ActionSpec("mocap.pca", "Multistage &PCA…", MENU,
-                   triggered=lambda w: w.layouts.reveal(w.mocap.pca_dock, task="mocap"), icon="mocap-pca",
+                   triggered=lambda _w: context.reveal(tool.pca_dock, task="mocap"), icon="mocap-pca",
                    tip="Derive articulatory parameters from the selected frames (§3.1.2)"),
     ))
-    menu = window.menus[MENU]
+    menu = context.menus[MENU]
     menu.addSeparator()
     menu.addActions([tool.names_panel.undo_action, tool.names_panel.redo_action])
     return tool

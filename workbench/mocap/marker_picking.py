@@ -11,7 +11,12 @@ paints and picks nothing.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from PySide6.QtCore import QEvent, QObject, QPointF, Qt, Signal
+
+if TYPE_CHECKING:
+    from ..tools import ToolContext
 
 CLICK_SLOP_PX = 4.0
 
@@ -21,16 +26,16 @@ class MarkerPicker(QObject):
 
     picked = Signal(str)
 
-    def __init__(self, window, overlay, parent: QObject | None = None):
+    def __init__(self, context: ToolContext, overlay, parent: QObject | None = None):
         super().__init__(parent)
-        self._window = window
+        self._context = context
         self._overlay = overlay
         self._pressed_at: QPointF | None = None
-        window.viewport.plotter.installEventFilter(self)
+        context.viewport.plotter.installEventFilter(self)
 
     def pick_at(self, x: float, y: float) -> str | None:
         """The marker drawn at widget pixel (``x``, ``y``) of the view, emitted as ``picked``; or ``None``."""
-        name = self._overlay.marker_at(x, y, self._window.viewport.world_to_widget)
+        name = self._overlay.marker_at(x, y, self._context.viewport.world_to_widget)
         if name is not None:
             self.picked.emit(name)
         return name
@@ -52,5 +57,6 @@ class MarkerPicker(QObject):
         return False
 
     def _painting(self) -> bool:
-        paint = getattr(self._window, "paint", None)
-        return bool(paint is not None and paint.active)
+        """Whether weight painting has the mouse: its command (``paint.mode``) is on."""
+        paint_mode = self._context.actions.get("paint.mode")
+        return bool(paint_mode is not None and paint_mode.isChecked())

@@ -63,7 +63,7 @@ def session_title(session) -> str:
 
 
 class RecordingPlayback(QObject):
-    """Keeps the open session on ``tool.window.player`` while the user works with it, its markers with it.
+    """Keeps the open session on ``tool.context.player`` while the user works with it, its markers with it.
 
     ``tool`` is the :class:`~workbench.mocap.MocapTool`: its state (the session),
     its marker overlay, the marker plot and the PCA dock, whose gestures turn
@@ -73,7 +73,7 @@ class RecordingPlayback(QObject):
     def __init__(self, tool):
         super().__init__(tool)
         self.state = tool.state
-        self.player = tool.window.player
+        self.player = tool.context.player
         self.overlay = tool.overlay
         self.pca_dock = tool.pca_dock
         self.plot_dock = tool.plot_dock

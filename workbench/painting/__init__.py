@@ -1,6 +1,6 @@
 """Weight painting in the workbench (§2.2.2): the GUI over :mod:`engine.painting`.
 
-``install(window)`` adds
+``install(context)`` adds
 
 * ``window.paint`` — the :class:`~workbench.painting.controller.PaintController`
   (paint mode, mouse strokes, brush cursor, live preview);
@@ -15,7 +15,8 @@ User documentation: ``docs/workbench-painting.md``.
 
 from __future__ import annotations
 
-from ..window.actions import ActionSpec, add_actions
+from ..tools import ToolContext
+from ..window.actions import ActionSpec
 from . import launch_probe, operations
 from .controller import PaintController
 from .options_page import PaintOptionsPage
@@ -28,7 +29,7 @@ MENU = "&Weights"
 def _scale_radius(window, factor: float) -> None:
     paint = window.paint
     paint.set_brush(radius=min(max(paint.brush.radius * factor, 0.5), 100.0))
-    window.statusBar().showMessage(f"Brush radius {paint.brush.radius:.1f} mm", 2000)
+    paint.tools.status.showMessage(f"Brush radius {paint.brush.radius:.1f} mm", 2000)
 
 
 def _specs() -> tuple[ActionSpec, ...]:
@@ -49,10 +50,11 @@ def _specs() -> tuple[ActionSpec, ...]:
     return tuple(specs)
 
 
-def install(window) -> None:
-    """Add weight painting to ``window`` (see the module docstring)."""
-    window.paint = PaintController(window)
-    window.paint_options = PaintOptionsPage(window.paint)
-    window.tool_options.add_page("paint", window.paint_options)
-    add_actions(window, _specs())
-    launch_probe.install(window)
+def install(context: ToolContext) -> None:
+    """Add weight painting to the context's window (see the module docstring)."""
+    window = context.window
+    window.paint = paint = PaintController(context)
+    window.paint_options = options = PaintOptionsPage(paint)
+    context.tool_options.add_page("paint", options)
+    context.add_actions(_specs())
+    launch_probe.install(context)

@@ -34,6 +34,7 @@ the mesh as it is posed — the held parameter's deformation stays readable
 from __future__ import annotations
 
 import dataclasses
+from typing import TYPE_CHECKING
 
 import numpy as np
 from PySide6.QtCore import QEvent, QObject, Qt, Signal
@@ -58,6 +59,9 @@ from ..document.undo_commands import WeightsChangedCommand
 from .cursor import BrushCursor, WeightLegend
 from .shading import shaded_heat_colors
 
+if TYPE_CHECKING:
+    from ..tools import ToolContext
+
 TOOLS = (*MODES, "gradient", "sample")
 NO_PARAMETER = "Select a parameter in the Parameters dock to paint its weights"
 HELP = ("left-drag paints · Ctrl+click samples · Alt+left-drag orbits · middle-drag pans · wheel zooms · "
@@ -76,10 +80,11 @@ class PaintController(QObject):
     tool_changed = Signal(str)
     hold_changed = Signal()
 
-    def __init__(self, window):
-        super().__init__(window)
-        self.window = window
-        self.document, self.view_state, self.viewport = window.document, window.view_state, window.viewport
+    def __init__(self, context: ToolContext):
+        super().__init__(context.window)
+        self.tools = context                  # the window's ToolContext (self.context() is the stroke's)
+        self.window = context.window          # the parent of its dialogs
+        self.document, self.view_state, self.viewport = context.document, context.view_state, context.viewport
         self.brush = Brush("add", radius=10.0, strength=0.5, falloff="smooth", front_faces_only=True)
         self.tool = "add"
         self.hold_enabled, self.hold_fraction = False, 1.0
@@ -180,8 +185,8 @@ class PaintController(QObject):
             self._active = True
             self.view_state.set_heat_map(True)
             self._show_heat_map()
-            self.window.tool_options.show_page("paint")
-            self.window.tool_options.show()
+            self.tools.tool_options.show_page("paint")
+            self.tools.tool_options.show()
             self._apply_hold()
             self._say_painting()
         elif not on and self._active:
@@ -192,14 +197,14 @@ class PaintController(QObject):
             self.legend.hide()
             self.viewport.show_colors(None)          # the viewport's own colours again
             self.viewport.plotter.update()
-            self.window.tool_options.show_page()
+            self.tools.tool_options.show_page()
             self._say("Weight painting off")
         self._sync_action(self._active)
         self.active_changed.emit(self._active)
         return self._active == on
 
     def _sync_action(self, on: bool) -> None:
-        action = self.window.actions_by_id.get("paint.mode")
+        action = self.tools.actions.get("paint.mode")
         if action is not None and action.isChecked() != on:
             action.blockSignals(True)
             action.setChecked(on)
@@ -414,4 +419,4 @@ class PaintController(QObject):
         self._say(f"Painting the weights of {self.parameter}: {HELP}")
 
     def _say(self, message: str) -> None:
-        self.window.statusBar().showMessage(message)
+        self.tools.status.showMessage(message)

@@ -11,18 +11,24 @@ from __future__ import annotations
 import os
 import time
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from PySide6.QtCore import QEvent, QObject, QTimer
+from PySide6.QtWidgets import QWidget
+
+if TYPE_CHECKING:
+    from ..tools import ToolContext
+    from ..viewport.view import Viewport
 
 MARKER = "AP_LAUNCH_MARKER"
 QUIT = "AP_LAUNCH_QUIT"
 
 
 class _FirstPaint(QObject):
-    def __init__(self, window, path: Path):
+    def __init__(self, window: QWidget, viewport: Viewport, path: Path):
         super().__init__(window)
         self._window, self._path = window, path
-        window.viewport.plotter.installEventFilter(self)
+        viewport.plotter.installEventFilter(self)
 
     def eventFilter(self, watched, event) -> bool:
         if event.type() == QEvent.Type.Paint and self._window.isVisible():
@@ -36,7 +42,8 @@ class _FirstPaint(QObject):
             QTimer.singleShot(0, self._window.close)
 
 
-def install(window) -> None:
+def install(context: ToolContext) -> None:
     path = os.environ.get(MARKER)
     if path:
-        window._launch_probe = _FirstPaint(window, Path(path))
+        window = context.window
+        window._launch_probe = _FirstPaint(window, context.viewport, Path(path))

@@ -74,10 +74,10 @@ def _new_weights(operation: str, ctx, weights: np.ndarray, part: str | None) -> 
 def run(controller, operation: str) -> bool:
     """Do ``operation`` on the selected parameter's weights; ``False`` (and a message) if nothing changed."""
     name = controller.parameter
-    window = controller.window
+    window, status = controller.window, controller.tools.status
     label = OPERATIONS[operation][0].replace("&", "")
     if name is None:
-        window.statusBar().showMessage(f"{label}: {NO_PARAMETER}")
+        status.showMessage(f"{label}: {NO_PARAMETER}")
         return False
     controller.release()                   # a stroke in progress is finished first
     try:
@@ -91,7 +91,7 @@ def run(controller, operation: str) -> bool:
             return True
         change = Change.between(dense.weights, _new_weights(operation, ctx, dense.weights, controller.brush.part))
         if not change:
-            window.statusBar().showMessage(f"{label}: the weights of {name} are already so; nothing changed", 4000)
+            status.showMessage(f"{label}: the weights of {name} are already so; nothing changed", 4000)
             return False
         document.push(WeightsChangedCommand.from_change(document, name,
                                                         weight_change_from_dense(document.model, name, change),
@@ -99,7 +99,7 @@ def run(controller, operation: str) -> bool:
     except UserError as error:
         QMessageBox.warning(window, f"Weights: {label}", str(error))
         return False
-    window.statusBar().showMessage(f"{label}: {len(change)} weight{'s' * (len(change) != 1)} of {name} changed",
+    status.showMessage(f"{label}: {len(change)} weight{'s' * (len(change) != 1)} of {name} changed",
                                    4000)
     return True
 
@@ -112,9 +112,9 @@ def _normalise(controller, name: str) -> bool:
     changed = [n for n, region in regions.items()
                if not (np.array_equal(region.indices, model.regions[n].indices)
                        and region.weights.tobytes() == model.regions[n].weights.tobytes())]
-    window = controller.window
+    status = controller.tools.status
     if not changed:
-        window.statusBar().showMessage("Normalise group 1: the group-1 weights already sum to 1", 4000)
+        status.showMessage("Normalise group 1: the group-1 weights already sum to 1", 4000)
         return False
     stack = document.undo_stack
     stack.beginMacro("Normalise group-1 weights" + (f" (keeping {keep})" if keep else ""))
@@ -123,7 +123,7 @@ def _normalise(controller, name: str) -> bool:
             document.push(SetRegionCommand(document, n, regions[n], text=f"Normalise {n}"))
     finally:
         stack.endMacro()
-    window.statusBar().showMessage(f"Normalise group 1: {len(changed)} region{'s' * (len(changed) != 1)} changed",
+    status.showMessage(f"Normalise group 1: {len(changed)} region{'s' * (len(changed) != 1)} changed",
                                    4000)
     return True
 

@@ -1,10 +1,10 @@
 """The script panel (dock ``dock:script``): type text with inline commands, Say it, export it.
 
-``install(window)`` adds the dock, ``window.script_panel`` (a
+``install(context)`` adds the dock, ``window.script_panel`` (a
 :class:`~.panel.ScriptPanel`), ``window.speech_exporter`` (a
 :class:`~.export_dialog.SpeechExporter`) and the **Speech** menu:
 Say (Ctrl+Return) and Export speech…. The head speaks through
-``window.player`` (the timeline dock's player). See
+the context's ``player`` (the window's, shared with the timeline). See
 docs/workbench-script-panel.md.
 """
 
@@ -15,22 +15,25 @@ import re
 from PySide6.QtCore import Qt
 from PySide6.QtWidgets import QDialog, QDockWidget, QMessageBox
 
-from ..window.actions import ActionSpec, add_actions
+from ..tools import ToolContext
+from ..window.actions import ActionSpec
 from .export_dialog import ExportSpeechDialog, SpeechExporter
 from .panel import ScriptPanel
 
 MENU = "&Speech"
 
 
-def install(window) -> None:
-    panel = window.script_panel = ScriptPanel(window)
-    window.speech_exporter = SpeechExporter(window)
+def install(context: ToolContext) -> None:
+    """Add the Script dock and the Speech menu's Say and Export speech…"""
+    window = context.window
+    panel = window.script_panel = ScriptPanel(context)
+    window.speech_exporter = SpeechExporter(context)
     dock = window.script_dock = QDockWidget("Script", window)
     dock.setObjectName("dock:script")
     dock.setWidget(panel)
     window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, dock)
     panel.export_button.clicked.connect(lambda: export_speech_dialog(window))
-    actions = add_actions(window, (
+    actions = context.add_actions((
         ActionSpec("speech.say", "&Say", MENU, triggered=lambda w: w.script_panel.say(),
                    shortcut="Ctrl+Return", icon="say", toolbar=True, separator_before=True,
                    tip="Speak the script panel's text: the head says it, with audio"),
@@ -41,8 +44,8 @@ def install(window) -> None:
     actions["speech.export"].setEnabled(False)
     panel.busy_changed.connect(lambda busy: actions["speech.say"].setEnabled(not busy))
     panel.said.connect(lambda _result: actions["speech.export"].setEnabled(True))
-    window.menus[MENU].addSeparator()
-    window.menus[MENU].addAction(dock.toggleViewAction())
+    context.menus[MENU].addSeparator()
+    context.menus[MENU].addAction(dock.toggleViewAction())
 
 
 def export_speech_dialog(window) -> None:

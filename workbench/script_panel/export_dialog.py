@@ -40,6 +40,7 @@ from engine.outputs.speech_files import KINDS, ExportCancelled, ExportPlan, expo
 
 from .. import settings
 from ..jobs import Job
+from ..tools import ToolContext
 from ..window.file_controller import is_shipped
 
 PREFIX = "script_panel/export/"
@@ -217,14 +218,15 @@ def _spin(low: int, high: int, value: int) -> QSpinBox:
 
 
 class SpeechExporter(QObject):
-    """Runs one export at a time for ``window``; ``exported(list of paths)`` when files were written."""
+    """Runs one export at a time for the context's window; ``exported(list of paths)`` when files were written."""
 
     exported = Signal(list)
     ended = Signal(str)                    # "written" | "cancelled" | "failed"
 
-    def __init__(self, window):
-        super().__init__(window)
-        self.window = window
+    def __init__(self, context: ToolContext):
+        super().__init__(context.window)
+        self.context = context
+        self.window = context.window      # the parent of its dialogs
         self.job: Job | None = None
         self.plan: ExportPlan | None = None
         self.progress_dialog: QProgressDialog | None = None
@@ -286,7 +288,7 @@ class SpeechExporter(QObject):
             self.progress_dialog.close()
             self.progress_dialog.deleteLater()
             self.progress_dialog = None
-        status = self.window.statusBar()
+        status = self.context.status
         if job.error is None:                      # written, even if Cancel came too late to stop it
             names = ", ".join(Path(p).name for p in job.result)
             status.showMessage(f"Exported {names} to {plan.folder}", MESSAGE_MS)

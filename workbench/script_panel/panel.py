@@ -40,6 +40,7 @@ from engine.speech.requests import SayRequest, SayResult, described_error, error
 
 from ..icons import icon
 from ..jobs import Job
+from ..tools import ToolContext
 from .highlighter import InlineCommandHighlighter
 from .recording_chooser import RecordingChooser
 from .table_chooser import PhoneTableChooser
@@ -77,9 +78,10 @@ class ScriptPanel(QWidget):
     said = Signal(object)
     say_failed = Signal(str)
 
-    def __init__(self, window, parent: QWidget | None = None):
+    def __init__(self, context: ToolContext, parent: QWidget | None = None):
         super().__init__(parent)
-        self.window = window
+        self.context = context
+        self.window = context.window      # the parent of its dialogs
         self.result: SayResult | None = None
         self.synthesizer = None                  # None: Festival on PATH (tests may put another here)
         self.job: Job | None = None
@@ -235,7 +237,7 @@ class ScriptPanel(QWidget):
     def request(self) -> SayRequest:
         """What Say would speak now."""
         recording = self.recording_chooser.recording
-        return SayRequest(self.editor.toPlainText(), self.window.document.model,
+        return SayRequest(self.editor.toPlainText(), self.context.document.model,
                           voice=None if recording else (self.voice_box.currentText() or None),
                           audio=recording[0] if recording else None, labels=recording[1] if recording else None,
                           coarticulation=self.coarticulation_box.currentData(),
@@ -324,16 +326,13 @@ class ScriptPanel(QWidget):
         return self.validation_job
 
     def _play(self, result: SayResult) -> None:
-        player = getattr(self.window, "player", None)
-        if player is None:
-            self.window.statusBar().showMessage("Said, but this window has no player to play it", MESSAGE_MS)
-            return
+        player = self.context.player
         text = " ".join(result.speech.script.text.split())
         title = text if len(text) <= 40 else text[:39] + "…"
         player.load(result.speech.timeline, audio=str(result.wav), phones=result.speech.utterance.phones,
                     title=title)
         player.play()
-        self.window.statusBar().showMessage(f"Saying: {title}", MESSAGE_MS)
+        self.context.status.showMessage(f"Saying: {title}", MESSAGE_MS)
 
     def _report_error(self, error: BaseException) -> None:
         if isinstance(error, UserError):

@@ -1,8 +1,8 @@
 """The timeline dock and the player: play, scrub and look at an animation.
 
-``install(window)`` creates :attr:`window.player <workbench.playback.player.Player>`
-(first: other tools play through it), the "Timeline" dock at the bottom
-(``window.timeline_dock``) and the "&Animation" menu with *Open animation…*
+``install(context)`` adds the "Timeline" dock at the bottom (``window.timeline_dock``)
+over the context's :attr:`~workbench.tools.ToolContext.player` (the window's, shared by
+every tool that plays) and the "&Animation" menu with *Open animation…*
 (a command file or a tracks CSV), play/pause, stop, frame steps and loop.
 See ``docs/workbench-timeline.md``.
 
@@ -23,9 +23,9 @@ from engine.timeline.animation_files import load_animation
 
 from .. import settings
 from ..document.playhead import DEFAULT_FPS
-from ..playback.player import Player
-from ..window.actions import ActionSpec, add_actions
-from .dock import TimelineDock
+from ..tools import ToolContext
+from ..window.actions import ActionSpec
+from .dock import DOCK_NAME, TimelineDock
 
 if TYPE_CHECKING:
     from ..window.main_window import MainWindow
@@ -52,37 +52,38 @@ ANIMATION_ACTIONS: tuple[ActionSpec, ...] = (
 )
 
 
-def install(window: MainWindow) -> None:
-    """Add the player, the timeline dock and the Animation menu to ``window``."""
-    window.player = Player(window.document, window.playhead, window)
-    actions = add_actions(window, ANIMATION_ACTIONS)
-    dock = TimelineDock(window.player, window.view_state, actions, window)
-    dock.open_animation = lambda path: open_animation(window, path)
+def install(context: ToolContext) -> None:
+    """Add the timeline dock and the Animation menu to the context's window."""
+    window = context.window
+    actions = context.add_actions(ANIMATION_ACTIONS)
+    dock = TimelineDock(context.player, context.view_state, actions, window)
+    dock.open_animation = lambda path: open_animation(context, path)
     window.timeline_dock = dock
     window.addDockWidget(Qt.DockWidgetArea.BottomDockWidgetArea, dock)
-    window.menus["&View"].addAction(dock.toggleViewAction())
+    context.menus["&View"].addAction(dock.toggleViewAction())
 
 
-def open_animation(window: MainWindow, path: str | Path) -> bool:
+def open_animation(context: ToolContext, path: str | Path) -> bool:
     """Load ``path`` into the player and show its first frame; a bad file → a dialog, nothing changes."""
     try:
-        animation = load_animation(path, window.document.model, settings.library_folders(), fps=DEFAULT_FPS)
+        animation = load_animation(path, context.document.model, settings.library_folders(), fps=DEFAULT_FPS)
     except UserError as error:
-        QMessageBox.warning(window, "Open animation", f"Cannot open this animation:\n\n{error}")
+        QMessageBox.warning(context.window, "Open animation", f"Cannot open this animation:\n\n{error}")
         return False
-    window.player.load(animation.timeline, title=animation.title, fps=animation.fps)
-    window.timeline_dock.show()
-    count = len(window.player.driven)
-    window.statusBar().showMessage(f"Animation {animation.title}: {count} parameter{'s' * (count != 1)}, "
-                                   f"{window.playhead.duration:.3f} s — Space plays", MESSAGE_MS)
+    context.player.load(animation.timeline, title=animation.title, fps=animation.fps)
+    context.show_dock(DOCK_NAME)
+    count = len(context.player.driven)
+    context.status.showMessage(f"Animation {animation.title}: {count} parameter{'s' * (count != 1)}, "
+                               f"{context.playhead.duration:.3f} s — Space plays", MESSAGE_MS)
     return True
 
 
 def open_animation_dialog(window: MainWindow) -> bool:
+    """Animation → Open animation…: a file dialog, then :func:`open_animation`."""
     store = QSettings()
     path, _ = QFileDialog.getOpenFileName(window, "Open animation", str(store.value(settings.LAST_DIR, "")),
                                           FILE_FILTER)
     if not path:
         return False
     store.setValue(settings.LAST_DIR, str(Path(path).parent))
-    return open_animation(window, path)
+    return open_animation(window.tools, path)

@@ -29,6 +29,7 @@ from ..icons import icon
 from .track_view import TrackView
 
 SPEEDS = (0.25, 0.5, 0.75, 1.0, 1.5, 2.0)
+DOCK_NAME = "dock:timeline"
 
 
 class TimelineDock(QDockWidget):
@@ -36,7 +37,7 @@ class TimelineDock(QDockWidget):
 
     def __init__(self, player, view_state, actions: dict[str, QAction], parent: QWidget | None = None):
         super().__init__("Timeline", parent)
-        self.setObjectName("dock:timeline")
+        self.setObjectName(DOCK_NAME)
         self.player = player
         self.playhead = player.playhead
         self.animation_actions = actions

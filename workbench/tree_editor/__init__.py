@@ -16,18 +16,14 @@ Every edit is one undo step. ``window.tree_editor`` is the
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from PySide6.QtCore import Qt
 
-from ..window.actions import ActionSpec, add_actions
+from ..tools import ToolContext
+from ..window.actions import ActionSpec
 from .dock import ParameterTreeDock
 from .editor import TreeEditor
 from .gizmo import ParameterGizmo
 from .property_sheet import TOOL_ID, PropertySheet
-
-if TYPE_CHECKING:
-    from ..window.main_window import MainWindow
 
 __all__ = ["TOOL_ID", "TreeEditor", "install"]
 
@@ -50,25 +46,27 @@ ACTIONS = (
 )
 
 
-def install(window: MainWindow) -> None:
-    """Add the tree editor's dock, property page, gizmo and actions to ``window``."""
-    editor = TreeEditor(window)
+def install(context: ToolContext) -> None:
+    """Add the tree editor's dock, property page, gizmo and actions to the context's window."""
+    window = context.window
+    editor = TreeEditor(context)
     window.tree_editor = editor
-    editor.dock = ParameterTreeDock(window.document, window.view_state, editor.rename, editor.reparent, window)
+    editor.dock = ParameterTreeDock(context.document, context.view_state, editor.rename, editor.reparent, window)
     editor.dock.view.delete_requested.connect(editor.remove_parameter)
     window.addDockWidget(Qt.DockWidgetArea.LeftDockWidgetArea, editor.dock)
     editor.sheet = PropertySheet(editor)
-    window.tool_options.add_page(TOOL_ID, editor.sheet)     # the dock scrolls every page
-    editor.dock.picked_by_user.connect(lambda name: window.tool_options.show_page(TOOL_ID))
+    tool_options = context.tool_options
+    tool_options.add_page(TOOL_ID, editor.sheet)     # the dock scrolls every page
+    editor.dock.picked_by_user.connect(lambda name: tool_options.show_page(TOOL_ID))
     # With no tool active, Tool options shows the selected parameter's properties rather than "no tool".
-    view_state = window.view_state
-    window.tool_options.set_idle_page(TOOL_ID, lambda: view_state.selected_parameter is not None)
-    view_state.selected_parameter_changed.connect(window.tool_options.refresh_idle)
-    editor.gizmo = ParameterGizmo(window.viewport, window.document, window.view_state, editor)
-    editor.actions = add_actions(window, ACTIONS)
-    window.menus["&View"].addAction(editor.dock.toggleViewAction())
+    view_state = context.view_state
+    tool_options.set_idle_page(TOOL_ID, lambda: view_state.selected_parameter is not None)
+    view_state.selected_parameter_changed.connect(tool_options.refresh_idle)
+    editor.gizmo = ParameterGizmo(context.viewport, context.document, context.view_state, editor)
+    editor.actions = context.add_actions(ACTIONS)
+    context.menus["&View"].addAction(editor.dock.toggleViewAction())
     # Bound methods, not lambdas, on the document: it may outlive the window.
-    window.view_state.selected_parameter_changed.connect(editor.update_actions)
-    window.document.parameters_changed.connect(editor.update_actions)
-    window.document.model_replaced.connect(editor.update_actions)
+    view_state.selected_parameter_changed.connect(editor.update_actions)
+    context.document.parameters_changed.connect(editor.update_actions)
+    context.document.model_replaced.connect(editor.update_actions)
     editor.update_actions()

@@ -32,7 +32,7 @@ from ..document.undo_commands import (
 )
 
 if TYPE_CHECKING:
-    from ..window.main_window import MainWindow
+    from ..tools import ToolContext
 
 TITLE = "Parameter tree"
 MESSAGE_MS = 4000
@@ -41,9 +41,10 @@ MESSAGE_MS = 4000
 class TreeEditor(QObject):
     """The tree editor of one window: its dock, property sheet, gizmo and pivot picker (set by ``install``)."""
 
-    def __init__(self, window: MainWindow):
-        super().__init__(window)
-        self.window = window
+    def __init__(self, context: ToolContext):
+        super().__init__(context.window)
+        self.context = context
+        self.window = context.window        # the parent of its dialogs
         self.dock = None
         self.sheet = None
         self.gizmo = None
@@ -51,12 +52,12 @@ class TreeEditor(QObject):
 
     @property
     def document(self):
-        return self.window.document
+        return self.context.document
 
     @property
     def selected(self) -> str | None:
         """The selected parameter (the view state's selection, if it names one of this model's)."""
-        name = self.window.view_state.selected_parameter
+        name = self.context.view_state.selected_parameter
         return name if name is not None and name in self.document.model.parameters else None
 
     def update_actions(self, *_args) -> None:
@@ -83,7 +84,7 @@ class TreeEditor(QObject):
         except engine.UserError as error:
             self.warn(str(error))
             return False
-        self.window.statusBar().showMessage(command.text(), MESSAGE_MS)
+        self.context.status.showMessage(command.text(), MESSAGE_MS)
         return True
 
     def add_parameter(self, parent: str | None = "selected", *, edit_name: bool = True) -> str | None:
@@ -101,7 +102,7 @@ class TreeEditor(QObject):
                                      description="")
         if not self.push(lambda: AddParameterCommand(self.document, parameter)):
             return None
-        self.window.view_state.select_parameter(name)
+        self.context.view_state.select_parameter(name)
         if edit_name and self.dock is not None:
             self.dock.view.edit(self.dock.model.index_of(name))
         return name
@@ -110,7 +111,7 @@ class TreeEditor(QObject):
         """Remove ``name`` (default: the selected one) and everything below it, after asking."""
         name = name or self.selected
         if name is None:
-            self.window.statusBar().showMessage("Select a parameter to remove first", MESSAGE_MS)
+            self.context.status.showMessage("Select a parameter to remove first", MESSAGE_MS)
             return False
         names = subtree(self.document.model.parameters, name)
         if confirm:
@@ -140,7 +141,7 @@ class TreeEditor(QObject):
         """Open the selected parameter's name for editing in the tree (F2)."""
         name = self.selected
         if name is None or self.dock is None:
-            self.window.statusBar().showMessage("Select a parameter to rename first", MESSAGE_MS)
+            self.context.status.showMessage("Select a parameter to rename first", MESSAGE_MS)
             return
         self.dock.show()
         self.dock.view.setFocus()

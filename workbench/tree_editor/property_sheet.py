@@ -46,7 +46,7 @@ class PropertySheet(QWidget):
         super().__init__(parent)
         self.setObjectName("tree-editor:properties")
         self._editor = editor
-        window = editor.window
+        context = editor.context
         self._shown_name: str | None = None
 
         self.hint = QLabel("Select a parameter in the Parameter tree to edit its properties.")
@@ -112,7 +112,7 @@ class PropertySheet(QWidget):
         layout.addWidget(self.form_widget)
         layout.addStretch(1)
 
-        self.picker = PivotPicker(window.viewport, window.document, self._on_picked, self)
+        self.picker = PivotPicker(context.viewport, context.document, self._on_picked, self)
         self.pick_button.toggled.connect(self._on_pick_toggled)
         self.picker.finished.connect(lambda: self.pick_button.setChecked(False))
 
@@ -126,9 +126,9 @@ class PropertySheet(QWidget):
         self.default.committed.connect(lambda: self.commit("default"))
         self.description.editingFinished.connect(lambda: self.commit("description"))
 
-        window.view_state.selected_parameter_changed.connect(self.refresh)
-        window.document.parameters_changed.connect(self.refresh)
-        window.document.model_replaced.connect(self.refresh)
+        context.view_state.selected_parameter_changed.connect(self.refresh)
+        context.document.parameters_changed.connect(self.refresh)
+        context.document.model_replaced.connect(self.refresh)
         self.refresh()
 
     # -- showing -------------------------------------------------------------

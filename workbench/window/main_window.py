@@ -21,7 +21,10 @@ from ..document.playhead import Playhead
 from ..document.view_state import ViewState
 from ..icons import APP_ICON, icon
 from ..identity_panel import panel as identity_panel
+from ..library_sources import LibrarySources
 from ..parameter_panel.panel import ParameterPanel
+from ..playback.player import Player
+from ..tools import ToolContext
 from ..viewport.landmark_overlay import LandmarkOverlay
 from ..viewport.view import Viewport
 from . import actions as workbench_actions
@@ -97,8 +100,11 @@ class MainWindow(QMainWindow):
         self._bind_undo_actions()
 
         self.setStatusBar(ModelStatusBar(document, self))
-        features.install_all(self)      # the tools: their docks exist before the layout is restored
-        identity_panel.install(self)
+        self.player = Player(document, self.playhead, self)     # before the tools: all that play share it
+        self.library_sources = LibrarySources(self)
+        self.tools = self._tool_context()
+        features.install_all(self.tools)      # the tools: their docks exist before the layout is restored
+        identity_panel.install(self)           # a part of the window (its File → Save identity), not a tool
         for dock in self.findChildren(QDockWidget):
             scroll_dock_content(dock)   # no dock's content may push the window off the screen
         self._list_docks_in_view_menu()
@@ -167,6 +173,24 @@ class MainWindow(QMainWindow):
         super().closeEvent(event)
 
     # -- helpers -----------------------------------------------------------
+    def _tool_context(self) -> ToolContext:
+        """What the tools may use of this window (:mod:`workbench.tools`)."""
+        return ToolContext(window=self, document=self.document, view_state=self.view_state,
+                           playhead=self.playhead, player=self.player, viewport=self.viewport,
+                           tool_options=self.tool_options, actions=self.actions_by_id, menus=self.menus,
+                           toolbar=self.toolbar, status=self.statusBar(), library_sources=self.library_sources,
+                           _add_actions=self._add_actions, _reveal=self._reveal,
+                           _autosaver=self._autosaver)
+
+    def _add_actions(self, specs: tuple[workbench_actions.ActionSpec, ...]) -> dict[str, QAction]:
+        return workbench_actions.add_actions(self, specs)
+
+    def _reveal(self, dock: QDockWidget, width: int = 0, height: int = 0, task: str | None = None) -> None:
+        self.layouts.reveal(dock, width, height, task=task)
+
+    def _autosaver(self) -> Autosaver | None:
+        return getattr(self, "autosaver", None)       # made once the window is up
+
     def _list_docks_in_view_menu(self) -> None:
         """Every dock in the View menu, checkable and ticked while it is open, in :data:`DOCK_ORDER`.
 
