@@ -16,7 +16,7 @@ from tests.engine.cli_runner import run
 from tests.engine.face_geometry import Lips, assert_lips_apart, eyeball_entry_mm
 
 EXPRESSIONS = ["Neutral", "Happy", "Sad", "Surprise", "Fear", "Anger", "Disgust", "Contempt", "HappySurprise",
-               "HappyClosed"]
+               "HappyBroad"]
 
 
 
@@ -195,14 +195,14 @@ def test_amplitude_scales_the_intensity(head, library, name):
 
 
 def test_one_sided_happy_moves_only_the_left_corner(head, library, rest):
-    m = moved(head, rest, at_apex(head, library, "HappyClosed", right=0))
+    m = moved(head, rest, at_apex(head, library, "Happy", right=0))
     assert m["8.3"][1] > 8.0
     assert np.linalg.norm(m["8.4"]) < 0.05 and np.linalg.norm(m["3.4"]) < 0.01
 
 
 def test_one_sided_open_smile_leaves_the_other_corner_where_the_jaw_alone_puts_it(head, library, rest):
-    """Happy's jaw is a midline parameter and opens on both sides; the right corner moves with it only."""
-    values = at_apex(head, library, "Happy", right=0)
+    """HappyBroad's jaw is a midline parameter and opens on both sides; the right corner moves with it only."""
+    values = at_apex(head, library, "HappyBroad", right=0)
     jaw_only = moved(head, rest, {"jaw_open": values["jaw_open"]})
     m = moved(head, rest, values)
     assert values["jaw_open"] > 0.2 and m["8.3"][1] > 8.0
@@ -211,10 +211,10 @@ def test_one_sided_open_smile_leaves_the_other_corner_where_the_jaw_alone_puts_i
 
 def test_two_expressions_at_half_amplitude_blend(head, library):
     """Activations of one parameter add on the timeline, so two commands at 50 % are an even blend."""
-    t = play(head, library, '<HappyClosed at="0" amplitude="50" onset="300" apex="1000" offset="300"/>'
+    t = play(head, library, '<Happy at="0" amplitude="50" onset="300" apex="1000" offset="300"/>'
                             '<Surprise at="0" amplitude="50" onset="300" apex="1000" offset="300"/>')
     blend = t.values_at(800)
-    happy = play(head, library, '<HappyClosed at="0" onset="300" apex="1000" offset="300"/>').values_at(800)
+    happy = play(head, library, '<Happy at="0" onset="300" apex="1000" offset="300"/>').values_at(800)
     surprise = play(head, library, '<Surprise at="0" onset="300" apex="1000" offset="300"/>').values_at(800)
     for p in blend:
         assert blend[p] == pytest.approx((happy[p] + surprise[p]) / 2), p

@@ -235,7 +235,7 @@ def test_sadness_has_its_oblique_brows_and_its_pout():
 
 def test_happiness_is_the_cheeks_and_the_corners_and_nothing_of_the_brows():
     library = load_library()
-    for name in ("Happy", "HappyOpen", "HappyClosed"):
+    for name in ("Happy", "HappyOpen", "HappyBroad"):
         happy = aus(library, name)
         assert {"AU6", "AU12"} <= happy, name
         assert not {"AU1", "AU2", "AU4", "AU15", "AU20"} & happy, name
@@ -268,14 +268,14 @@ def test_the_open_variants_part_the_lips():
     assert aus(library, "HappyOpen") == {"AU6", "AU12", "AU25/26/27"}
     assert {"AU4", "AU5", "AU7", "AU10", "AU23", "AU25/26/27"} <= aus(library, "AngerOpen")
     head = engine.load_model()
-    assert aus(library, "Happy") == {"AU6", "AU12", "AU16", "AU25/26/27"}
-    for name, gap in (("Happy", 8.0), ("HappyOpen", 4.0), ("AngerOpen", 5.0), ("Surprise", 12.0),
+    assert aus(library, "HappyBroad") == {"AU6", "AU12", "AU16", "AU25/26/27"}
+    for name, gap in (("HappyBroad", 8.0), ("HappyOpen", 4.0), ("AngerOpen", 5.0), ("Surprise", 12.0),
                       ("SurpriseWide", 20.0)):
         lm = head.landmark_positions(levels(library, name))
         assert np.linalg.norm(lm["2.2"] - lm["2.3"]) > gap, name
 
 
-@pytest.mark.parametrize("name", ["Happy", "HappyOpen", "HappyClosed", "Sad", "Surprise", "SurpriseWide", "Fear",
+@pytest.mark.parametrize("name", ["Happy", "HappyOpen", "HappyBroad", "Sad", "Surprise", "SurpriseWide", "Fear",
                                   "Anger", "AngerOpen", "Disgust", "Contempt", "HappySurprise"])
 def test_levels_are_facs_intensities(name):
     """Every AU level is one of A–E (0.1, 0.25, 0.5, 0.8, 1); jaw_open, AU25/26/27, is millimetres of opening."""
@@ -288,7 +288,7 @@ def test_levels_are_facs_intensities(name):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name, emotion", [("Neutral", "neutral"), ("Happy", "happy"), ("HappyOpen", "happy"),
-                                                 ("HappyClosed", "happy")])
+                                                 ("HappyBroad", "happy")])
 def test_the_classifier_reads_the_default_heads_face(name, emotion):
     """The FER2013 classifier (docs/validation.md) on the front picture at the middle of the apex."""
     pytest.importorskip("dlib")
