@@ -35,7 +35,6 @@ from lxml import etree
 
 from engine.errors import ModelFileError, ParameterError, UserError
 from engine.formats.atomic import atomic_files, finish_interrupted_writes
-from engine.formats.default_head_skin import put_on_shipped_skin
 from engine.formats.hair_element import read_hair, write_hair
 from engine.formats.hdf5_reading import HDF5Reader
 from engine.formats.hdf5_reading import text as hdf5_text
@@ -181,7 +180,6 @@ def load_model(path: str | Path | None = None) -> Model:
     except UserError as exc:
         raise ModelFileError(exc.message, file=arrays_path) from None
     model.identity = identity
-    put_on_shipped_skin(model, path)      # the shipped default head shows the skin every identity gets (issue 32)
     return model
 
 
