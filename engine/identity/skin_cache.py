@@ -36,12 +36,13 @@ import contextlib
 import hashlib
 import io
 import os
-import tempfile
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
+from engine.errors import UserError
+from engine.formats.atomic import atomic_write_bytes
 from engine.identity.parameters import Identity
 from engine.model import Model
 from engine.paths import DEFAULT_HEAD_DIR
@@ -119,16 +120,9 @@ def skin_png_bytes(pixels: np.ndarray, key: str, level: int = 6) -> bytes:
 def _write(folder: Path, key: str, pixels: np.ndarray) -> None:
     try:
         folder.mkdir(parents=True, exist_ok=True)
-        handle, temporary = tempfile.mkstemp(prefix=".skin-", suffix=".tmp", dir=folder)
-        try:
-            with os.fdopen(handle, "wb") as out:
-                out.write(skin_png_bytes(pixels, key, level=4))
-            os.replace(temporary, folder / f"{key}.png")
-        finally:
-            if os.path.exists(temporary):
-                os.unlink(temporary)
+        atomic_write_bytes(folder / f"{key}.png", skin_png_bytes(pixels, key, level=4))   # the engine's one way
         _prune(folder)
-    except OSError:                     # a read-only or full disk: the image is only not kept
+    except (OSError, UserError):        # a read-only or full disk: the image is only not kept
         return
 
 
