@@ -153,7 +153,7 @@ def make_stimulus(design: Design, stimulus: Stimulus, outdir: str | Path) -> dic
                                   layout.audio_start_ms, float(levels["snr_db"]) if "snr_db" in levels else None,
                                   gain)
         frames = _decoded_frames(paths, count)
-        video_check = (_check_video(paths, _face_motion(motion, model, values), fps, layout.video_start_ms,
+        video_check = (_check_video(paths, motion.motion, fps, layout.video_start_ms,
                                     frames) if motion is not None else {})   # no video to check: no motion
         check = audio_check.result()
     check.update(video_check)
@@ -241,11 +241,6 @@ def vertex_motion(model: Model, values: np.ndarray) -> np.ndarray:
     for n, row in enumerate(values):
         meter(n, deformer.deform(row))
     return meter.motion
-
-
-def _face_motion(meter: MotionMeter, model: Model, values: np.ndarray) -> np.ndarray:
-    """The meter's figures once it has seen every frame (it has, unless the video was cut short)."""
-    return meter.motion if meter.seen == len(values) else vertex_motion(model, values)
 
 
 class MotionMeter:

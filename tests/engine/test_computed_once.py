@@ -27,10 +27,10 @@ from engine.outputs.render_helper import ENVIRONMENT
 from engine.outputs.speech_files import write_speech_files
 from engine.speech import say
 from engine.speech.say import speak
-from engine.speech.synthesis import Segment, Utterance
 from engine.stimuli.design import parse_design
 from engine.stimuli.make import make_stimulus
 from engine.validation.lips import LOWER, UPPER, lip_track
+from tests.engine.recorded_speech import Recorded
 
 VISEME_DESIGN = ('[factors]\ntext = ["Apa."]\nviseme = ["p"]\nviseme_b = ["t"]\nviseme_morph = [40]\n'
                  '[output]\nkinds = ["tracks", "phones"]\nfps = 25\n')
@@ -105,15 +105,6 @@ def test_a_stimulus_with_both_videos_and_a_still_draws_every_frame_once(tmp_path
 
 needs_festival = pytest.mark.skipif(shutil.which("festival") is None, reason="Festival is not installed")
 needs_ffmpeg = pytest.mark.skipif(shutil.which("ffmpeg") is None, reason="ffmpeg is not installed")
-
-
-class Recorded:
-    """Festival's interface with fixed timings: "moi" in 400 ms of audio."""
-
-    def synthesize(self, text, voice=None):
-        phones = [Segment("#", 0.0, 100.0, ""), Segment("m", 100.0, 250.0, "moi"), Segment("o", 250.0, 400.0, "moi")]
-        samples = (0.1 * np.sin(np.arange(8820) / 10)).astype(np.float32)
-        return Utterance(text, "recorded", samples, 22050, phones, [Segment("moi", 100.0, 400.0, "moi")])
 
 
 @pytest.fixture

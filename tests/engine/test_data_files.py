@@ -17,17 +17,9 @@ from engine.speech.say import speak
 from engine.speech.synthesis import Segment, Utterance, decode_wav, wav_bytes
 from engine.stimuli import parse_design
 from engine.stimuli.make import FILE_NAMES, make_stimulus
+from tests.engine.recorded_speech import Recorded
 
 needs_festival = pytest.mark.skipif(shutil.which("festival") is None, reason="Festival is not installed")
-
-
-class Recorded:
-    """Festival's interface with fixed timings: "moi" in 400 ms of audio."""
-
-    def synthesize(self, text, voice=None):
-        phones = [Segment("#", 0.0, 100.0, ""), Segment("m", 100.0, 250.0, "moi"), Segment("o", 250.0, 400.0, "moi")]
-        samples = (0.1 * np.sin(np.arange(8820) / 10)).astype(np.float32)
-        return Utterance(text, "recorded", samples, 22050, phones, [Segment("moi", 100.0, 400.0, "moi")])
 
 
 @pytest.fixture
